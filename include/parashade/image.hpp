@@ -1,0 +1,26 @@
+#pragma once
+// A rendered frame on the host, and writing/reading images through OpenImageIO.
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace parashade {
+
+struct RenderedImage {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgba;     // 8-bit RGBA, row 0 at the top; alpha 255 where covered, 0 elsewhere
+  std::vector<float> rgb_float;       // optional: unclamped RGB in 8-bit levels (empty when not rendered)
+  bool covered(std::size_t pixel) const { return rgba[4 * pixel + 3] != 0; }
+};
+
+// Writes RGB (format from the extension: png, jpg, tif, ppm, bmp, exr ...). EXR gets float values in
+// [0,1]-scale (levels / 255) from rgb_float when present, else from the 8-bit image. The file appears
+// whole or not at all (written to a temporary file in the same directory, then renamed).
+// Throws InputError for an unknown extension or an unwritable path.
+void write_image(const std::filesystem::path& path, const RenderedImage& image);
+
+// Reads an image as 8-bit RGBA (alpha 255 where the file has none). Throws InputError.
+RenderedImage read_image(const std::filesystem::path& path);
+
+}  // namespace parashade

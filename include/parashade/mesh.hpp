@@ -1,0 +1,38 @@
+#pragma once
+// A triangle mesh as the renderer consumes it: positions, one unit normal per position, index triples.
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace parashade {
+
+struct Mesh {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;  // same size as positions; unit length, never NaN
+  std::vector<glm::uvec3> triangles;
+};
+
+// What loading found and did, so callers can report it.
+struct MeshLoadStats {
+  std::size_t faces_read = 0;               // faces in the file (any polygon size)
+  std::size_t polygons_triangulated = 0;    // faces with more than 3 vertices, fanned into triangles
+  std::size_t degenerate_faces = 0;         // zero-area triangles kept (they cover no pixel)
+  std::size_t faces_dropped = 0;            // faces the loader refused (repeated vertices, < 3 vertices)
+  bool normals_from_file = false;           // otherwise area-weighted face normals
+};
+
+// Reads OBJ, OFF, PLY or STL through OpenMesh; polygons are triangulated. Throws InputError naming the
+// file: missing, unreadable, malformed, empty, non-finite coordinates.
+Mesh load_mesh(const std::filesystem::path& path, MeshLoadStats* stats = nullptr);
+
+// Vertex normal = normalized sum of the area-weighted normals of the faces around it. A zero-area face
+// contributes nothing; a vertex with no face of non-zero area gets (0, 0, 1). Never produces NaN.
+void compute_vertex_normals(Mesh& mesh);
+
+// Throws InputError(what + reason) when an index is out of range or a coordinate/normal is not finite.
+void validate_mesh(const Mesh& mesh, const std::string& what);
+
+}  // namespace parashade

@@ -1,0 +1,32 @@
+#pragma once
+// The exact reference: double precision, plain C++, sharing no shading code with the kernels.
+// It rasterizes the same screen triangles with the same coverage rule (see screen_geometry.hpp),
+// resolves visibility with a depth test in double (ties: the earlier triangle wins), and gives per
+// covered pixel two values in 8-bit levels, clamped to [0, 255]:
+//   ideal — the method's own ideal: flat: the triangle's value; gouraud: screen-space barycentric
+//           interpolation of the vertex values at the pixel centre; phong: screen-space barycentric
+//           interpolation of normal and position, normalized normal, Blinn–Phong per pixel;
+//   exact — exact Phong: perspective-correct position and normal, per-pixel L and V, Blinn–Phong.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "parashade/method.hpp"
+#include "parashade/scene.hpp"
+#include "parashade/screen_geometry.hpp"
+
+namespace parashade {
+
+struct ReferenceImage {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> covered;   // 1 where some triangle covers the pixel centre
+  std::vector<std::int32_t> triangle;  // visible screen triangle, -1 where none
+  std::vector<glm::dvec3> ideal;       // method's own ideal (levels, clamped)
+  std::vector<glm::dvec3> exact;       // exact Phong (levels, clamped)
+};
+
+ReferenceImage render_reference(const Scene& scene, const ScreenGeometry& geometry, Method method);
+
+}  // namespace parashade

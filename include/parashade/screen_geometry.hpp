@@ -1,0 +1,62 @@
+#pragma once
+// The frame's geometry after the vertex stage, clipping, culling and snapping: what both the OpenCL
+// path (through setup) and the exact reference rasterize.
+//
+// Screen coordinates (the sub-pixel format): signed 32-bit integers in 1/256 pixel (8 fraction bits),
+// x to the right, y down. Pixel (i, j) has its centre at (256*i + 128, 256*j + 128). Pixel addresses
+// are 12 bits (resolution <= 4096); vertex coordinates may lie in a guard band around the screen
+// (|x_ndc|, |y_ndc| <= kGuardBand), i.e. within [-W, 2W] x [-H, 2H] pixels: 14 integer bits + sign.
+// Triangles reaching beyond the guard band, or crossing the near or far plane, are clipped in clip
+// space; new vertices interpolate every attribute linearly in clip space (perspective-correct).
+//
+// Coverage rule (pixel-centre sampling, top-left rule). Triangle vertices are ordered so that
+// E01(V2) > 0, where the edge function of the edge Vi -> Vj is
+//     E_ij(P) = (Xj - Xi) * (Py - Yi) - (Yj - Yi) * (Px - Xi)      (exact in 64-bit integers).
+// A pixel centre P is covered when E_ij(P) >= bias_ij for the three edges, with bias 0 for a top edge
+// (Yj == Yi and Xj > Xi) or a left edge (Yj < Yi), bias 1 otherwise. Shared edges are then covered
+// exactly once. Zero-area triangles are dropped.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace parashade {
+
+constexpr int kSubpixelBits = 8;
+constexpr int kSubpixel = 1 << kSubpixelBits;
+constexpr float kGuardBand = 3.0f;
+
+struct GeometryStats {
+  std::uint64_t triangles_in = 0;        // scene triangles
+  std::uint64_t culled_backface = 0;
+  std::uint64_t zero_area = 0;           // after snapping
+  std::uint64_t outside = 0;             // entirely outside the view volume
+  std::uint64_t clipped = 0;             // input triangles that needed clipping
+  std::uint64_t triangles_out = 0;       // screen triangles (after clipping, culling)
+};
+
+struct ScreenGeometry {
+  int width = 0;
+  int height = 0;
+  // Per vertex: the scene's vertices (objects concatenated), then the vertices clipping made.
+  std::vector<glm::ivec2> xy;       // sub-pixel screen position (see above)
+  std::vector<float> depth;         // window depth in [0, 1]; linear in screen space
+  std::vector<float> inv_w;         // 1 / w_clip, for perspective-correct interpolation
+  std::vector<glm::vec3> world;     // world-space position
+  std::vector<glm::vec3> normal;    // world-space unit normal
+  std::vector<glm::vec3> color;     // Gouraud: vertex Blinn–Phong in 8-bit levels, unclamped; else empty
+  // Per screen triangle, in primitive order (the order of the scene's objects and faces).
+  std::vector<glm::uvec3> triangles;   // vertex indices, ordered so that E01(V2) > 0
+  std::vector<std::uint32_t> material; // index into Scene::materials
+  std::vector<glm::vec3> flat_color;   // Flat: the triangle's value in levels (centroid, face normal)
+  GeometryStats stats;
+};
+
+// Bias of the edge Vi -> Vj under the top-left rule (see above).
+inline int edge_bias(glm::ivec2 vi, glm::ivec2 vj) {
+  const bool top = (vj.y == vi.y) && (vj.x > vi.x);
+  const bool left = vj.y < vi.y;
+  return (top || left) ? 0 : 1;
+}
+
+}  // namespace parashade
