@@ -7,6 +7,11 @@
 //           interpolation of the vertex values at the pixel centre; phong: screen-space barycentric
 //           interpolation of normal and position, normalized normal, Blinn–Phong per pixel;
 //   exact — exact Phong: perspective-correct position and normal, per-pixel L and V, Blinn–Phong.
+// Barycentrics come from the exact integer edge values at the pixel centre (b_k = E_k / area2). An
+// interpolated normal of zero length is replaced by the world-space face normal turned toward the
+// viewer (never NaN). Uncovered pixels hold the background (x255) in both. Needs world and normal per
+// vertex (and color for gouraud, flat_color for flat); throws std::invalid_argument on inconsistent
+// geometry or a triangle not ordered E01(V2) > 0. Deterministic for any OpenMP thread count.
 #include <cstdint>
 #include <vector>
 
