@@ -45,8 +45,8 @@ i64 edge_function(glm::ivec2 vi, glm::ivec2 vj, i64 px, i64 py) {
 struct Triangle {
   glm::ivec2 v[3];
   int bias[3];
-  i64 area2 = 0;          // E01(V2) > 0; 0 marks a triangle to skip
-  int x0 = 0, x1 = -1;    // pixel bounding box, clamped to the screen (empty when x0 > x1)
+  i64 area2 = 0;        // E01(V2) > 0; 0 marks a triangle to skip
+  int x0 = 0, x1 = -1;  // pixel bounding box, clamped to the screen (empty when x0 > x1)
   int y0 = 0, y1 = -1;
 };
 
@@ -93,8 +93,10 @@ void check_geometry(const Scene& scene, const ScreenGeometry& g, Method method) 
   // The guard band keeps coordinates within 14 integer bits + sign; 2^24 leaves the int64 edge
   // functions far from overflow.
   constexpr int kCoordLimit = 1 << 24;
-  for (const glm::ivec2& v : g.xy)
-    if (std::abs(i64(v.x)) > kCoordLimit || std::abs(i64(v.y)) > kCoordLimit) fail("vertex far outside the guard band");
+  for (const glm::ivec2& v : g.xy) {
+    if (std::abs(i64(v.x)) > kCoordLimit || std::abs(i64(v.y)) > kCoordLimit)
+      fail("vertex far outside the guard band");
+  }
   if (g.depth.size() != nv || g.inv_w.size() != nv) fail("per-vertex depth or 1/w missing");
   if (g.world.size() != nv || g.normal.size() != nv) fail("exact shading needs world positions and normals");
   if (method == Method::gouraud && g.color.size() != nv) fail("gouraud needs a colour per vertex");
@@ -103,7 +105,8 @@ void check_geometry(const Scene& scene, const ScreenGeometry& g, Method method) 
   if (method == Method::flat && g.flat_color.size() != nt) fail("flat needs a colour per triangle");
   for (std::size_t t = 0; t < nt; ++t) {
     const glm::uvec3 idx = g.triangles[t];
-    if (idx.x >= nv || idx.y >= nv || idx.z >= nv) fail("triangle " + std::to_string(t) + " indexes no vertex");
+    if (idx.x >= nv || idx.y >= nv || idx.z >= nv)
+      fail("triangle " + std::to_string(t) + " indexes no vertex");
     if (g.material[t] >= scene.materials.size()) fail("triangle " + std::to_string(t) + " has no material");
   }
 }
@@ -146,7 +149,8 @@ ReferenceImage render_reference(const Scene& scene, const ScreenGeometry& g, Met
   for (std::size_t t = 0; t < nt; ++t) {
     const Triangle& tri = tris[t];
     if (tri.area2 == 0 || tri.x0 > tri.x1 || tri.y0 > tri.y1) continue;
-    for (int b = tri.y0 / kBandRows; b <= tri.y1 / kBandRows; ++b) band_triangles[b].push_back(std::uint32_t(t));
+    for (int b = tri.y0 / kBandRows; b <= tri.y1 / kBandRows; ++b)
+      band_triangles[b].push_back(std::uint32_t(t));
   }
 
   ReferenceImage out;
@@ -172,7 +176,8 @@ ReferenceImage render_reference(const Scene& scene, const ScreenGeometry& g, Met
           i64 e[3];
           if (!edges_at(tri, x, y, e)) continue;
           const double b[3] = {double(e[0]) / area2, double(e[1]) / area2, double(e[2]) / area2};
-          const double z = weighted(b, double(g.depth[idx.x]), double(g.depth[idx.y]), double(g.depth[idx.z]));
+          const double z =
+              weighted(b, double(g.depth[idx.x]), double(g.depth[idx.y]), double(g.depth[idx.z]));
           const std::size_t p = std::size_t(y) * width + x;
           if (z < depth[p]) {
             depth[p] = z;
@@ -197,7 +202,8 @@ ReferenceImage render_reference(const Scene& scene, const ScreenGeometry& g, Met
       edges_at(tri, x, y, e);  // covered: the visibility pass chose this triangle here
       const double area2 = double(tri.area2);
       const double b[3] = {double(e[0]) / area2, double(e[1]) / area2, double(e[2]) / area2};
-      const glm::dvec3 w[3] = {glm::dvec3(g.world[idx.x]), glm::dvec3(g.world[idx.y]), glm::dvec3(g.world[idx.z])};
+      const glm::dvec3 w[3] = {glm::dvec3(g.world[idx.x]), glm::dvec3(g.world[idx.y]),
+                               glm::dvec3(g.world[idx.z])};
       const glm::dvec3 n[3] = {glm::dvec3(g.normal[idx.x]), glm::dvec3(g.normal[idx.y]),
                                glm::dvec3(g.normal[idx.z])};
 
@@ -207,11 +213,13 @@ ReferenceImage render_reference(const Scene& scene, const ScreenGeometry& g, Met
           ideal = glm::dvec3(g.flat_color[t]);
           break;
         case Method::gouraud:
-          ideal = weighted(b, glm::dvec3(g.color[idx.x]), glm::dvec3(g.color[idx.y]), glm::dvec3(g.color[idx.z]));
+          ideal =
+              weighted(b, glm::dvec3(g.color[idx.x]), glm::dvec3(g.color[idx.y]), glm::dvec3(g.color[idx.z]));
           break;
         case Method::phong: {
           const glm::dvec3 pos = weighted(b, w[0], w[1], w[2]);
-          ideal = blinn_phong(scene, material, pos, shading_normal(scene, weighted(b, n[0], n[1], n[2]), pos, w));
+          ideal =
+              blinn_phong(scene, material, pos, shading_normal(scene, weighted(b, n[0], n[1], n[2]), pos, w));
           break;
         }
       }

@@ -1,10 +1,10 @@
 // The reference rasterizer's coverage: pixel-centre sampling with the top-left rule, watertight on
 // shared edges and shared vertices, clamped to the screen.
+#include <gtest/gtest.h>
+
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "parashade/reference.hpp"
 #include "screen_fixtures.hpp"
@@ -22,7 +22,8 @@ glm::ivec2 at_centre(int i, int j) { return {centre(i), centre(j)}; }
 bool covered(const ReferenceImage& r, int x, int y) { return r.covered[std::size_t(y) * r.width + x] != 0; }
 
 // Expects exactly one hit on [x0, x1) x [y0, y1) and none elsewhere.
-void expect_covered_once_in(const std::vector<int>& hits, int width, int height, int x0, int x1, int y0, int y1) {
+void expect_covered_once_in(const std::vector<int>& hits, int width, int height, int x0, int x1, int y0,
+                            int y1) {
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const bool inside = x >= x0 && x < x1 && y >= y0 && y < y1;
@@ -57,7 +58,8 @@ TEST(ReferenceCoverage, SharedEdgeOfSlopeOneHalfThroughCentresIsCoveredOnce) {
   const std::vector<int> hits = coverage_counts(simple_scene(), b.geometry());
   for (const int h : hits) EXPECT_LE(h, 1);
   for (const glm::ivec2& p : {glm::ivec2(3, 2), glm::ivec2(5, 3), glm::ivec2(7, 4)})
-    EXPECT_EQ(hits[std::size_t(p.y) * 12 + p.x], 1) << "centre on the shared edge (" << p.x << ", " << p.y << ")";
+    EXPECT_EQ(hits[std::size_t(p.y) * 12 + p.x], 1)
+        << "centre on the shared edge (" << p.x << ", " << p.y << ")";
 }
 
 TEST(ReferenceCoverage, JitteredGridIsWatertight) {
@@ -90,15 +92,20 @@ TEST(ReferenceCoverage, JitteredGridIsWatertight) {
       }
     }
   const int end = kOrigin + kCellPx * kCells;
-  expect_covered_once_in(coverage_counts(simple_scene(), b.geometry()), kSize, kSize, kOrigin, end, kOrigin, end);
+  expect_covered_once_in(coverage_counts(simple_scene(), b.geometry()), kSize, kSize, kOrigin, end, kOrigin,
+                         end);
 }
 
 TEST(ReferenceCoverage, FanAroundAVertexOnAPixelCentreCoversItOnce) {
   // Seven triangles around the centre of pixel (8, 8), irregular ring, some ring vertices off-lattice.
   GeometryBuilder b(16, 16);
   const auto hub = b.vertex(at_centre(8, 8));
-  const std::vector<glm::ivec2> ring = {at_centre(13, 8), at_centre(11, 12) + glm::ivec2(37, 0), at_centre(7, 14),
-                                        at_centre(3, 11) - glm::ivec2(0, 91), at_centre(2, 6), at_centre(6, 2),
+  const std::vector<glm::ivec2> ring = {at_centre(13, 8),
+                                        at_centre(11, 12) + glm::ivec2(37, 0),
+                                        at_centre(7, 14),
+                                        at_centre(3, 11) - glm::ivec2(0, 91),
+                                        at_centre(2, 6),
+                                        at_centre(6, 2),
                                         at_centre(12, 3) + glm::ivec2(5, 77)};
   std::vector<std::uint32_t> ids;
   for (const glm::ivec2& p : ring) ids.push_back(b.vertex(p));
@@ -106,7 +113,8 @@ TEST(ReferenceCoverage, FanAroundAVertexOnAPixelCentreCoversItOnce) {
   const std::vector<int> hits = coverage_counts(simple_scene(), b.geometry());
   for (const int h : hits) EXPECT_LE(h, 1);
   for (int y = 7; y <= 9; ++y)
-    for (int x = 7; x <= 9; ++x) EXPECT_EQ(hits[std::size_t(y) * 16 + x], 1) << "pixel (" << x << ", " << y << ")";
+    for (int x = 7; x <= 9; ++x)
+      EXPECT_EQ(hits[std::size_t(y) * 16 + x], 1) << "pixel (" << x << ", " << y << ")";
 }
 
 TEST(ReferenceCoverage, TopAndLeftEdgesAreInsideBottomAndRightEdgesAreNot) {
@@ -138,7 +146,8 @@ TEST(ReferenceCoverage, TopAndLeftEdgesAreInsideBottomAndRightEdgesAreNot) {
 TEST(ReferenceCoverage, CentresOffTheEdgeBySubpixelFollowTheEdgeFunctionSign) {
   // A near-horizontal top edge 1/256 pixel below row 2's centres: row 2 is outside, row 3 inside.
   GeometryBuilder b(8, 8);
-  b.triangle(b.vertex({centre(0), centre(2) + 1}), b.vertex({centre(7), centre(2) + 1}), b.vertex(at_centre(0, 7)));
+  b.triangle(b.vertex({centre(0), centre(2) + 1}), b.vertex({centre(7), centre(2) + 1}),
+             b.vertex(at_centre(0, 7)));
   const ReferenceImage r = render_reference(simple_scene(), b.geometry(), Method::flat);
   EXPECT_FALSE(covered(r, 2, 2));
   EXPECT_TRUE(covered(r, 2, 3));

@@ -1,12 +1,12 @@
 // The reference's values: each method's ideal, exact (perspective-correct) Phong, depth and background.
 // Expected values are computed here independently, from pixel-unit geometry.
+#include <gtest/gtest.h>
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
-
-#include <gtest/gtest.h>
-#include <omp.h>
 
 #include "parashade/lighting.hpp"
 #include "parashade/reference.hpp"
@@ -95,8 +95,12 @@ TEST(ReferenceShading, GouraudIdealIsThePlaneThroughTheVertexColours) {
   auto plane_at = [&](double x, double y) {
     glm::dvec3 out;
     for (int c = 0; c < 3; ++c) {
-      const double a = (col[0][c] * (p[1].y - p[2].y) + col[1][c] * (p[2].y - p[0].y) + col[2][c] * (p[0].y - p[1].y)) / det;
-      const double bb = (col[0][c] * (p[2].x - p[1].x) + col[1][c] * (p[0].x - p[2].x) + col[2][c] * (p[1].x - p[0].x)) / det;
+      const double a =
+          (col[0][c] * (p[1].y - p[2].y) + col[1][c] * (p[2].y - p[0].y) + col[2][c] * (p[0].y - p[1].y)) /
+          det;
+      const double bb =
+          (col[0][c] * (p[2].x - p[1].x) + col[1][c] * (p[0].x - p[2].x) + col[2][c] * (p[1].x - p[0].x)) /
+          det;
       const double d = col[0][c] - a * p[0].x - bb * p[0].y;
       out[c] = a * x + bb * y + d;
     }
@@ -111,7 +115,8 @@ TEST(ReferenceShading, GouraudIdealIsThePlaneThroughTheVertexColours) {
       if (!r.covered[i]) continue;
       ++compared;
       const glm::dvec3 want = plane_at(x + 0.5, y + 0.5);
-      for (int c = 0; c < 3; ++c) EXPECT_NEAR(r.ideal[i][c], want[c], 1e-9) << "pixel (" << x << ", " << y << ")";
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(r.ideal[i][c], want[c], 1e-9) << "pixel (" << x << ", " << y << ")";
     }
   EXPECT_GT(compared, 40);
 }
@@ -166,8 +171,10 @@ TEST(ReferenceShading, ExactPhongIsPerspectiveCorrectIdealIsScreenSpace) {
   pc /= pc.x + pc.y + pc.z;
 
   const Material& m = scene.materials[0];
-  const glm::dvec3 ideal = blinn_phong(scene, m, interpolate(g.world, bc), glm::normalize(interpolate(g.normal, bc)));
-  const glm::dvec3 exact = blinn_phong(scene, m, interpolate(g.world, pc), glm::normalize(interpolate(g.normal, pc)));
+  const glm::dvec3 ideal =
+      blinn_phong(scene, m, interpolate(g.world, bc), glm::normalize(interpolate(g.normal, bc)));
+  const glm::dvec3 exact =
+      blinn_phong(scene, m, interpolate(g.world, pc), glm::normalize(interpolate(g.normal, pc)));
   for (int c = 0; c < 3; ++c) {
     // Nothing is clamped at this pixel.
     ASSERT_GT(std::min(ideal[c], exact[c]), 0.0);
@@ -203,8 +210,8 @@ TEST(ReferenceShading, ZeroInterpolatedNormalFallsBackToTheFaceNormalTowardTheVi
   const ScreenGeometry& g = b.geometry();
   const glm::dvec3 bc = barycentrics(g, 0, 2, 3);
   const glm::uvec3 idx = g.triangles[0];
-  const glm::dvec3 pos =
-      bc.x * glm::dvec3(g.world[idx.x]) + bc.y * glm::dvec3(g.world[idx.y]) + bc.z * glm::dvec3(g.world[idx.z]);
+  const glm::dvec3 pos = bc.x * glm::dvec3(g.world[idx.x]) + bc.y * glm::dvec3(g.world[idx.y]) +
+                         bc.z * glm::dvec3(g.world[idx.z]);
   const glm::dvec3 want = blinn_phong(scene, scene.materials[0], pos, glm::dvec3(0, 0, 1));
   for (int c = 0; c < 3; ++c) {
     EXPECT_NEAR(r.ideal[i][c], want[c], 1e-9);
@@ -261,7 +268,8 @@ TEST(ReferenceShading, UncoveredPixelsAreBackground) {
   Scene scene = simple_scene();
   scene.background = {0.2f, 0.4f, 1.0f};
   GeometryBuilder b(8, 8);
-  b.triangle(b.vertex({centre(0), centre(0)}), b.vertex({centre(3), centre(0)}), b.vertex({centre(0), centre(3)}));
+  b.triangle(b.vertex({centre(0), centre(0)}), b.vertex({centre(3), centre(0)}),
+             b.vertex({centre(0), centre(3)}));
   const ReferenceImage r = render_reference(scene, b.geometry(), Method::phong);
   const std::size_t i = index(r, 6, 6);
   EXPECT_EQ(r.covered[i], 0);

@@ -2,10 +2,9 @@
 // Hand-built screen geometry for the reference tests: vertices in sub-pixel units, triangles put in
 // the E01(V2) > 0 order the coverage rule expects.
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <utility>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "parashade/reference.hpp"
 #include "parashade/scene.hpp"
@@ -52,7 +51,8 @@ class GeometryBuilder {
   void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c, glm::vec3 flat_color = glm::vec3(0.0f),
                 std::uint32_t material = 0) {
     const glm::ivec2 p0 = g_.xy[a], p1 = g_.xy[b], p2 = g_.xy[c];
-    const std::int64_t area2 = std::int64_t(p1.x - p0.x) * (p2.y - p0.y) - std::int64_t(p1.y - p0.y) * (p2.x - p0.x);
+    const std::int64_t area2 =
+        std::int64_t(p1.x - p0.x) * (p2.y - p0.y) - std::int64_t(p1.y - p0.y) * (p2.x - p0.x);
     if (area2 < 0) std::swap(b, c);
     g_.triangles.emplace_back(a, b, c);
     g_.material.push_back(material);
