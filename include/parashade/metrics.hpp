@@ -2,6 +2,9 @@
 // Error of a rendered image against a reference, over the pixels both cover; coverage mismatches
 // are counted separately. Values in 8-bit levels. NMSE = sum (I - O)^2 / sum (I - mean_c(I))^2 over
 // covered pixels and the three channels (mean per channel); PSNR = 10 log10(255^2 / MSE).
+// Degenerate cases: no pixel covered by both -> nmse, psnr_db, max_abs and mean_abs are NaN (undefined;
+// JSON null). A constant reference (every compared pixel equal) -> nmse 0 if the image equals it, +inf
+// otherwise. MSE 0 -> psnr_db +inf. Throws InputError when the image and reference sizes differ.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -15,8 +18,8 @@ namespace parashade {
 struct ErrorMetrics {
   std::string reference;                 // "ideal <method>" or "exact phong"
   double nmse = 0.0;                     // +inf when the reference is constant and the image is not
-  double psnr_db = 0.0;                  // +inf when identical
-  double max_abs = 0.0;                  // levels
+  double psnr_db = 0.0;                  // dB; +inf when identical
+  double max_abs = 0.0;                  // levels, largest channel difference
   double mean_abs = 0.0;                 // levels, per channel sample
   std::uint64_t pixels_compared = 0;
   std::uint64_t pixels_over_1_level = 0; // pixels with some channel more than 1 level off
