@@ -14,13 +14,15 @@ struct RenderedImage {
   bool covered(std::size_t pixel) const { return rgba[4 * pixel + 3] != 0; }
 };
 
-// Writes RGB (format from the extension: png, jpg, tif, ppm, bmp, exr ...). EXR gets float values in
-// [0,1]-scale (levels / 255) from rgb_float when present, else from the 8-bit image. The file appears
-// whole or not at all (written to a temporary file in the same directory, then renamed).
+// Writes RGB without alpha (format from the extension: png, jpg, tif, ppm, bmp, exr ...), 8-bit except
+// EXR, which gets 32-bit float values in [0,1]-scale (levels / 255) from rgb_float when present, else
+// from the 8-bit image. The file appears whole or not at all (written to a temporary file in the same
+// directory, then renamed).
 // Throws InputError for an unknown extension or an unwritable path.
 void write_image(const std::filesystem::path& path, const RenderedImage& image);
 
-// Reads an image as 8-bit RGBA (alpha 255 where the file has none). Throws InputError.
+// Reads an image as 8-bit RGBA (alpha 255 where the file has none; grey files give R = G = B). Float
+// files (EXR) also fill rgb_float with their values in levels (x255). Throws InputError.
 RenderedImage read_image(const std::filesystem::path& path);
 
 }  // namespace parashade
