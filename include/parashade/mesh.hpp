@@ -20,12 +20,18 @@ struct MeshLoadStats {
   std::size_t faces_read = 0;               // faces in the file (any polygon size)
   std::size_t polygons_triangulated = 0;    // faces with more than 3 vertices, fanned into triangles
   std::size_t degenerate_faces = 0;         // zero-area triangles kept (they cover no pixel)
-  std::size_t faces_dropped = 0;            // faces the loader refused (repeated vertices, < 3 vertices)
+  std::size_t faces_dropped = 0;            // faces with a repeated vertex (OpenMesh refuses them)
+  std::size_t non_manifold_faces = 0;       // kept on the file's vertices (OpenMesh would split them off)
+  std::size_t normals_recomputed = 0;       // file gave normals, but none or a zero one for these vertices
   bool normals_from_file = false;           // otherwise area-weighted face normals
 };
 
-// Reads OBJ, OFF, PLY or STL through OpenMesh; polygons are triangulated. Throws InputError naming the
-// file: missing, unreadable, malformed, empty, non-finite coordinates.
+// Reads OBJ, OFF, PLY or STL through OpenMesh; polygons are fan-triangulated. Throws InputError naming
+// the file: missing, unreadable, unknown extension, malformed (an OBJ is checked line by line; a face
+// with fewer than 3 vertices or an index out of range), no faces, non-finite coordinates or normals.
+// Vertices no face uses are left out. Normals come from the file when it has them (a vertex given
+// several gets their average); vertices it gives none or a zero one get area-weighted face normals.
+// STL files carry only facet normals, so their vertex normals are always computed.
 Mesh load_mesh(const std::filesystem::path& path, MeshLoadStats* stats = nullptr);
 
 // Vertex normal = normalized sum of the area-weighted normals of the faces around it. A zero-area face

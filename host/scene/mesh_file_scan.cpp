@@ -1,0 +1,236 @@
+#include "mesh_file_scan.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "parashade/errors.hpp"
+
+namespace parashade::detail {
+
+namespace {
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> tokens;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    const std::size_t start = i;
+    while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    if (i > start) tokens.push_back(line.substr(start, i - start));
+  }
+  return tokens;
+}
+
+class ObjChecker {
+ public:
+  explicit ObjChecker(const std::filesystem::path& path) : path_(path) {}
+
+  ObjSummary run() {
+    std::ifstream in(path_);
+    if (!in) throw InputError(path_.string() + ": cannot open");
+    std::string line;
+    while (std::getline(in, line)) {
+      ++line_number_;
+      if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
+      const std::vector<std::string> tokens = split(line);
+      if (tokens.empty()) continue;
+      const std::string& keyword = tokens[0];
+      if (keyword == "v") {
+        check_coordinates(tokens, "vertex");
+        ++summary_.vertices;
+      } else if (keyword == "vn") {
+        check_coordinates(tokens, "normal");
+        ++normals_;
+      } else if (keyword == "vt") {
+        ++texcoords_;
+      } else if (keyword == "f") {
+        check_face(tokens);
+        ++summary_.faces;
+      }
+      // Other records (o, g, s, usemtl, mtllib, l, p, ...) carry nothing the renderer uses.
+    }
+    if (in.bad()) throw InputError(path_.string() + ": read error");
+    check_forward(max_vertex_, summary_.vertices, "vertex");
+    check_forward(max_texcoord_, texcoords_, "texture coordinate");
+    check_forward(max_normal_, normals_, "normal");
+    return summary_;
+  }
+
+ private:
+  // The largest positive index seen and its line: OpenMesh accepts faces before their vertices, so
+  // positive indices are checked against the final counts.
+  struct MaxIndex {
+    long value = 0;
+    std::size_t line = 0;
+  };
+
+  [[noreturn]] void fail(std::size_t line, const std::string& reason) const {
+    throw InputError(path_.string() + ":" + std::to_string(line) + ": " + reason);
+  }
+
+  void check_coordinates(const std::vector<std::string>& tokens, const char* what) const {
+    if (tokens.size() < 4) fail(line_number_, std::string(what) + " needs 3 coordinates");
+    for (int i = 1; i <= 3; ++i) {
+      const std::string& s = tokens[i];
+      char* end = nullptr;
+      const double value = std::strtod(s.c_str(), &end);
+      if (end == s.c_str() || *end != '\0') fail(line_number_, "cannot read '" + s + "' as a number");
+      if (!std::isfinite(value)) fail(line_number_, std::string(what) + " has a non-finite coordinate '" + s + "'");
+    }
+  }
+
+  // One component of a face corner (v, vt or vn); an empty component is allowed only for vt and vn.
+  void check_index(const std::string& s, std::size_t defined, MaxIndex& max, const char* what) {
+    char* end = nullptr;
+    const long value = std::strtol(s.c_str(), &end, 10);
+    if (end == s.c_str() || *end != '\0') fail(line_number_, "cannot read '" + s + "' as a " + what + " index");
+    if (value == 0) fail(line_number_, std::string(what) + " index 0 (OBJ indices start at 1)");
+    if (value < 0) {  // relative to the records read so far
+      if (static_cast<std::size_t>(-value) > defined)
+        fail(line_number_, std::string(what) + " index " + s + " reaches before the first " + what);
+    } else if (value > max.value) {
+      max = {value, line_number_};
+    }
+  }
+
+  void check_face(const std::vector<std::string>& tokens) {
+    const std::size_t corners = tokens.size() - 1;
+    if (corners < 3) fail(line_number_, "face has " + std::to_string(corners) + " vertices (needs at least 3)");
+    for (std::size_t i = 1; i < tokens.size(); ++i) {
+      const std::string& corner = tokens[i];
+      const std::size_t slash1 = corner.find('/');
+      check_index(corner.substr(0, slash1), summary_.vertices, max_vertex_, "vertex");
+      if (slash1 == std::string::npos) continue;
+      const std::size_t slash2 = corner.find('/', slash1 + 1);
+      const std::string vt = corner.substr(slash1 + 1, slash2 == std::string::npos ? std::string::npos : slash2 - slash1 - 1);
+      if (!vt.empty()) check_index(vt, texcoords_, max_texcoord_, "texture coordinate");
+      if (slash2 == std::string::npos) continue;
+      const std::string vn = corner.substr(slash2 + 1);
+      if (!vn.empty()) check_index(vn, normals_, max_normal_, "normal");
+    }
+  }
+
+  void check_forward(const MaxIndex& max, std::size_t defined, const char* what) const {
+    if (static_cast<std::size_t>(max.value) > defined)
+      fail(max.line, std::string(what) + " index " + std::to_string(max.value) + " out of range (the file has " +
+                         std::to_string(defined) + ")");
+  }
+
+  std::filesystem::path path_;
+  std::size_t line_number_ = 0;
+  ObjSummary summary_;
+  std::size_t normals_ = 0, texcoords_ = 0;
+  MaxIndex max_vertex_, max_texcoord_, max_normal_;
+};
+
+// The text OFF layout: a header keyword, the counts "vertices faces edges", then one record per line.
+class OffChecker {
+ public:
+  explicit OffChecker(const std::filesystem::path& path) : path_(path), in_(path) {}
+
+  std::size_t run() {
+    if (!in_) throw InputError(path_.string() + ": cannot open");
+    std::vector<std::string> tokens = next_record();
+    if (tokens.empty()) fail("no OFF header");
+    const std::string keyword = tokens[0];
+    const std::size_t off = keyword.rfind("OFF");
+    if (off == std::string::npos || off + 3 != keyword.size()) fail("no OFF header ('" + keyword + "')");
+    const std::string prefix = keyword.substr(0, off);
+    if (prefix.find_first_not_of("STCN") != std::string::npos) return 0;  // 4OFF, nOFF: not checked
+    if (tokens.size() > 1 && tokens[1] == "BINARY") return 0;
+    tokens.erase(tokens.begin());
+    if (tokens.empty()) tokens = next_record();  // the counts may follow on the same line
+    if (tokens.size() < 2) fail("expected the counts 'vertices faces edges'");
+    const long vertices = integer(tokens[0]), faces = integer(tokens[1]);
+    if (vertices < 0 || faces < 0) fail("negative count");
+    for (long v = 0; v < vertices; ++v) {
+      tokens = next_record();
+      if (tokens.empty()) fail("the file ends after " + std::to_string(v) + " of " + std::to_string(vertices) + " vertices");
+      if (tokens.size() < 3) fail("vertex needs 3 coordinates");
+      for (int i = 0; i < 3; ++i) {
+        char* end = nullptr;
+        const double value = std::strtod(tokens[i].c_str(), &end);
+        if (end == tokens[i].c_str() || *end != '\0') fail("cannot read '" + tokens[i] + "' as a number");
+        if (!std::isfinite(value)) fail("vertex has a non-finite coordinate '" + tokens[i] + "'");
+      }
+    }
+    for (long f = 0; f < faces; ++f) {
+      tokens = next_record();
+      if (tokens.empty()) fail("the file ends after " + std::to_string(f) + " of " + std::to_string(faces) + " faces");
+      const long corners = integer(tokens[0]);
+      if (corners < 3) fail("face has " + std::to_string(corners) + " vertices (needs at least 3)");
+      if (tokens.size() < std::size_t(corners) + 1) fail("face lists fewer than its " + std::to_string(corners) + " vertices");
+      for (long k = 1; k <= corners; ++k) {
+        const long index = integer(tokens[k]);
+        if (index < 0 || index >= vertices)
+          fail("vertex index " + tokens[k] + " out of range (the file has " + std::to_string(vertices) + ")");
+      }
+    }
+    return static_cast<std::size_t>(faces);
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& reason) const {
+    throw InputError(path_.string() + ":" + std::to_string(line_number_) + ": " + reason);
+  }
+
+  long integer(const std::string& s) const {
+    char* end = nullptr;
+    const long value = std::strtol(s.c_str(), &end, 10);
+    if (end == s.c_str() || *end != '\0') fail("cannot read '" + s + "' as an integer");
+    return value;
+  }
+
+  // The tokens of the next line that is not blank or a comment; empty at the end of the file.
+  std::vector<std::string> next_record() {
+    std::string line;
+    while (std::getline(in_, line)) {
+      ++line_number_;
+      if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
+      std::vector<std::string> tokens = split(line);
+      if (!tokens.empty()) return tokens;
+    }
+    return {};
+  }
+
+  std::filesystem::path path_;
+  std::ifstream in_;
+  std::size_t line_number_ = 0;
+};
+
+}  // namespace
+
+std::size_t check_off(const std::filesystem::path& path) { return OffChecker(path).run(); }
+
+ObjSummary check_obj(const std::filesystem::path& path) { return ObjChecker(path).run(); }
+
+std::size_t count_stl_facets(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string() + ": cannot open");
+  // Binary STL: 80-byte header, uint32 facet count, 50 bytes per facet. A text file that happens to have
+  // exactly that size is not a concern in practice (it would have to match to the byte).
+  const std::uintmax_t size = std::filesystem::file_size(path);
+  if (size >= 84) {
+    char header[84];
+    in.read(header, sizeof header);
+    std::uint32_t count = 0;
+    std::memcpy(&count, header + 80, sizeof count);  // little-endian on every platform we target
+    if (size == 84 + 50 * std::uintmax_t(count)) return count;
+    in.seekg(0);
+  }
+  std::size_t facets = 0;
+  std::string line;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> tokens = split(line);
+    if (!tokens.empty() && tokens[0] == "facet") ++facets;
+  }
+  return facets;
+}
+
+}  // namespace parashade::detail
