@@ -74,6 +74,8 @@ constexpr int kMaxResolution = 4096;
 // Loads a JSON scene (see scenes/README.md), or a bare mesh file (.obj .off .ply .stl) framed by a
 // default camera and lit by a default light. Throws InputError naming the file, key or value at fault.
 Scene load_scene(const std::filesystem::path& path);
+// The mesh's bounding sphere seen from +z and slightly above (fov 40), one white directional light from
+// the upper left behind the camera, a grey material with a highlight (n = 32), 1920x1080, no culling.
 Scene scene_for_mesh(const std::filesystem::path& mesh_path);
 // Throws InputError unless 1 <= width, height <= kMaxResolution.
 void check_resolution(int width, int height, const std::string& what);

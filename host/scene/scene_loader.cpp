@@ -1,0 +1,357 @@
+// Scene files: the JSON format of scenes/README.md, or a bare mesh file.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "json_reader.hpp"
+#include "parashade/errors.hpp"
+#include "parashade/scene.hpp"
+#include "parashade/shapes.hpp"
+
+namespace parashade {
+
+namespace {
+
+using detail::JsonObject;
+using detail::JsonValue;
+
+// Upper bounds that keep a typo from allocating gigabytes; generous for any real scene.
+constexpr int kMaxSegments = 4096;                     // slices, stacks, segments
+constexpr int kMaxTeapotLevel = 256;                   // 4.2M triangles
+constexpr long long kMaxShapeTriangles = 1ll << 24;    // 16.8M per procedural shape
+
+double positive(const JsonValue& v) {
+  const double x = v.number();
+  if (!(x > 0.0)) v.fail("must be > 0 (got " + v.dump() + ")");
+  return x;
+}
+
+double non_negative(const JsonValue& v) {
+  const double x = v.number();
+  if (x < 0.0) v.fail("must be >= 0 (got " + v.dump() + ")");
+  return x;
+}
+
+glm::vec3 nonzero_vec3(const JsonValue& v) {
+  const glm::vec3 x = v.vec3();
+  if (x == glm::vec3(0.0f)) v.fail("must not be the zero vector");
+  return x;
+}
+
+// ${NAME} and $NAME from the environment; an unset variable is an error that names it.
+std::string expand_variables(const JsonValue& where, const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    if (text[i] != '$') {
+      out += text[i++];
+      continue;
+    }
+    std::string name;
+    std::size_t next;
+    if (i + 1 < text.size() && text[i + 1] == '{') {
+      const std::size_t close = text.find('}', i + 2);
+      if (close == std::string::npos) where.fail("unterminated '${' in \"" + text + "\"");
+      name = text.substr(i + 2, close - i - 2);
+      next = close + 1;
+    } else {
+      next = i + 1;
+      while (next < text.size() && (std::isalnum(static_cast<unsigned char>(text[next])) || text[next] == '_')) ++next;
+      name = text.substr(i + 1, next - i - 1);
+    }
+    if (name.empty()) where.fail("'$' without a variable name in \"" + text + "\"");
+    const char* value = std::getenv(name.c_str());
+    if (!value) where.fail("environment variable " + name + " is not set (used in \"" + text + "\")");
+    out += value;
+    i = next;
+  }
+  return out;
+}
+
+// Shapes and meshes already built for this scene, so equal specifications share one Mesh.
+class MeshCache {
+ public:
+  std::shared_ptr<const Mesh> get(const std::string& key, const std::function<Mesh()>& build) {
+    auto& slot = meshes_[key];
+    if (!slot) slot = std::make_shared<const Mesh>(build());
+    return slot;
+  }
+
+ private:
+  std::map<std::string, std::shared_ptr<const Mesh>> meshes_;
+};
+
+void check_triangles(const JsonValue& where, long long triangles) {
+  if (triangles > kMaxShapeTriangles)
+    where.fail("would make " + std::to_string(triangles) + " triangles, more than the limit " +
+               std::to_string(kMaxShapeTriangles));
+}
+
+std::shared_ptr<const Mesh> read_shape(const JsonValue& v, MeshCache& cache) {
+  // "sphere" alone takes the defaults; {"type": "sphere", ...} sets parameters.
+  static const nlohmann::json kNoParameters = nlohmann::json::object();
+  const bool bare = v.is_string();
+  JsonObject spec = bare ? JsonObject(v, kNoParameters) : v.object();
+  const std::string type = bare ? v.choice({"sphere", "torus", "box", "cylinder", "teapot"})
+                                : spec.required("type").choice({"sphere", "torus", "box", "cylinder", "teapot"});
+  auto integer = [&](const char* key, int fallback, int lo, int hi) {
+    const auto x = spec.optional(key);
+    return x ? x->integer(lo, hi) : fallback;
+  };
+  auto real = [&](const char* key, double fallback) {
+    const auto x = spec.optional(key);
+    return x ? positive(*x) : fallback;
+  };
+  std::shared_ptr<const Mesh> mesh;
+  if (type == "sphere") {
+    const int slices = integer("slices", 32, 3, kMaxSegments), stacks = integer("stacks", 17, 2, kMaxSegments);
+    check_triangles(v, 2ll * slices * (stacks - 1));
+    mesh = cache.get("sphere " + std::to_string(slices) + " " + std::to_string(stacks),
+                     [=] { return make_sphere(slices, stacks); });
+  } else if (type == "torus") {
+    const auto major_v = spec.optional("major_radius");
+    const float major = float(major_v ? positive(*major_v) : 1.0);
+    const auto minor_v = spec.optional("minor_radius");
+    const float minor = float(minor_v ? positive(*minor_v) : 0.25);
+    if (!(minor < major)) (minor_v ? *minor_v : v).fail("minor_radius must be smaller than major_radius");
+    const int major_n = integer("major_segments", 48, 3, kMaxSegments);
+    const int minor_n = integer("minor_segments", 24, 3, kMaxSegments);
+    check_triangles(v, 2ll * major_n * minor_n);
+    char key[160];
+    std::snprintf(key, sizeof key, "torus %.9g %.9g %d %d", major, minor, major_n, minor_n);
+    mesh = cache.get(key, [=] { return make_torus(major, minor, major_n, minor_n); });
+  } else if (type == "box") {
+    glm::vec3 size(1.0f);
+    if (const auto s = spec.optional("size")) {
+      size = s->is_number() ? glm::vec3(float(positive(*s))) : s->vec3();
+      if (!(size.x > 0.0f && size.y > 0.0f && size.z > 0.0f)) s->fail("every size must be > 0 (got " + s->dump() + ")");
+    }
+    char key[160];
+    std::snprintf(key, sizeof key, "box %.9g %.9g %.9g", size.x, size.y, size.z);
+    mesh = cache.get(key, [=] { return make_box(size); });
+  } else if (type == "cylinder") {
+    const float radius = float(real("radius", 0.5)), height = float(real("height", 1.0));
+    const int segments = integer("segments", 32, 3, kMaxSegments);
+    const auto caps_v = spec.optional("caps");
+    const bool caps = caps_v ? caps_v->boolean() : true;
+    char key[160];
+    std::snprintf(key, sizeof key, "cylinder %.9g %.9g %d %d", radius, height, segments, int(caps));
+    mesh = cache.get(key, [=] { return make_cylinder(radius, height, segments, caps); });
+  } else {
+    const int level = integer("level", 8, 2, kMaxTeapotLevel);
+    mesh = cache.get("teapot " + std::to_string(level), [=] { return make_teapot(level); });
+  }
+  spec.finish();
+  return mesh;
+}
+
+std::shared_ptr<const Mesh> read_mesh_path(const JsonValue& v, const std::filesystem::path& folder, MeshCache& cache) {
+  std::filesystem::path path = expand_variables(v, v.string());
+  if (path.is_relative()) path = folder / path;
+  path = path.lexically_normal();
+  return cache.get("mesh " + path.string(), [&] {
+    try {
+      return load_mesh(path);
+    } catch (const InputError& e) {
+      v.fail(e.what());
+    }
+  });
+}
+
+// model = T * Rz * Ry * Rx * S: scale, then rotate about X, Y, Z (degrees), then translate.
+glm::mat4 read_transform(const JsonValue& v) {
+  JsonObject t = v.object();
+  glm::vec3 translate(0.0f), rotate(0.0f), scale(1.0f);
+  if (const auto x = t.optional("translate")) translate = x->vec3();
+  if (const auto x = t.optional("rotate")) rotate = x->vec3();
+  if (const auto x = t.optional("scale")) {
+    scale = x->is_number() ? glm::vec3(float(x->number())) : x->vec3();
+    // A negative factor mirrors the object, turning its front faces into back faces.
+    if (!(scale.x > 0.0f && scale.y > 0.0f && scale.z > 0.0f))
+      x->fail("every scale factor must be > 0 (got " + x->dump() + ")");
+  }
+  t.finish();
+  glm::mat4 m = glm::translate(glm::mat4(1.0f), translate);
+  m = glm::rotate(m, glm::radians(rotate.z), glm::vec3(0, 0, 1));
+  m = glm::rotate(m, glm::radians(rotate.y), glm::vec3(0, 1, 0));
+  m = glm::rotate(m, glm::radians(rotate.x), glm::vec3(1, 0, 0));
+  return glm::scale(m, scale);
+}
+
+Camera read_camera(const JsonValue& v) {
+  JsonObject c = v.object();
+  Camera cam;
+  const auto type = c.optional("type");
+  cam.projection = (type && type->choice({"perspective", "orthographic"}) == "orthographic") ? Projection::orthographic
+                                                                                           : Projection::perspective;
+  if (const auto x = c.optional("position")) cam.position = x->vec3();
+  if (const auto x = c.optional("target")) cam.target = x->vec3();
+  const auto up = c.optional("up");
+  if (up) cam.up = nonzero_vec3(*up);
+  if (cam.position == cam.target) v.fail("position and target are the same point");
+  const glm::vec3 forward = glm::normalize(cam.target - cam.position);
+  if (glm::length(glm::cross(forward, glm::normalize(cam.up))) < 1e-4f)
+    (up ? *up : v).fail("up is parallel to the view direction");
+  // Only the parameters of the chosen projection are accepted, so a forgotten "type" is noticed.
+  if (cam.projection == Projection::perspective) {
+    if (const auto x = c.optional("fov")) {
+      cam.fov_y_degrees = float(x->number());
+      if (!(cam.fov_y_degrees > 0.0f && cam.fov_y_degrees < 180.0f))
+        x->fail("must be in (0, 180) degrees (got " + x->dump() + ")");
+    }
+  } else if (const auto x = c.optional("height")) {
+    cam.ortho_height = float(positive(*x));
+  }
+  if (const auto x = c.optional("near")) cam.near_plane = float(positive(*x));
+  const auto far = c.optional("far");
+  if (far) cam.far_plane = float(far->number());
+  if (!(cam.far_plane > cam.near_plane))
+    (far ? *far : v).fail("far (" + std::to_string(cam.far_plane) + ") must be greater than near (" +
+                         std::to_string(cam.near_plane) + ")");
+  c.finish();
+  return cam;
+}
+
+Light read_light(const JsonValue& v) {
+  JsonObject l = v.object();
+  Light light;
+  light.type = l.required("type").choice({"directional", "point"}) == "point" ? LightType::point : LightType::directional;
+  if (light.type == LightType::directional)
+    light.direction = glm::normalize(nonzero_vec3(l.required("direction")));
+  else
+    light.position = l.required("position").vec3();
+  glm::vec3 color(1.0f);
+  if (const auto x = l.optional("color")) color = x->color();
+  float intensity = 1.0f;
+  if (const auto x = l.optional("intensity")) intensity = float(non_negative(*x));
+  light.color = color * intensity;
+  l.finish();
+  return light;
+}
+
+// ambient = ka*color, diffuse = kd*color, specular = ks*specular_color, unless given explicitly.
+Material read_material(const std::string& name, const JsonValue& v) {
+  JsonObject m = v.object();
+  Material mat;
+  mat.name = name;
+  glm::vec3 color(1.0f), specular_color(1.0f);
+  if (const auto x = m.optional("color")) color = x->color();
+  if (const auto x = m.optional("specular_color")) specular_color = x->color();
+  auto coefficient = [&](const char* key, float fallback) {
+    const auto x = m.optional(key);
+    return x ? float(non_negative(*x)) : fallback;
+  };
+  const float ka = coefficient("ka", 0.1f), kd = coefficient("kd", 0.7f), ks = coefficient("ks", 0.5f);
+  mat.ambient = ka * color;
+  mat.diffuse = kd * color;
+  mat.specular = ks * specular_color;
+  if (const auto x = m.optional("ambient")) mat.ambient = x->color();
+  if (const auto x = m.optional("diffuse")) mat.diffuse = x->color();
+  if (const auto x = m.optional("specular")) mat.specular = x->color();
+  if (const auto x = m.optional("n")) mat.shininess = float(positive(*x));
+  m.finish();
+  return mat;
+}
+
+Object read_object(const JsonValue& v, std::size_t index, std::map<std::string, std::uint32_t>& materials,
+                   Scene& scene, const std::filesystem::path& folder, MeshCache& cache) {
+  JsonObject o = v.object();
+  Object obj;
+  const auto shape = o.optional("shape");
+  const auto mesh = o.optional("mesh");
+  if (shape && mesh) v.fail("has both 'shape' and 'mesh' (one object, one geometry)");
+  if (!shape && !mesh) v.fail("needs 'shape' or 'mesh'");
+  obj.mesh = shape ? read_shape(*shape, cache) : read_mesh_path(*mesh, folder, cache);
+  if (const auto x = o.optional("name")) {
+    obj.name = x->string();
+  } else {
+    obj.name = "object " + std::to_string(index);
+  }
+  std::string material = "default";
+  const auto material_v = o.optional("material");
+  if (material_v) material = material_v->string();
+  auto found = materials.find(material);
+  if (found == materials.end()) {
+    if (material_v) {
+      std::string defined;
+      for (const auto& [name, i] : materials) defined += (defined.empty() ? "" : ", ") + name;
+      material_v->fail("unknown material '" + material + "' (defined: " + (defined.empty() ? "none" : defined) + ")");
+    }
+    // Objects without a material share a default one, added once.
+    Material fallback;
+    fallback.name = "default";
+    scene.materials.push_back(fallback);
+    found = materials.emplace("default", std::uint32_t(scene.materials.size() - 1)).first;
+  }
+  obj.material = found->second;
+  if (const auto x = o.optional("transform")) obj.model = read_transform(*x);
+  o.finish();
+  return obj;
+}
+
+Scene read_scene(const nlohmann::json& doc, const std::filesystem::path& path) {
+  const std::string file = path.string();
+  const JsonValue root(doc, "", file);
+  JsonObject top = root.object();
+  Scene scene;
+  scene.source = path;
+  scene.name = path.stem().string();
+  if (const auto x = top.optional("name")) scene.name = x->string();
+  if (const auto x = top.optional("resolution")) {
+    const std::vector<JsonValue> wh = x->array();
+    if (wh.size() != 2) x->fail("expected [width, height]");
+    // Integers first (any size), then the limit with its reason.
+    const int w = wh[0].integer(-1000000000, 1000000000), h = wh[1].integer(-1000000000, 1000000000);
+    check_resolution(w, h, file + ": " + x->path());
+    scene.width = w;
+    scene.height = h;
+  }
+  if (const auto x = top.optional("background")) scene.background = x->color();
+  if (const auto x = top.optional("ambient")) scene.ambient_light = x->color();
+  if (const auto x = top.optional("camera")) scene.camera = read_camera(*x);
+  if (const auto x = top.optional("lights"))
+    for (const JsonValue& l : x->array()) scene.lights.push_back(read_light(l));
+  std::map<std::string, std::uint32_t> materials;
+  if (const auto x = top.optional("materials")) {
+    JsonObject all = x->object();
+    for (const auto& [name, m] : all.members()) {
+      scene.materials.push_back(read_material(name, m));
+      materials[name] = std::uint32_t(scene.materials.size() - 1);
+    }
+  }
+  const std::filesystem::path folder = path.parent_path();
+  MeshCache cache;
+  const std::vector<JsonValue> objects = top.required("objects").array(1);
+  for (std::size_t i = 0; i < objects.size(); ++i)
+    scene.objects.push_back(read_object(objects[i], i, materials, scene, folder, cache));
+  if (const auto x = top.optional("cull_backfaces")) scene.cull_backfaces = x->boolean();
+  if (const auto x = top.optional("viewer")) scene.local_viewer = x->choice({"local", "infinite"}) == "local";
+  top.finish();
+  return scene;
+}
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+}  // namespace
+
+Scene load_scene(const std::filesystem::path& path) {
+  const std::string ext = lower_extension(path);
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path.string() + ": no such file");
+  if (ext == ".json") return read_scene(detail::parse_json_file(path), path);
+  if (ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl") return scene_for_mesh(path);
+  throw InputError(path.string() + ": unknown scene format '" + ext + "' (expected .json, or a mesh: .obj .off .ply .stl)");
+}
+
+}  // namespace parashade
