@@ -2,11 +2,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <map>
 #include <memory>
+#include <sstream>
 #include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -94,62 +94,70 @@ void check_triangles(const JsonValue& where, long long triangles) {
                std::to_string(kMaxShapeTriangles));
 }
 
-std::shared_ptr<const Mesh> read_shape(const JsonValue& v, MeshCache& cache) {
+// A shape's parameters, all keys checked, before anything is built.
+struct ShapeSpec {
+  std::string key;  // equal keys, equal meshes
+  std::function<Mesh()> build;
+};
+
+ShapeSpec read_shape(const JsonValue& v) {
   // "sphere" alone takes the defaults; {"type": "sphere", ...} sets parameters.
   static const nlohmann::json kNoParameters = nlohmann::json::object();
+  const std::vector<std::string> types = {"sphere", "torus", "box", "cylinder", "teapot"};
   const bool bare = v.is_string();
   JsonObject spec = bare ? JsonObject(v, kNoParameters) : v.object();
-  const std::string type = bare ? v.choice({"sphere", "torus", "box", "cylinder", "teapot"})
-                                : spec.required("type").choice({"sphere", "torus", "box", "cylinder", "teapot"});
+  const std::string type = bare ? v.choice(types) : spec.required("type").choice(types);
   auto integer = [&](const char* key, int fallback, int lo, int hi) {
     const auto x = spec.optional(key);
     return x ? x->integer(lo, hi) : fallback;
   };
-  auto real = [&](const char* key, double fallback) {
+  auto length = [&](const char* key, double fallback) {
     const auto x = spec.optional(key);
-    return x ? positive(*x) : fallback;
+    return float(x ? positive(*x) : fallback);
   };
-  std::shared_ptr<const Mesh> mesh;
+  std::ostringstream key;
+  key.precision(9);
+  key << type;
+  ShapeSpec shape;
   if (type == "sphere") {
     const int slices = integer("slices", 32, 3, kMaxSegments), stacks = integer("stacks", 17, 2, kMaxSegments);
     check_triangles(v, 2ll * slices * (stacks - 1));
-    mesh = cache.get("sphere " + std::to_string(slices) + " " + std::to_string(stacks),
-                     [=] { return make_sphere(slices, stacks); });
+    key << ' ' << slices << ' ' << stacks;
+    shape.build = [=] { return make_sphere(slices, stacks); };
   } else if (type == "torus") {
-    const auto major_v = spec.optional("major_radius");
-    const float major = float(major_v ? positive(*major_v) : 1.0);
-    const auto minor_v = spec.optional("minor_radius");
-    const float minor = float(minor_v ? positive(*minor_v) : 0.25);
-    if (!(minor < major)) (minor_v ? *minor_v : v).fail("minor_radius must be smaller than major_radius");
+    const float major = length("major_radius", 1.0), minor = length("minor_radius", 0.25);
+    if (!(minor < major)) {
+      const auto minor_v = spec.optional("minor_radius");
+      (minor_v ? *minor_v : v).fail("minor_radius must be smaller than major_radius");
+    }
     const int major_n = integer("major_segments", 48, 3, kMaxSegments);
     const int minor_n = integer("minor_segments", 24, 3, kMaxSegments);
     check_triangles(v, 2ll * major_n * minor_n);
-    char key[160];
-    std::snprintf(key, sizeof key, "torus %.9g %.9g %d %d", major, minor, major_n, minor_n);
-    mesh = cache.get(key, [=] { return make_torus(major, minor, major_n, minor_n); });
+    key << ' ' << major << ' ' << minor << ' ' << major_n << ' ' << minor_n;
+    shape.build = [=] { return make_torus(major, minor, major_n, minor_n); };
   } else if (type == "box") {
     glm::vec3 size(1.0f);
     if (const auto s = spec.optional("size")) {
       size = s->is_number() ? glm::vec3(float(positive(*s))) : s->vec3();
       if (!(size.x > 0.0f && size.y > 0.0f && size.z > 0.0f)) s->fail("every size must be > 0 (got " + s->dump() + ")");
     }
-    char key[160];
-    std::snprintf(key, sizeof key, "box %.9g %.9g %.9g", size.x, size.y, size.z);
-    mesh = cache.get(key, [=] { return make_box(size); });
+    key << ' ' << size.x << ' ' << size.y << ' ' << size.z;
+    shape.build = [=] { return make_box(size); };
   } else if (type == "cylinder") {
-    const float radius = float(real("radius", 0.5)), height = float(real("height", 1.0));
+    const float radius = length("radius", 0.5), height = length("height", 1.0);
     const int segments = integer("segments", 32, 3, kMaxSegments);
     const auto caps_v = spec.optional("caps");
     const bool caps = caps_v ? caps_v->boolean() : true;
-    char key[160];
-    std::snprintf(key, sizeof key, "cylinder %.9g %.9g %d %d", radius, height, segments, int(caps));
-    mesh = cache.get(key, [=] { return make_cylinder(radius, height, segments, caps); });
+    key << ' ' << radius << ' ' << height << ' ' << segments << ' ' << caps;
+    shape.build = [=] { return make_cylinder(radius, height, segments, caps); };
   } else {
     const int level = integer("level", 8, 2, kMaxTeapotLevel);
-    mesh = cache.get("teapot " + std::to_string(level), [=] { return make_teapot(level); });
+    key << ' ' << level;
+    shape.build = [=] { return make_teapot(level); };
   }
   spec.finish();
-  return mesh;
+  shape.key = key.str();
+  return shape;
 }
 
 std::shared_ptr<const Mesh> read_mesh_path(const JsonValue& v, const std::filesystem::path& folder, MeshCache& cache) {
@@ -268,7 +276,12 @@ Object read_object(const JsonValue& v, std::size_t index, std::map<std::string, 
   const auto mesh = o.optional("mesh");
   if (shape && mesh) v.fail("has both 'shape' and 'mesh' (one object, one geometry)");
   if (!shape && !mesh) v.fail("needs 'shape' or 'mesh'");
-  obj.mesh = shape ? read_shape(*shape, cache) : read_mesh_path(*mesh, folder, cache);
+  if (shape) {
+    const ShapeSpec spec = read_shape(*shape);
+    obj.mesh = cache.get(spec.key, spec.build);
+  } else {
+    obj.mesh = read_mesh_path(*mesh, folder, cache);
+  }
   if (const auto x = o.optional("name")) {
     obj.name = x->string();
   } else {
