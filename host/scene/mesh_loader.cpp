@@ -2,7 +2,7 @@
 
 // OpenMesh's vectors are uninitialized by design (default constructor); GCC's inliner then reports
 // its property containers as "maybe uninitialized" at a location in libstdc++, where no narrower
-// suppression reaches. The values are always written before they are read.
+// suppression reaches. parashade reads only the values a reader wrote (normals: see CollectingImporter).
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
