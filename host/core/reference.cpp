@@ -18,6 +18,7 @@
 #include <string>
 
 #include "parashade/lighting.hpp"
+#include "parashade/parallel.hpp"
 
 namespace parashade {
 namespace {
@@ -164,8 +165,8 @@ ReferenceImage render_reference(const Scene& scene, const ScreenGeometry& g, Met
 
   // Visibility: window depth, linear in screen space, interpolated with screen-space barycentrics.
   std::vector<double> depth(pixels, std::numeric_limits<double>::infinity());
-#pragma omp parallel for schedule(dynamic)
-  for (int band = 0; band < bands; ++band) {
+  parallel_for(std::size_t(bands), [&](std::size_t band_index) {
+    const int band = int(band_index);
     const int band_y0 = band * kBandRows, band_y1 = std::min(height - 1, band_y0 + kBandRows - 1);
     for (const std::uint32_t t : band_triangles[band]) {
       const Triangle& tri = tris[t];
@@ -186,11 +187,11 @@ ReferenceImage render_reference(const Scene& scene, const ScreenGeometry& g, Met
         }
       }
     }
-  }
+  });
 
   // Shading: only the visible triangle of each pixel.
-#pragma omp parallel for schedule(dynamic, 4)
-  for (int y = 0; y < height; ++y) {
+  parallel_for(std::size_t(height), [&](std::size_t row) {
+    const int y = int(row);
     for (int x = 0; x < width; ++x) {
       const std::size_t p = std::size_t(y) * width + x;
       const std::int32_t t = out.triangle[p];
@@ -240,7 +241,7 @@ ReferenceImage render_reference(const Scene& scene, const ScreenGeometry& g, Met
       out.ideal[p] = clamp_levels(ideal);
       out.exact[p] = clamp_levels(exact);
     }
-  }
+  });
   return out;
 }
 

@@ -1,7 +1,6 @@
 // The reference's values: each method's ideal, exact (perspective-correct) Phong, depth and background.
 // Expected values are computed here independently, from pixel-unit geometry.
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +8,7 @@
 #include <vector>
 
 #include "parashade/lighting.hpp"
+#include "parashade/parallel.hpp"
 #include "parashade/reference.hpp"
 #include "screen_fixtures.hpp"
 
@@ -304,12 +304,12 @@ TEST(ReferenceShading, ResultDoesNotDependOnTheThreadCount) {
     if (area2 != 0) b.triangle(ids[0], ids[1], ids[2], glm::vec3(float(t % 256)));
   }
   const Scene scene = lit_scene();
-  const int threads = omp_get_max_threads();
-  omp_set_num_threads(1);
+  const unsigned threads = host_threads();
+  set_host_threads(1);
   const ReferenceImage serial = render_reference(scene, b.geometry(), Method::phong);
-  omp_set_num_threads(4);
+  set_host_threads(4);
   const ReferenceImage parallel = render_reference(scene, b.geometry(), Method::phong);
-  omp_set_num_threads(threads);
+  set_host_threads(threads);
   EXPECT_EQ(serial.covered, parallel.covered);
   EXPECT_EQ(serial.triangle, parallel.triangle);
   EXPECT_EQ(serial.ideal, parallel.ideal);

@@ -1,0 +1,29 @@
+#pragma once
+// Host parallelism for the software stages (vertex stage, setup, binning, reference). Workers block
+// on a condition variable between jobs instead of spinning: PoCL runs its kernels on the same cores,
+// and spinning host threads (OpenMP's default) measurably slowed the kernels they wait for.
+#include <algorithm>
+#include <cstddef>
+#include <functional>
+
+namespace parashade {
+
+// Number of host threads: set_host_threads() if called, else PARASHADE_HOST_THREADS if set (>= 1),
+// else the hardware's.
+unsigned host_threads();
+// Changes the number of host threads (not while a parallel_for runs).
+void set_host_threads(unsigned threads);
+
+// Calls body(i) for every i in [0, count), spread over host_threads() threads (the caller is one of
+// them), and returns when all are done. Items are taken in increasing order from a shared counter;
+// results must not depend on which thread runs an item. Exceptions from body are rethrown (the first).
+void parallel_for(std::size_t count, const std::function<void(std::size_t)>& body);
+
+// Calls body(begin, end) on consecutive ranges of at most `chunk` items covering [0, count).
+inline void parallel_for_ranges(std::size_t count, std::size_t chunk,
+                                const std::function<void(std::size_t, std::size_t)>& body) {
+  const std::size_t ranges = (count + chunk - 1) / chunk;
+  parallel_for(ranges, [&](std::size_t r) { body(r * chunk, std::min(count, (r + 1) * chunk)); });
+}
+
+}  // namespace parashade
