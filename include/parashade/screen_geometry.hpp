@@ -39,11 +39,15 @@ struct ScreenGeometry {
   int width = 0;
   int height = 0;
   // Per vertex: the scene's vertices (objects concatenated), then the vertices clipping made.
+  std::vector<glm::vec4> clip;      // clip-space position (scene vertices only)
+  std::vector<std::uint8_t> outcode;// clip planes the scene vertex is outside of (scene vertices only)
   std::vector<glm::ivec2> xy;       // sub-pixel screen position (see above)
   std::vector<float> depth;         // window depth in [0, 1]; linear in screen space
   std::vector<float> inv_w;         // 1 / w_clip, for perspective-correct interpolation
-  std::vector<glm::vec3> world;     // world-space position
-  std::vector<glm::vec3> normal;    // world-space unit normal
+  std::vector<glm::vec3> world;     // world-space position (flat, phong and the reference; else empty)
+  std::vector<glm::vec3> normal;    // world-space normal: unit at scene vertices; at clip-made vertices the
+                                    // (unnormalized) interpolation, so the normal field is unchanged
+                                    // (phong and the reference; else empty)
   std::vector<glm::vec3> color;     // Gouraud: vertex Blinn–Phong in 8-bit levels, unclamped; else empty
   // Per screen triangle, in primitive order (the order of the scene's objects and faces).
   std::vector<glm::uvec3> triangles;   // vertex indices, ordered so that E01(V2) > 0

@@ -1,0 +1,76 @@
+#include "parashade/binning.hpp"
+
+#include <algorithm>
+
+#include "parashade/parallel.hpp"
+
+namespace parashade {
+
+template <typename Visit>
+void Binner::for_each_tile_of(const TriangleGeometry& t, Visit visit) const {
+  if (t.x0 > t.x1) return;
+  const int tx0 = t.x0 / tile_size_, tx1 = t.x1 / tile_size_, ty0 = t.y0 / tile_size_, ty1 = t.y1 / tile_size_;
+  if (tx0 == tx1 && ty0 == ty1) {
+    visit(ty0 * tiles_x_ + tx0);
+    return;
+  }
+  for (int ty = ty0; ty <= ty1; ++ty) {
+    const std::int64_t dy_lo = std::max<int>(ty * tile_size_, t.y0) - t.y0;
+    const std::int64_t dy_hi = std::min<int>(ty * tile_size_ + tile_size_ - 1, t.y1) - t.y0;
+    for (int tx = tx0; tx <= tx1; ++tx) {
+      const std::int64_t dx_lo = std::max<int>(tx * tile_size_, t.x0) - t.x0;
+      const std::int64_t dx_hi = std::min<int>(tx * tile_size_ + tile_size_ - 1, t.x1) - t.x0;
+      // Skip the tile when some edge is negative at every pixel centre of it (max over the corners < 0).
+      bool outside = false;
+      for (int e = 0; e < 3 && !outside; ++e) {
+        const std::int64_t a = t.edge_a[e], b = t.edge_b[e];
+        const std::int64_t best = t.edge_c[e] + std::max(a * dx_lo, a * dx_hi) + std::max(b * dy_lo, b * dy_hi);
+        outside = best < 0;
+      }
+      if (!outside) visit(ty * tiles_x_ + tx);
+    }
+  }
+}
+
+void Binner::count(const TriangleGeometry* tris, std::size_t n, int width, int height, int tile_size) {
+  tris_ = tris;
+  n_ = n;
+  tile_size_ = tile_size;
+  tiles_x_ = (width + tile_size - 1) / tile_size;
+  tiles_y_ = (height + tile_size - 1) / tile_size;
+  const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
+  // Chunks are contiguous ranges of triangles; their lists are concatenated in chunk order per tile,
+  // so the result is in primitive order whatever the number of threads.
+  const std::size_t chunks = std::max<std::size_t>(1, std::min<std::size_t>(2 * std::size_t(host_threads()), n / 4096));
+  chunk_first_.resize(chunks + 1);
+  for (std::size_t c = 0; c <= chunks; ++c) chunk_first_[c] = n * c / chunks;
+  chunk_cursor_.assign(chunks * tiles, 0);
+  parallel_for(chunks, [&](std::size_t c) {
+    std::uint32_t* counts = &chunk_cursor_[c * tiles];
+    for (std::size_t i = chunk_first_[c]; i < chunk_first_[c + 1]; ++i)
+      for_each_tile_of(tris[i], [counts](int tile) { ++counts[tile]; });
+  });
+  start_.assign(tiles + 1, 0);
+  std::uint32_t total = 0;
+  for (std::size_t k = 0; k < tiles; ++k) {
+    start_[k] = total;
+    for (std::size_t c = 0; c < chunks; ++c) {
+      const std::uint32_t cnt = chunk_cursor_[c * tiles + k];
+      chunk_cursor_[c * tiles + k] = total;
+      total += cnt;
+    }
+  }
+  start_[tiles] = total;
+}
+
+void Binner::fill(std::uint32_t* out) const {
+  const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
+  const std::size_t chunks = chunk_first_.size() - 1;
+  parallel_for(chunks, [&](std::size_t c) {
+    std::vector<std::uint32_t> cursor(chunk_cursor_.begin() + c * tiles, chunk_cursor_.begin() + (c + 1) * tiles);
+    for (std::size_t i = chunk_first_[c]; i < chunk_first_[c + 1]; ++i)
+      for_each_tile_of(tris_[i], [&](int tile) { out[cursor[tile]++] = std::uint32_t(i); });
+  });
+}
+
+}  // namespace parashade

@@ -1,0 +1,354 @@
+#include "parashade/geometry_stage.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "parashade/parallel.hpp"
+#include "parashade/vertex_lighting.hpp"
+
+namespace parashade {
+namespace {
+
+// Clip planes; bit i of an outcode = outside plane i.
+enum : std::uint8_t { kNear = 1, kFar = 2, kLeft = 4, kRight = 8, kBottom = 16, kTop = 32, kAllPlanes = 63 };
+
+float plane_distance(const glm::vec4& c, int plane) {
+  switch (plane) {
+    case kNear: return c.z + c.w;
+    case kFar: return c.w - c.z;
+    case kLeft: return c.x + kGuardBand * c.w;
+    case kRight: return kGuardBand * c.w - c.x;
+    case kBottom: return c.y + kGuardBand * c.w;
+    default: return kGuardBand * c.w - c.y;
+  }
+}
+
+std::uint8_t outcode_of(const glm::vec4& c) {
+  if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) return kAllPlanes;
+  std::uint8_t code = 0;
+  for (int plane = kNear; plane <= kTop; plane <<= 1)
+    if (plane_distance(c, plane) < 0.0f) code |= plane;
+  return code;
+}
+
+struct Snapped {
+  glm::ivec2 xy;
+  float depth;
+  float inv_w;
+};
+
+// Clip space -> sub-pixel screen position (y down), window depth and 1/w. Only meaningful for points
+// inside the guard band (the callers guarantee it); values are clamped so nothing overflows otherwise.
+Snapped snap(const glm::vec4& c, int width, int height) {
+  Snapped s{{0, 0}, 1.0f, 0.0f};
+  if (!(c.w > 0.0f)) return s;
+  const double inv_w = 1.0 / double(c.w);
+  const double x = (double(c.x) * inv_w * 0.5 + 0.5) * width * kSubpixel;
+  const double y = (0.5 - double(c.y) * inv_w * 0.5) * height * kSubpixel;
+  constexpr double kLimit = double(1 << 30);
+  s.xy = {int(std::lrint(std::clamp(x, -kLimit, kLimit))), int(std::lrint(std::clamp(y, -kLimit, kLimit)))};
+  s.depth = float(double(c.z) * inv_w * 0.5 + 0.5);
+  s.inv_w = float(inv_w);
+  return s;
+}
+
+struct ClipVertex {
+  std::uint32_t index;  // scene vertex index, or kNewVertex
+  glm::vec4 clip;
+  glm::vec3 world, normal, color;
+};
+constexpr std::uint32_t kNewVertex = 0x80000000u;  // flag on chunk-local indices of clip-made vertices
+
+struct Needs {
+  bool world, normal, color, flat;
+};
+
+// Work of one chunk of input triangles, merged in chunk order so the output order is deterministic.
+struct ChunkOutput {
+  std::vector<glm::uvec3> triangles;
+  std::vector<std::uint32_t> material;
+  std::vector<glm::vec3> flat_color;
+  std::vector<ClipVertex> new_vertices;
+  std::vector<Snapped> new_snapped;
+  GeometryStats stats;
+};
+
+struct ChunkJob {
+  std::size_t object;
+  std::size_t first, count;  // triangles of that object
+};
+
+class Assembler {
+ public:
+  Assembler(const Scene& scene, const ScreenGeometry& g, const Needs& needs, const VertexLighting& lighting)
+      : scene_(scene), g_(g), needs_(needs), lighting_(lighting) {}
+
+  void run(const ChunkJob& job, std::uint32_t vertex_base, ChunkOutput& out) const {
+    const Object& obj = scene_.objects[job.object];
+    const Mesh& mesh = *obj.mesh;
+    for (std::size_t t = job.first; t < job.first + job.count; ++t) {
+      const glm::uvec3 tri = mesh.triangles[t] + glm::uvec3(vertex_base);
+      ++out.stats.triangles_in;
+      const std::uint8_t o0 = g_.outcode[tri.x], o1 = g_.outcode[tri.y], o2 = g_.outcode[tri.z];
+      if (o0 & o1 & o2) {
+        ++out.stats.outside;
+        continue;
+      }
+      const glm::vec3 flat = needs_.flat ? flat_value(obj.material, tri) : glm::vec3(0.0f);
+      if ((o0 | o1 | o2) == 0) {
+        emit(tri, obj.material, flat, out);
+      } else {
+        ++out.stats.clipped;
+        clip_and_emit(tri, std::uint8_t(o0 | o1 | o2), obj.material, flat, out);
+      }
+    }
+  }
+
+ private:
+  glm::vec3 flat_value(std::uint32_t material, glm::uvec3 tri) const {
+    const glm::vec3 a = g_.world[tri.x], b = g_.world[tri.y], c = g_.world[tri.z];
+    glm::vec3 n = glm::cross(b - a, c - a);
+    float len = glm::length(n);
+    if (!(len > 0.0f) && needs_.normal) {  // zero-area in world space: fall back to the vertex normals
+      n = g_.normal[tri.x] + g_.normal[tri.y] + g_.normal[tri.z];
+      len = glm::length(n);
+    }
+    n = len > 0.0f ? n / len : glm::vec3(0.0f, 0.0f, 1.0f);
+    return lighting_.shade(material, (a + b + c) / 3.0f, n);
+  }
+
+  glm::ivec2 xy_of(std::uint32_t v, const ChunkOutput& out) const {
+    return (v & kNewVertex) ? out.new_snapped[v & ~kNewVertex].xy : g_.xy[v];
+  }
+
+  void emit(glm::uvec3 tri, std::uint32_t material, glm::vec3 flat, ChunkOutput& out) const {
+    const glm::i64vec2 p0(xy_of(tri.x, out)), p1(xy_of(tri.y, out)), p2(xy_of(tri.z, out));
+    const std::int64_t area2 = (p1.x - p0.x) * (p2.y - p0.y) - (p1.y - p0.y) * (p2.x - p0.x);
+    if (area2 == 0) {
+      ++out.stats.zero_area;
+      return;
+    }
+    // Counter-clockwise in NDC (front) is clockwise on the y-down screen: area2 < 0.
+    if (area2 > 0 && scene_.cull_backfaces) {
+      ++out.stats.culled_backface;
+      return;
+    }
+    if (area2 < 0) std::swap(tri.y, tri.z);
+    out.triangles.push_back(tri);
+    out.material.push_back(material);
+    if (needs_.flat) out.flat_color.push_back(flat);
+  }
+
+  ClipVertex clip_vertex(std::uint32_t v) const {
+    ClipVertex c{v, g_.clip[v], glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
+    if (needs_.world) c.world = g_.world[v];
+    if (needs_.normal) c.normal = g_.normal[v];
+    if (needs_.color) c.color = g_.color[v];
+    return c;
+  }
+
+  // Interpolates from the inside vertex toward the outside one, so the two triangles sharing an edge
+  // compute bit-identical intersection points (watertight across clip boundaries).
+  static ClipVertex intersect(const ClipVertex& in, const ClipVertex& out, int plane) {
+    const float d_in = plane_distance(in.clip, plane), d_out = plane_distance(out.clip, plane);
+    const float t = d_in / (d_in - d_out);
+    ClipVertex r;
+    r.index = kNewVertex;
+    r.clip = in.clip + t * (out.clip - in.clip);
+    r.world = in.world + t * (out.world - in.world);
+    r.normal = in.normal + t * (out.normal - in.normal);
+    r.color = in.color + t * (out.color - in.color);
+    return r;
+  }
+
+  void clip_and_emit(glm::uvec3 tri, std::uint8_t planes, std::uint32_t material, glm::vec3 flat,
+                     ChunkOutput& out) const {
+    // Sutherland–Hodgman against each plane the triangle reaches beyond; at most 3 + 6 vertices.
+    ClipVertex buffer_a[12], buffer_b[12];
+    ClipVertex* poly = buffer_a;
+    ClipVertex* next = buffer_b;
+    int n = 3;
+    poly[0] = clip_vertex(tri.x);
+    poly[1] = clip_vertex(tri.y);
+    poly[2] = clip_vertex(tri.z);
+    for (int plane = kNear; plane <= kTop && n >= 3; plane <<= 1) {
+      if (!(planes & plane)) continue;
+      int m = 0;
+      for (int i = 0; i < n; ++i) {
+        const ClipVertex& a = poly[i];
+        const ClipVertex& b = poly[(i + 1) % n];
+        const bool a_in = plane_distance(a.clip, plane) >= 0.0f;
+        const bool b_in = plane_distance(b.clip, plane) >= 0.0f;
+        if (a_in) next[m++] = a;
+        if (a_in != b_in) next[m++] = a_in ? intersect(a, b, plane) : intersect(b, a, plane);
+      }
+      std::swap(poly, next);
+      n = m;
+    }
+    if (n < 3) {
+      ++out.stats.outside;
+      return;
+    }
+    std::uint32_t ids[12];
+    for (int i = 0; i < n; ++i) {
+      if (poly[i].index != kNewVertex) {
+        ids[i] = poly[i].index;
+        continue;
+      }
+      ids[i] = kNewVertex | std::uint32_t(out.new_vertices.size());
+      out.new_vertices.push_back(poly[i]);
+      out.new_snapped.push_back(snap(poly[i].clip, g_.width, g_.height));
+    }
+    for (int i = 1; i + 1 < n; ++i) emit({ids[0], ids[i], ids[i + 1]}, material, flat, out);
+  }
+
+  const Scene& scene_;
+  const ScreenGeometry& g_;
+  const Needs needs_;
+  const VertexLighting& lighting_;
+};
+
+template <typename T>
+void resize_if(std::vector<T>& v, bool keep, std::size_t n) {
+  if (keep)
+    v.resize(n);
+  else
+    v.clear();
+}
+
+}  // namespace
+
+glm::mat4 view_projection(const Scene& scene) {
+  const Camera& c = scene.camera;
+  const float aspect = float(scene.width) / float(scene.height);
+  const glm::mat4 view = glm::lookAt(c.position, c.target, c.up);
+  glm::mat4 proj;
+  if (c.projection == Projection::perspective) {
+    proj = glm::perspective(glm::radians(c.fov_y_degrees), aspect, c.near_plane, c.far_plane);
+  } else {
+    const float h = 0.5f * c.ortho_height, w = h * aspect;
+    proj = glm::ortho(-w, w, -h, h, c.near_plane, c.far_plane);
+  }
+  return proj * view;
+}
+
+void build_screen_geometry(const Scene& scene, const GeometryRequest& request, ScreenGeometry& g) {
+  const Method method = request.method;
+  const Needs needs{method == Method::flat || method == Method::phong || request.for_reference,
+                    method == Method::phong || request.for_reference, method == Method::gouraud,
+                    method == Method::flat};
+  const VertexLighting lighting(scene);
+  const glm::mat4 vp = view_projection(scene);
+  g.width = scene.width;
+  g.height = scene.height;
+  g.stats = {};
+
+  std::size_t vertex_count = 0;
+  std::vector<std::uint32_t> vertex_base;
+  for (const Object& o : scene.objects) {
+    vertex_base.push_back(std::uint32_t(vertex_count));
+    vertex_count += o.mesh->positions.size();
+  }
+
+  // Vertex stage.
+  g.clip.resize(vertex_count);
+  g.outcode.resize(vertex_count);
+  g.xy.resize(vertex_count);
+  g.depth.resize(vertex_count);
+  g.inv_w.resize(vertex_count);
+  resize_if(g.world, needs.world, vertex_count);
+  resize_if(g.normal, needs.normal, vertex_count);
+  resize_if(g.color, needs.color, vertex_count);
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    const Object& obj = scene.objects[o];
+    const Mesh& mesh = *obj.mesh;
+    const glm::mat4 model = obj.model;
+    const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(model)));
+    const std::size_t base = vertex_base[o];
+    parallel_for_ranges(mesh.positions.size(), 8192, [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) {
+      const std::size_t v = base + i;
+      const glm::vec4 world = model * glm::vec4(mesh.positions[i], 1.0f);
+      const glm::vec4 clip = vp * world;
+      g.clip[v] = clip;
+      g.outcode[v] = outcode_of(clip);
+      const Snapped s = snap(clip, g.width, g.height);
+      g.xy[v] = s.xy;
+      g.depth[v] = s.depth;
+      g.inv_w[v] = s.inv_w;
+      if (needs.world) g.world[v] = glm::vec3(world);
+      if (needs.normal || needs.color) {
+        glm::vec3 nrm = normal_matrix * mesh.normals[i];
+        const float len = glm::length(nrm);
+        nrm = len > 0.0f ? nrm / len : glm::vec3(0.0f, 0.0f, 1.0f);
+        if (needs.normal) g.normal[v] = nrm;
+        if (needs.color) g.color[v] = lighting.shade(obj.material, glm::vec3(world), nrm);
+      }
+    }
+    });
+  }
+
+  // Primitive assembly in chunks, merged in order.
+  constexpr std::size_t kChunk = 16384;
+  std::vector<ChunkJob> jobs;
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    const std::size_t count = scene.objects[o].mesh->triangles.size();
+    for (std::size_t first = 0; first < count; first += kChunk)
+      jobs.push_back({o, first, std::min(kChunk, count - first)});
+  }
+  std::vector<ChunkOutput> outputs(jobs.size());
+  const Assembler assembler(scene, g, needs, lighting);
+  parallel_for(jobs.size(), [&](std::size_t j) { assembler.run(jobs[j], vertex_base[jobs[j].object], outputs[j]); });
+
+  std::size_t tri_total = 0, new_total = 0;
+  std::vector<std::size_t> tri_offset(outputs.size()), new_offset(outputs.size());
+  for (std::size_t j = 0; j < outputs.size(); ++j) {
+    tri_offset[j] = tri_total;
+    new_offset[j] = vertex_count + new_total;
+    tri_total += outputs[j].triangles.size();
+    new_total += outputs[j].new_vertices.size();
+    const GeometryStats& s = outputs[j].stats;
+    g.stats.triangles_in += s.triangles_in;
+    g.stats.culled_backface += s.culled_backface;
+    g.stats.zero_area += s.zero_area;
+    g.stats.outside += s.outside;
+    g.stats.clipped += s.clipped;
+  }
+  g.stats.triangles_out = tri_total;
+  const std::size_t total_vertices = vertex_count + new_total;
+  g.xy.resize(total_vertices);
+  g.depth.resize(total_vertices);
+  g.inv_w.resize(total_vertices);
+  resize_if(g.world, needs.world, total_vertices);
+  resize_if(g.normal, needs.normal, total_vertices);
+  resize_if(g.color, needs.color, total_vertices);
+  g.triangles.resize(tri_total);
+  g.material.resize(tri_total);
+  g.flat_color.resize(needs.flat ? tri_total : 0);
+
+  parallel_for(outputs.size(), [&](std::size_t j) {
+    const ChunkOutput& out = outputs[j];
+    const std::uint32_t base = std::uint32_t(new_offset[j]);
+    for (std::size_t k = 0; k < out.new_vertices.size(); ++k) {
+      const std::size_t v = base + k;
+      g.xy[v] = out.new_snapped[k].xy;
+      g.depth[v] = out.new_snapped[k].depth;
+      g.inv_w[v] = out.new_snapped[k].inv_w;
+      if (needs.world) g.world[v] = out.new_vertices[k].world;
+      if (needs.normal) g.normal[v] = out.new_vertices[k].normal;
+      if (needs.color) g.color[v] = out.new_vertices[k].color;
+    }
+    const auto remap = [base](std::uint32_t v) { return (v & kNewVertex) ? base + (v & ~kNewVertex) : v; };
+    for (std::size_t t = 0; t < out.triangles.size(); ++t) {
+      const glm::uvec3 tri = out.triangles[t];
+      g.triangles[tri_offset[j] + t] = {remap(tri.x), remap(tri.y), remap(tri.z)};
+      g.material[tri_offset[j] + t] = out.material[t];
+      if (needs.flat) g.flat_color[tri_offset[j] + t] = out.flat_color[t];
+    }
+  });
+}
+
+}  // namespace parashade

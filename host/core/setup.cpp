@@ -1,0 +1,162 @@
+#include "parashade/setup.hpp"
+
+#include "parashade/parallel.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+namespace parashade {
+namespace {
+
+std::int64_t floor_div(std::int64_t a, std::int64_t b) {  // b > 0
+  return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+
+struct Plane {
+  double ref, ddx, ddy;
+};
+
+// The affine function through (a, va), (b, vb), (c, vc), evaluated at pixel centre `at`.
+Plane plane_through(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double va, double vb, double vc, glm::dvec2 at) {
+  const double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+  const double ddx = ((vb - va) * (c.y - a.y) - (vc - va) * (b.y - a.y)) / det;
+  const double ddy = ((vc - va) * (b.x - a.x) - (vb - va) * (c.x - a.x)) / det;
+  return {va + ddx * (at.x - a.x) + ddy * (at.y - a.y), ddx, ddy};
+}
+
+void store(float* dst, int slot, const Plane& p0, const Plane& p1, const Plane& p2) {
+  dst[slot + 0] = float(p0.ref);
+  dst[slot + 1] = float(p1.ref);
+  dst[slot + 2] = float(p2.ref);
+  dst[slot + 3] = float(p0.ddx);
+  dst[slot + 4] = float(p1.ddx);
+  dst[slot + 5] = float(p2.ddx);
+  dst[slot + 6] = float(p0.ddy);
+  dst[slot + 7] = float(p1.ddy);
+  dst[slot + 8] = float(p2.ddy);
+}
+
+}  // namespace
+
+std::size_t attribute_floats(Method method) {
+  switch (method) {
+    case Method::flat: return FLAT_ATTR_FLOATS;
+    case Method::gouraud: return GOURAUD_ATTR_FLOATS;
+    case Method::phong: return PHONG_ATTR_FLOATS;
+  }
+  return 0;
+}
+
+double constant_span_increment(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double ia, double ib, double ic) {
+  const double dy_bc = c.y - b.y, dy_ac = c.y - a.y, dx_ac = c.x - a.x, dx_bc = c.x - b.x;
+  return ((ic - ia) * dy_bc - (ic - ib) * dy_ac) / (dx_ac * dy_bc - dx_bc * dy_ac);
+}
+
+double constant_span_increment_longest_span(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double ia, double ib,
+                                            double ic) {
+  // Sort by y so that B is the middle vertex and H lies on AC at y = y_B.
+  struct V {
+    glm::dvec2 p;
+    double i;
+  } v[3] = {{a, ia}, {b, ib}, {c, ic}};
+  std::sort(v, v + 3, [](const V& l, const V& r) { return l.p.y < r.p.y; });
+  const V &A = v[0], &B = v[1], &C = v[2];
+  const double t = (B.p.y - A.p.y) / (C.p.y - A.p.y);  // = BP_AH / BP_AC along AC (similar triangles)
+  const double x_h = t * (C.p.x - A.p.x) + A.p.x;
+  const double i_h = A.i + (C.i - A.i) * t;             // I_A + dI_AC * BP_AH
+  return (i_h - B.i) / (x_h - B.p.x);
+}
+
+SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeometry* geometry, float* attributes) {
+  const std::int64_t count = std::int64_t(g.triangles.size());
+  const std::size_t stride = attribute_floats(method);
+  const bool has_position = !g.world.empty();
+  std::atomic<std::uint64_t> without_pixels{0};
+  parallel_for_ranges(std::size_t(count), 4096, [&](std::size_t first, std::size_t last) {
+  std::uint64_t empty = 0;
+  for (std::size_t t = first; t < last; ++t) {
+    const glm::uvec3 tri = g.triangles[t];
+    const std::uint32_t vid[3] = {tri.x, tri.y, tri.z};
+    const glm::i64vec2 p[3] = {glm::i64vec2(g.xy[tri.x]), glm::i64vec2(g.xy[tri.y]), glm::i64vec2(g.xy[tri.z])};
+    TriangleGeometry& r = geometry[t];
+    float* attr = attributes + std::size_t(t) * stride;
+
+    const std::int64_t half = kSubpixel / 2;
+    const std::int64_t xmin = std::min({p[0].x, p[1].x, p[2].x}), xmax = std::max({p[0].x, p[1].x, p[2].x});
+    const std::int64_t ymin = std::min({p[0].y, p[1].y, p[2].y}), ymax = std::max({p[0].y, p[1].y, p[2].y});
+    const std::int64_t x0 = std::max<std::int64_t>(0, floor_div(xmin - half + kSubpixel - 1, kSubpixel));
+    const std::int64_t y0 = std::max<std::int64_t>(0, floor_div(ymin - half + kSubpixel - 1, kSubpixel));
+    const std::int64_t x1 = std::min<std::int64_t>(g.width - 1, floor_div(xmax - half, kSubpixel));
+    const std::int64_t y1 = std::min<std::int64_t>(g.height - 1, floor_div(ymax - half, kSubpixel));
+    if (x0 > x1 || y0 > y1) {
+      r = TriangleGeometry{};
+      r.x0 = 1;  // empty box
+      r.x1 = 0;
+      ++empty;
+      continue;
+    }
+    r.x0 = ps_short(x0);
+    r.y0 = ps_short(y0);
+    r.x1 = ps_short(x1);
+    r.y1 = ps_short(y1);
+    r.pad = 0;
+    const std::int64_t cx = kSubpixel * x0 + half, cy = kSubpixel * y0 + half;
+    for (int e = 0; e < 3; ++e) {
+      const glm::i64vec2 vi = p[e], vj = p[(e + 1) % 3];
+      const std::int64_t dx = vj.x - vi.x, dy = vj.y - vi.y;
+      r.edge_c[e] = dx * (cy - vi.y) - dy * (cx - vi.x) - edge_bias(glm::ivec2(vi), glm::ivec2(vj));
+      r.edge_a[e] = ps_int(-dy * kSubpixel);
+      r.edge_b[e] = ps_int(dx * kSubpixel);
+      r.edge_inv_a[e] = r.edge_a[e] != 0 ? 1.0f / float(r.edge_a[e]) : 0.0f;
+    }
+
+    const glm::dvec2 s[3] = {glm::dvec2(p[0]) / double(kSubpixel), glm::dvec2(p[1]) / double(kSubpixel),
+                             glm::dvec2(p[2]) / double(kSubpixel)};
+    const glm::dvec2 at(double(x0) + 0.5, double(y0) + 0.5);
+    const auto plane = [&](double a, double b, double c) { return plane_through(s[0], s[1], s[2], a, b, c, at); };
+    const Plane z = plane(g.depth[vid[0]], g.depth[vid[1]], g.depth[vid[2]]);
+    r.z_ref = float(z.ref);
+    r.z_ddx = float(z.ddx);
+    r.z_ddy = float(z.ddy);
+
+    switch (method) {
+      case Method::flat: {
+        const glm::vec3 c = g.flat_color[t];
+        attr[0] = c.r;
+        attr[1] = c.g;
+        attr[2] = c.b;
+        attr[3] = 0.0f;
+        break;
+      }
+      case Method::gouraud: {
+        Plane ch[3];
+        for (int k = 0; k < 3; ++k) {
+          const double ia = g.color[vid[0]][k], ib = g.color[vid[1]][k], ic = g.color[vid[2]][k];
+          ch[k] = plane(ia, ib, ic);
+          ch[k].ddx = constant_span_increment(s[0], s[1], s[2], ia, ib, ic);  // dI_G, once per triangle
+        }
+        store(attr, 0, ch[0], ch[1], ch[2]);
+        attr[9] = attr[10] = attr[11] = 0.0f;
+        break;
+      }
+      case Method::phong: {
+        Plane n[3], q[3];
+        for (int k = 0; k < 3; ++k) {
+          n[k] = plane(g.normal[vid[0]][k], g.normal[vid[1]][k], g.normal[vid[2]][k]);
+          q[k] = has_position ? plane(g.world[vid[0]][k], g.world[vid[1]][k], g.world[vid[2]][k]) : Plane{0, 0, 0};
+        }
+        store(attr, 0, n[0], n[1], n[2]);
+        store(attr, 9, q[0], q[1], q[2]);
+        attr[PHONG_MATERIAL_SLOT] = float(g.material[t]);
+        attr[19] = attr[20] = attr[21] = 0.0f;
+        break;
+      }
+    }
+  }
+  without_pixels += empty;
+  });
+  return {std::uint64_t(count), without_pixels.load()};
+}
+
+}  // namespace parashade

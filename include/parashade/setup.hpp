@@ -1,0 +1,34 @@
+#pragma once
+// Triangle setup: screen triangles -> fixed-point edge functions, bounding boxes and attribute planes
+// (the records of kernels/triangle_record.h). For Gouraud the x increment of each channel is the
+// constant span increment dI_G of SEEDS §2, computed once per triangle with formula (2.16).
+#include <cstddef>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "parashade/method.hpp"
+#include "parashade/screen_geometry.hpp"
+#include "triangle_record.h"
+
+namespace parashade {
+
+std::size_t attribute_floats(Method method);
+
+struct SetupStats {
+  std::uint64_t records = 0;          // screen triangles
+  std::uint64_t without_pixels = 0;   // no pixel centre inside the bounding box (marked empty)
+};
+
+// Fills geometry[i] and attributes[i * attribute_floats(method) ...] for every screen triangle i.
+// Triangles that cannot cover a pixel centre get an empty box (x0 > x1) and are skipped by binning.
+SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeometry* geometry, float* attributes);
+
+// The constant span increment dI_G (SEEDS formula 2.16) for vertex values ia, ib, ic at screen
+// positions a, b, c (pixels): [(Ic-Ia)*dy_BC - (Ic-Ib)*dy_AC] / [dx_AC*dy_BC - dx_BC*dy_AC].
+double constant_span_increment(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double ia, double ib, double ic);
+// The same increment by formula (2.15): along the longest span through the middle vertex B.
+double constant_span_increment_longest_span(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double ia, double ib,
+                                            double ic);
+
+}  // namespace parashade
