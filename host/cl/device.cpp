@@ -1,0 +1,150 @@
+#include "parashade/device.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <sstream>
+
+#include "parashade/errors.hpp"
+
+namespace parashade {
+namespace {
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return s;
+}
+
+std::string trim(std::string s) {
+  while (!s.empty() && (s.back() == '\0' || std::isspace(static_cast<unsigned char>(s.back())))) s.pop_back();
+  return s;
+}
+
+std::string type_name(cl_device_type t) {
+  if (t & CL_DEVICE_TYPE_GPU) return "gpu";
+  if (t & CL_DEVICE_TYPE_CPU) return "cpu";
+  if (t & CL_DEVICE_TYPE_ACCELERATOR) return "accelerator";
+  return "other";
+}
+
+struct Found {
+  cl::Device device;
+  DeviceInfo info;
+};
+
+std::vector<Found> enumerate() {
+  std::vector<cl::Platform> platforms;
+  try {
+    cl::Platform::get(&platforms);
+  } catch (const cl::Error& e) {
+    platforms.clear();
+  }
+  if (platforms.empty())
+    throw DeviceError(
+        "no OpenCL platform found: install an OpenCL driver, e.g. 'apt-get install pocl-opencl-icd' "
+        "(PoCL, the CPU device parashade is tested on)");
+  std::vector<Found> found;
+  for (const cl::Platform& p : platforms) {
+    std::vector<cl::Device> devices;
+    try {
+      p.getDevices(CL_DEVICE_TYPE_ALL, &devices);
+    } catch (const cl::Error&) {
+      continue;  // a platform without devices (CL_DEVICE_NOT_FOUND)
+    }
+    for (const cl::Device& d : devices) {
+      DeviceInfo i;
+      i.index = int(found.size());
+      i.platform = trim(p.getInfo<CL_PLATFORM_NAME>());
+      i.name = trim(d.getInfo<CL_DEVICE_NAME>());
+      i.vendor = trim(d.getInfo<CL_DEVICE_VENDOR>());
+      i.version = trim(d.getInfo<CL_DEVICE_VERSION>());
+      i.driver = trim(d.getInfo<CL_DRIVER_VERSION>());
+      i.type = type_name(d.getInfo<CL_DEVICE_TYPE>());
+      i.compute_units = int(d.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>());
+      i.global_memory = d.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
+      i.max_allocation = d.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
+      i.constant_buffer = d.getInfo<CL_DEVICE_MAX_CONSTANT_BUFFER_SIZE>();
+      i.max_work_group = d.getInfo<CL_DEVICE_MAX_WORK_GROUP_SIZE>();
+      found.push_back({d, i});
+    }
+  }
+  if (found.empty())
+    throw DeviceError("OpenCL platforms were found but no device: install a driver such as pocl-opencl-icd");
+  return found;
+}
+
+std::string device_list(const std::vector<Found>& found) {
+  std::ostringstream s;
+  for (const Found& f : found) s << "\n  " << f.info.index << ": " << f.info.platform << " / " << f.info.name;
+  return s.str();
+}
+
+}  // namespace
+
+std::vector<DeviceInfo> list_devices() {
+  try {
+    std::vector<DeviceInfo> out;
+    for (const Found& f : enumerate()) out.push_back(f.info);
+    return out;
+  } catch (const cl::Error&) {
+    rethrow_cl_error("listing OpenCL devices");
+  }
+}
+
+Device::Device(cl::Device device, DeviceInfo info) : device_(device), info_(std::move(info)) {
+  try {
+    context_ = cl::Context(device_);
+    queue_ = cl::CommandQueue(context_, device_, CL_QUEUE_PROFILING_ENABLE);
+  } catch (const cl::Error&) {
+    rethrow_cl_error("opening device '" + info_.name + "'");
+  }
+}
+
+cl::Program& Device::program(const std::vector<std::string>& files, const std::string& options) {
+  const auto key = std::make_pair(files, options);
+  const auto it = programs_.find(key);
+  if (it != programs_.end()) return it->second;
+  const std::string source = kernel_source(files);
+  cl::Program program;
+  try {
+    program = cl::Program(context_, source);
+  } catch (const cl::Error&) {
+    rethrow_cl_error("creating program on '" + info_.name + "'");
+  }
+  try {
+    program.build(device_, ("-cl-std=CL1.2 " + options).c_str());
+  } catch (const cl::Error& e) {
+    std::string log;
+    try {
+      log = program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device_);
+    } catch (const cl::Error&) {
+      log = "(no build log)";
+    }
+    throw DeviceError("building kernels (" + files.back() + ", options '" + options + "') failed on '" + info_.name +
+                      "': " + cl_error_name(e.err()) + "\n--- build log ---\n" + trim(log));
+  }
+  return programs_.emplace(key, std::move(program)).first->second;
+}
+
+std::unique_ptr<Device> open_device(const std::string& selector) {
+  std::vector<Found> found;
+  try {
+    found = enumerate();
+  } catch (const cl::Error&) {
+    rethrow_cl_error("listing OpenCL devices");
+  }
+  if (selector.empty()) return std::make_unique<Device>(found.front().device, found.front().info);
+  const bool numeric = std::all_of(selector.begin(), selector.end(), [](char c) { return std::isdigit(c); });
+  if (numeric) {
+    const std::size_t index = std::stoul(selector);
+    if (index < found.size()) return std::make_unique<Device>(found[index].device, found[index].info);
+    throw DeviceError("no OpenCL device with index " + selector + "; devices:" + device_list(found));
+  }
+  const std::string want = lower(selector);
+  for (const Found& f : found) {
+    if (lower(f.info.platform + " / " + f.info.name).find(want) != std::string::npos)
+      return std::make_unique<Device>(f.device, f.info);
+  }
+  throw DeviceError("no OpenCL device matches '" + selector + "'; devices:" + device_list(found));
+}
+
+}  // namespace parashade

@@ -1,0 +1,51 @@
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "parashade/device.hpp"
+#include "parashade/errors.hpp"
+
+namespace parashade {
+
+const std::map<std::string, std::string>& embedded_kernel_files();  // generated at build time
+
+namespace {
+
+// PoCL resolves #include against its cache directory, so the host expands includes itself
+// (DESIGN.md). Each file is expanded once; the headers also carry include guards.
+void expand(const std::string& file, std::set<std::string>& seen, std::string& out) {
+  const auto& files = embedded_kernel_files();
+  const auto it = files.find(file);
+  if (it == files.end()) throw DeviceError("kernel source '" + file + "' is not embedded in this build");
+  if (!seen.insert(file).second) return;
+  std::istringstream in(it->second);
+  std::string line;
+  int line_no = 0;
+  out += "#line 1 \"" + file + "\"\n";
+  while (std::getline(in, line)) {
+    ++line_no;
+    const auto first = line.find_first_not_of(" \t");
+    if (first != std::string::npos && line.compare(first, 9, "#include ") == 0) {
+      const auto open = line.find('"'), close = line.rfind('"');
+      if (open != std::string::npos && close > open) {
+        expand(line.substr(open + 1, close - open - 1), seen, out);
+        out += "#line " + std::to_string(line_no + 1) + " \"" + file + "\"\n";
+        continue;
+      }
+    }
+    out += line;
+    out += '\n';
+  }
+}
+
+}  // namespace
+
+std::string kernel_source(const std::vector<std::string>& files) {
+  std::set<std::string> seen;
+  std::string out;
+  for (const std::string& file : files) expand(file, seen, out);
+  return out;
+}
+
+}  // namespace parashade

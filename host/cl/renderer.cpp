@@ -1,0 +1,244 @@
+#include "parashade/renderer.hpp"
+
+#include <chrono>
+#include <cstring>
+#include <sstream>
+
+#include "parashade/errors.hpp"
+#include "parashade/geometry_stage.hpp"
+#include "parashade/setup.hpp"
+
+namespace parashade {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+const char* method_header(Method m) {
+  switch (m) {
+    case Method::flat: return "method_flat.h";
+    case Method::gouraud: return "method_gouraud.h";
+    case Method::phong: return "method_phong.h";
+  }
+  return "";
+}
+
+bool needs_local_viewer(const Scene& s) {
+  return s.local_viewer && s.camera.projection == Projection::perspective;
+}
+
+// Lights and materials as the kernels read them (blinn_phong.h).
+std::vector<cl_float4> light_table(const Scene& s) {
+  std::vector<cl_float4> out;
+  for (const Light& l : s.lights) {
+    const bool point = l.type == LightType::point;
+    const glm::vec3 v = point ? l.position : -glm::normalize(l.direction);
+    out.push_back({{v.x, v.y, v.z, point ? 1.0f : 0.0f}});
+    out.push_back({{255.0f * l.color.r, 255.0f * l.color.g, 255.0f * l.color.b, 0.0f}});
+  }
+  if (out.empty()) out.push_back({{0, 0, 0, 0}});
+  return out;
+}
+
+std::vector<cl_float4> material_table(const Scene& s) {
+  std::vector<cl_float4> out;
+  for (const Material& m : s.materials) {
+    const glm::vec3 a = 255.0f * m.ambient * s.ambient_light;
+    out.push_back({{a.x, a.y, a.z, m.shininess}});
+    out.push_back({{m.diffuse.r, m.diffuse.g, m.diffuse.b, 0.0f}});
+    out.push_back({{m.specular.r, m.specular.g, m.specular.b, 0.0f}});
+  }
+  if (out.empty()) out.push_back({{0, 0, 0, 1}});
+  return out;
+}
+
+std::string kernel_options(const Scene& s, const RenderOptions& o) {
+  unsigned point_mask = 0;
+  for (std::size_t i = 0; i < s.lights.size(); ++i)
+    if (s.lights[i].type == LightType::point) point_mask |= 1u << i;
+  const bool need_position = needs_local_viewer(s) || point_mask != 0;
+  std::ostringstream opt;
+  opt << "-D TILE=" << o.tile_size << " -D NUM_LIGHTS=" << s.lights.size() << " -D POINT_LIGHTS=" << point_mask
+      << " -D LOCAL_VIEWER=" << (needs_local_viewer(s) ? 1 : 0) << " -D NEED_POSITION=" << (need_position ? 1 : 0)
+      << " -D OUTPUT_FLOAT=" << (o.float_output ? 1 : 0);
+  return opt.str();
+}
+
+double event_ms(const cl::Event& e) {
+  const auto start = e.getProfilingInfo<CL_PROFILING_COMMAND_START>();
+  const auto end = e.getProfilingInfo<CL_PROFILING_COMMAND_END>();
+  return double(end - start) * 1e-6;
+}
+
+}  // namespace
+
+Renderer::Renderer(Device& device, RenderOptions options) : device_(device), options_(options) {
+  if (options_.tile_size != 16 && options_.tile_size != 32 && options_.tile_size != 64)
+    throw InputError("tile size " + std::to_string(options_.tile_size) + " is not supported (16, 32 or 64)");
+}
+
+cl::Buffer& Renderer::ensure(cl::Buffer& buffer, std::size_t& capacity, std::size_t bytes, cl_mem_flags flags) {
+  bytes = std::max<std::size_t>(bytes, 64);
+  if (bytes > capacity) {
+    if (bytes > device_.info().max_allocation)
+      throw DeviceError("a buffer of " + std::to_string(bytes) + " bytes exceeds the device's largest allocation (" +
+                        std::to_string(device_.info().max_allocation) + " bytes) on '" + device_.info().name + "'");
+    const std::size_t grown = std::max(bytes, capacity + capacity / 2);
+    buffer = cl::Buffer(device_.context(), flags | CL_MEM_ALLOC_HOST_PTR, grown);
+    capacity = grown;
+  }
+  return buffer;
+}
+
+void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
+  check_resolution(scene.width, scene.height, "scene '" + scene.name + "'");
+  const Method method = options_.method;
+  cl::CommandQueue& q = device_.queue();
+
+  auto t0 = Clock::now();
+  build_screen_geometry(scene, {method, false}, geometry_);
+  t.geometry_ms = ms_since(t0);
+  s.geometry = geometry_.stats;
+
+  t0 = Clock::now();
+  const std::size_t n = geometry_.triangles.size();
+  const std::size_t tri_bytes = n * sizeof(TriangleGeometry), attr_bytes = n * attribute_floats(method) * sizeof(float);
+  ensure(tris_, tris_cap_, tri_bytes, CL_MEM_READ_ONLY);
+  ensure(attrs_, attrs_cap_, attr_bytes, CL_MEM_READ_ONLY);
+  auto* tri_ptr = static_cast<TriangleGeometry*>(
+      q.enqueueMapBuffer(tris_, CL_TRUE, CL_MAP_WRITE_INVALIDATE_REGION, 0, std::max<std::size_t>(tri_bytes, 64)));
+  auto* attr_ptr = static_cast<float*>(
+      q.enqueueMapBuffer(attrs_, CL_TRUE, CL_MAP_WRITE_INVALIDATE_REGION, 0, std::max<std::size_t>(attr_bytes, 64)));
+  s.triangles_without_pixels = setup_triangles(geometry_, method, tri_ptr, attr_ptr).without_pixels;
+  q.enqueueUnmapMemObject(attrs_, attr_ptr);
+  t.setup_ms = ms_since(t0);
+
+  t0 = Clock::now();
+  binner_.count(tri_ptr, n, scene.width, scene.height, options_.tile_size);
+  const auto& start = binner_.tile_start();
+  const std::size_t start_bytes = start.size() * sizeof(std::uint32_t);
+  const std::size_t list_bytes = binner_.entries() * sizeof(std::uint32_t);
+  ensure(tile_start_, start_cap_, start_bytes, CL_MEM_READ_ONLY);
+  ensure(tile_tris_, list_cap_, list_bytes, CL_MEM_READ_ONLY);
+  q.enqueueWriteBuffer(tile_start_, CL_FALSE, 0, start_bytes, start.data());
+  auto* list_ptr = static_cast<std::uint32_t*>(
+      q.enqueueMapBuffer(tile_tris_, CL_TRUE, CL_MAP_WRITE_INVALIDATE_REGION, 0, std::max<std::size_t>(list_bytes, 64)));
+  binner_.fill(list_ptr);
+  q.enqueueUnmapMemObject(tile_tris_, list_ptr);
+  q.enqueueUnmapMemObject(tris_, tri_ptr);
+  t.binning_ms = ms_since(t0);
+  s.bin_entries = binner_.entries();
+  s.tiles = binner_.tiles_x() * binner_.tiles_y();
+}
+
+Frame Renderer::render(const Scene& scene) {
+  Frame frame;
+  FrameTimings& t = frame.timings;
+  try {
+    const auto frame_start = Clock::now();
+    prepare(scene, t, frame.stats);
+    cl::CommandQueue& q = device_.queue();
+    const int tile = options_.tile_size;
+    const int tiles_x = binner_.tiles_x(), tiles_y = binner_.tiles_y();
+    const std::size_t pitch = std::size_t(tiles_x) * tile, rows = std::size_t(tiles_y) * tile;
+
+    const auto lights = light_table(scene);
+    const auto materials = material_table(scene);
+    if ((lights.size() + materials.size()) * sizeof(cl_float4) > device_.info().constant_buffer)
+      throw DeviceError("the scene's lights and materials do not fit the constant memory of '" + device_.info().name + "'");
+    ensure(lights_, lights_cap_, lights.size() * sizeof(cl_float4), CL_MEM_READ_ONLY);
+    ensure(materials_, materials_cap_, materials.size() * sizeof(cl_float4), CL_MEM_READ_ONLY);
+    q.enqueueWriteBuffer(lights_, CL_FALSE, 0, lights.size() * sizeof(cl_float4), lights.data());
+    q.enqueueWriteBuffer(materials_, CL_FALSE, 0, materials.size() * sizeof(cl_float4), materials.data());
+    ensure(out_rgba_, rgba_cap_, pitch * rows * sizeof(std::uint32_t), CL_MEM_WRITE_ONLY);
+    if (options_.float_output) ensure(out_float_, float_cap_, 3 * pitch * rows * sizeof(float), CL_MEM_WRITE_ONLY);
+    else ensure(out_float_, float_cap_, 64, CL_MEM_WRITE_ONLY);
+
+    cl::Program& program = device_.program({"common.h", "triangle_record.h", method_header(options_.method), "render_tiles.cl"},
+                                           kernel_options(scene, options_));
+    cl::Kernel kernel(program, "render_tiles");
+    const glm::vec3 viewer = needs_local_viewer(scene)
+                                 ? scene.camera.position
+                                 : glm::normalize(scene.camera.position - scene.camera.target);
+    const glm::vec3 bg = 255.0f * scene.background;
+    kernel.setArg(0, tris_);
+    kernel.setArg(1, attrs_);
+    kernel.setArg(2, tile_start_);
+    kernel.setArg(3, tile_tris_);
+    kernel.setArg(4, lights_);
+    kernel.setArg(5, materials_);
+    kernel.setArg(6, cl_float4{{viewer.x, viewer.y, viewer.z, 0.0f}});
+    kernel.setArg(7, cl_float4{{bg.x, bg.y, bg.z, 0.0f}});
+    kernel.setArg(8, cl_int(tiles_x));
+    kernel.setArg(9, out_rgba_);
+    kernel.setArg(10, out_float_);
+    const std::size_t group = 1;  // one work-item per tile
+    auto t0 = Clock::now();
+    cl::Event done;
+    q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(std::size_t(frame.stats.tiles) * group), cl::NDRange(group),
+                           nullptr, &done);
+    done.wait();
+    t.launch_ms = ms_since(t0);
+    t.kernel_ms = event_ms(done);
+
+    t0 = Clock::now();
+    RenderedImage& img = frame.image;
+    img.width = scene.width;
+    img.height = scene.height;
+    img.rgba.resize(std::size_t(img.width) * img.height * 4);
+    const auto* rgba = static_cast<const std::uint32_t*>(
+        q.enqueueMapBuffer(out_rgba_, CL_TRUE, CL_MAP_READ, 0, pitch * rows * sizeof(std::uint32_t)));
+    for (int y = 0; y < img.height; ++y)
+      std::memcpy(&img.rgba[std::size_t(y) * img.width * 4], rgba + std::size_t(y) * pitch, std::size_t(img.width) * 4);
+    q.enqueueUnmapMemObject(out_rgba_, const_cast<std::uint32_t*>(rgba));
+    if (options_.float_output) {
+      const auto* f = static_cast<const float*>(
+          q.enqueueMapBuffer(out_float_, CL_TRUE, CL_MAP_READ, 0, 3 * pitch * rows * sizeof(float)));
+      img.rgb_float.resize(std::size_t(img.width) * img.height * 3);
+      const std::size_t plane = pitch * rows;
+      for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x)
+          for (int c = 0; c < 3; ++c)
+            img.rgb_float[(std::size_t(y) * img.width + x) * 3 + c] = f[c * plane + std::size_t(y) * pitch + x];
+      q.enqueueUnmapMemObject(out_float_, const_cast<float*>(f));
+    }
+    q.finish();
+    t.readback_ms = ms_since(t0);
+    t.total_ms = ms_since(frame_start);
+  } catch (const cl::Error&) {
+    rethrow_cl_error("rendering on '" + device_.info().name + "'");
+  }
+  return frame;
+}
+
+std::vector<std::uint32_t> Renderer::coverage_counts(const Scene& scene) {
+  try {
+    FrameTimings t;
+    FrameStats s;
+    prepare(scene, t, s);
+    cl::CommandQueue& q = device_.queue();
+    const int tile = options_.tile_size;
+    const std::size_t pitch = std::size_t(binner_.tiles_x()) * tile, rows = std::size_t(binner_.tiles_y()) * tile;
+    ensure(counts_, counts_cap_, pitch * rows * sizeof(std::uint32_t), CL_MEM_WRITE_ONLY);
+    cl::Program& program =
+        device_.program({"coverage_count.cl"}, "-D TILE=" + std::to_string(tile));
+    cl::Kernel kernel(program, "coverage_count");
+    kernel.setArg(0, tris_);
+    kernel.setArg(1, tile_start_);
+    kernel.setArg(2, tile_tris_);
+    kernel.setArg(3, cl_int(binner_.tiles_x()));
+    kernel.setArg(4, counts_);
+    const std::size_t group = 1;  // one work-item per tile
+    q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(std::size_t(s.tiles) * group), cl::NDRange(group));
+    std::vector<std::uint32_t> padded(pitch * rows);
+    q.enqueueReadBuffer(counts_, CL_TRUE, 0, padded.size() * sizeof(std::uint32_t), padded.data());
+    std::vector<std::uint32_t> out(std::size_t(scene.width) * scene.height);
+    for (int y = 0; y < scene.height; ++y)
+      std::memcpy(&out[std::size_t(y) * scene.width], &padded[std::size_t(y) * pitch], std::size_t(scene.width) * 4);
+    return out;
+  } catch (const cl::Error&) {
+    rethrow_cl_error("counting coverage on '" + device_.info().name + "'");
+  }
+}
+
+}  // namespace parashade

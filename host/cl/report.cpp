@@ -1,0 +1,73 @@
+#include "parashade/report.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <system_error>
+#include <unistd.h>
+
+#include "parashade/errors.hpp"
+
+namespace parashade {
+
+nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+nlohmann::json to_json(const DeviceInfo& d) {
+  return {{"index", d.index},          {"platform", d.platform},        {"name", d.name},
+          {"vendor", d.vendor},        {"version", d.version},          {"driver", d.driver},
+          {"type", d.type},            {"compute_units", d.compute_units}, {"global_memory", d.global_memory},
+          {"max_allocation", d.max_allocation}};
+}
+
+nlohmann::json to_json(const ErrorMetrics& m) {
+  return {{"reference", m.reference},
+          {"nmse", number_or_null(m.nmse)},
+          {"psnr_db", number_or_null(m.psnr_db)},
+          {"max_abs", number_or_null(m.max_abs)},
+          {"mean_abs", number_or_null(m.mean_abs)},
+          {"pixels_compared", m.pixels_compared},
+          {"pixels_over_1_level", m.pixels_over_1_level},
+          {"coverage_mismatch", m.coverage_mismatch}};
+}
+
+nlohmann::json to_json(const FrameTimings& t) {
+  return {{"geometry_ms", t.geometry_ms}, {"setup_ms", t.setup_ms},       {"binning_ms", t.binning_ms},
+          {"kernel_ms", t.kernel_ms},     {"launch_ms", t.launch_ms},     {"readback_ms", t.readback_ms},
+          {"total_ms", t.total_ms}};
+}
+
+nlohmann::json to_json(const FrameStats& s) {
+  return {{"triangles_in", s.geometry.triangles_in},
+          {"culled_backface", s.geometry.culled_backface},
+          {"zero_area", s.geometry.zero_area},
+          {"outside", s.geometry.outside},
+          {"clipped", s.geometry.clipped},
+          {"screen_triangles", s.geometry.triangles_out},
+          {"triangles_without_pixels", s.triangles_without_pixels},
+          {"bin_entries", s.bin_entries},
+          {"tiles", s.tiles}};
+}
+
+void write_text_atomically(const std::filesystem::path& path, const std::string& text) {
+  namespace fs = std::filesystem;
+  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  const fs::path tmp = dir / ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()));
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    if (!out) throw InputError("cannot write '" + path.string() + "': cannot create a file in '" + dir.string() + "'");
+    out << text;
+    out.close();
+    if (!out) {
+      std::error_code ec;
+      fs::remove(tmp, ec);
+      throw InputError("cannot write '" + path.string() + "': write failed");
+    }
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    throw InputError("cannot write '" + path.string() + "': " + ec.message());
+  }
+}
+
+}  // namespace parashade

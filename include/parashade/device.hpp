@@ -1,0 +1,68 @@
+#pragma once
+// OpenCL platforms and devices: listing, choosing one, building (and caching) programs from the
+// embedded kernel sources, and turning OpenCL errors into messages with the call and the error name.
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <CL/opencl.hpp>
+
+namespace parashade {
+
+struct DeviceInfo {
+  int index = 0;               // position in list_devices()
+  std::string platform;
+  std::string name;
+  std::string vendor;
+  std::string version;         // OpenCL version string of the device
+  std::string driver;
+  std::string type;            // cpu, gpu, accelerator, other
+  int compute_units = 0;
+  std::uint64_t global_memory = 0;
+  std::uint64_t max_allocation = 0;
+  std::uint64_t constant_buffer = 0;
+  std::size_t max_work_group = 0;
+};
+
+// Every device of every platform. Throws DeviceError naming the package to install when there is no
+// OpenCL platform at all.
+std::vector<DeviceInfo> list_devices();
+
+// An open device: context, in-order profiling queue, and a cache of built programs.
+class Device {
+ public:
+  Device(cl::Device device, DeviceInfo info);
+  const DeviceInfo& info() const { return info_; }
+  cl::Context& context() { return context_; }
+  cl::CommandQueue& queue() { return queue_; }
+  cl::Device& device() { return device_; }
+  // Builds the concatenation of `files` of kernels/ (their #include "..." lines resolved from the
+  // embedded sources) with -cl-std=CL1.2 and `options`, once per (files, options). Throws DeviceError
+  // with the device name and the build log.
+  cl::Program& program(const std::vector<std::string>& files, const std::string& options);
+
+ private:
+  cl::Device device_;
+  DeviceInfo info_;
+  cl::Context context_;
+  cl::CommandQueue queue_;
+  std::map<std::pair<std::vector<std::string>, std::string>, cl::Program> programs_;
+};
+
+// Opens the device chosen by `selector`: empty = the first device; a number = index in
+// list_devices(); otherwise a case-insensitive substring of "platform / device name" (PoCL names its
+// devices "pthread-..." and "basic-..."). Throws DeviceError listing the devices when nothing matches.
+std::unique_ptr<Device> open_device(const std::string& selector);
+
+// The files of kernels/ concatenated, #include "..." lines expanded (each file once).
+std::string kernel_source(const std::vector<std::string>& files);
+
+// "CL_OUT_OF_RESOURCES (-5)" for an OpenCL error code.
+std::string cl_error_name(int code);
+// Rethrows a cl::Error (or passes any other exception through) as DeviceError "<call> failed: <name>"
+// prefixed with `context`.
+[[noreturn]] void rethrow_cl_error(const std::string& context);
+
+}  // namespace parashade

@@ -1,0 +1,72 @@
+#pragma once
+// One frame on an OpenCL device: vertex stage and primitive assembly, triangle setup, binning (host,
+// "software"), then the shading kernel (the modeled hardware units), then read-back.
+#include <cstdint>
+#include <vector>
+
+#include <CL/opencl.hpp>
+
+#include "parashade/binning.hpp"
+#include "parashade/device.hpp"
+#include "parashade/image.hpp"
+#include "parashade/method.hpp"
+#include "parashade/scene.hpp"
+#include "parashade/screen_geometry.hpp"
+
+namespace parashade {
+
+struct RenderOptions {
+  Method method = Method::gouraud;
+  bool float_output = false;  // also read back unclamped float RGB (for EXR and exact error figures)
+  int tile_size = 16;         // screen tile edge in pixels: 16, 32 or 64
+};
+
+// Milliseconds. Host stages by the host clock; kernel_ms from the OpenCL profiling event.
+struct FrameTimings {
+  double geometry_ms = 0;  // vertex stage + clipping, culling, snapping
+  double setup_ms = 0;     // triangle setup (edge functions, planes, dI_G)
+  double binning_ms = 0;   // sort-middle binning into tiles, upload
+  double kernel_ms = 0;    // shading kernel on the device (profiling event)
+  double launch_ms = 0;    // enqueue to completion on the host clock (kernel_ms + launch overhead)
+  double readback_ms = 0;  // map the frame and copy it out
+  double total_ms = 0;     // the whole frame
+};
+
+struct FrameStats {
+  GeometryStats geometry;
+  std::uint64_t triangles_without_pixels = 0;
+  std::uint64_t bin_entries = 0;
+  int tiles = 0;
+};
+
+struct Frame {
+  RenderedImage image;
+  FrameTimings timings;
+  FrameStats stats;
+};
+
+class Renderer {
+ public:
+  Renderer(Device& device, RenderOptions options);
+  Frame render(const Scene& scene);
+  // Per pixel (row-major, width x height), how many triangles cover its centre, ignoring depth:
+  // the same geometry, tiles and span computation as render(). For watertightness tests.
+  std::vector<std::uint32_t> coverage_counts(const Scene& scene);
+  // The screen geometry of the last render() or coverage_counts().
+  const ScreenGeometry& geometry() const { return geometry_; }
+  const RenderOptions& options() const { return options_; }
+
+ private:
+  void prepare(const Scene& scene, FrameTimings& t, FrameStats& s);  // geometry, setup, binning
+  cl::Buffer& ensure(cl::Buffer& buffer, std::size_t& capacity, std::size_t bytes, cl_mem_flags flags);
+
+  Device& device_;
+  RenderOptions options_;
+  ScreenGeometry geometry_;
+  Binner binner_;
+  cl::Buffer tris_, attrs_, tile_start_, tile_tris_, lights_, materials_, out_rgba_, out_float_, counts_;
+  std::size_t tris_cap_ = 0, attrs_cap_ = 0, start_cap_ = 0, list_cap_ = 0, lights_cap_ = 0, materials_cap_ = 0,
+              rgba_cap_ = 0, float_cap_ = 0, counts_cap_ = 0;
+};
+
+}  // namespace parashade

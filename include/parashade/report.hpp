@@ -1,0 +1,26 @@
+#pragma once
+// JSON forms of what a run measured, shared by the CLI and the benchmarks. Non-finite numbers
+// (an identical image has PSNR +inf) become null.
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "parashade/device.hpp"
+#include "parashade/metrics.hpp"
+#include "parashade/renderer.hpp"
+
+namespace parashade {
+
+nlohmann::json to_json(const DeviceInfo& d);
+nlohmann::json to_json(const ErrorMetrics& m);
+nlohmann::json to_json(const FrameTimings& t);
+nlohmann::json to_json(const FrameStats& s);
+// A finite number, or null.
+nlohmann::json number_or_null(double v);
+
+// Writes text to `path` whole or not at all (temporary file in the same directory, then rename).
+// Throws InputError naming the path.
+void write_text_atomically(const std::filesystem::path& path, const std::string& text);
+
+}  // namespace parashade

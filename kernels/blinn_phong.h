@@ -1,0 +1,61 @@
+/* Blinn–Phong per pixel (SEEDS §9): I = ambient + sum_l I_l*(k_d*max(0,N.L) + k_s*max(0,N.H)^n).
+ * Lights: two float4 each — (direction toward the light | position, 0 | 1), (I_l x 255, 0).
+ * Materials: three float4 each — (ambient x I_a x 255, n), (diffuse, 0), (specular, 0).
+ * Specialized per scene: NUM_LIGHTS, POINT_LIGHTS (bit mask), LOCAL_VIEWER. viewer = eye position
+ * (local viewer) or the unit vector toward the viewer. */
+#ifndef PARASHADE_BLINN_PHONG_H
+#define PARASHADE_BLINN_PHONG_H
+
+inline floatV positive_power(floatV x, float n) {
+  /* max(0,x)^n for n > 0; log2(0) = -inf gives exp2(-inf) = 0. */
+  return exp2(n * log2(fmax(x, (floatV)0.0f)));
+}
+
+inline void blinn_phong(__constant float4* materials, int m, __constant float4* lights, float4 viewer,
+                        floatV nx, floatV ny, floatV nz, floatV px, floatV py, floatV pz,
+                        floatV* r, floatV* g, floatV* b) {
+  const float4 amb = materials[3 * m], kd = materials[3 * m + 1], ks = materials[3 * m + 2];
+  floatV cr = (floatV)amb.x, cg = (floatV)amb.y, cb = (floatV)amb.z;
+#if LOCAL_VIEWER
+  floatV vx = viewer.x - px, vy = viewer.y - py, vz = viewer.z - pz;
+  {
+    const floatV inv = safe_rsqrt(vx * vx + vy * vy + vz * vz);
+    vx *= inv;
+    vy *= inv;
+    vz *= inv;
+  }
+#else
+  const floatV vx = viewer.x, vy = viewer.y, vz = viewer.z;
+#endif
+#pragma unroll
+  for (int i = 0; i < NUM_LIGHTS; ++i) {
+    const float4 l4 = lights[2 * i], il = lights[2 * i + 1];
+    floatV lx, ly, lz;
+    if (POINT_LIGHTS & (1 << i)) {
+      lx = l4.x - px;
+      ly = l4.y - py;
+      lz = l4.z - pz;
+      const floatV inv = safe_rsqrt(lx * lx + ly * ly + lz * lz);
+      lx *= inv;
+      ly *= inv;
+      lz *= inv;
+    } else {
+      lx = l4.x;
+      ly = l4.y;
+      lz = l4.z;
+    }
+    const floatV n_dot_l = fmax(nx * lx + ny * ly + nz * lz, (floatV)0.0f);
+    floatV hx = lx + vx, hy = ly + vy, hz = lz + vz;
+    const floatV h_inv = safe_rsqrt(hx * hx + hy * hy + hz * hz);
+    const floatV n_dot_h = (nx * hx + ny * hy + nz * hz) * h_inv;
+    const floatV spec = positive_power(n_dot_h, amb.w);
+    cr += il.x * (kd.x * n_dot_l + ks.x * spec);
+    cg += il.y * (kd.y * n_dot_l + ks.y * spec);
+    cb += il.z * (kd.z * n_dot_l + ks.z * spec);
+  }
+  *r = cr;
+  *g = cg;
+  *b = cb;
+}
+
+#endif

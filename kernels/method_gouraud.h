@@ -1,0 +1,12 @@
+/* Gouraud: the vertex values interpolated linearly. Along a span each channel steps by the constant
+ * span increment dI_G of its triangle (attribute ddx, computed once in setup, SEEDS §2); the start of
+ * the row comes from the y increment. Float arithmetic here; the fixed-point units come later. */
+#define ATTR_FLOATS GOURAUD_ATTR_FLOATS
+
+inline void shade_pixels(__global const float* a, int dy, floatV rel, floatV* r, floatV* g, floatV* b,
+                         __constant float4* lights, __constant float4* materials, float4 viewer) {
+  const float fdy = (float)dy;
+  *r = (floatV)(a[0] + a[6] * fdy) + a[3] * rel;
+  *g = (floatV)(a[1] + a[7] * fdy) + a[4] * rel;
+  *b = (floatV)(a[2] + a[8] * fdy) + a[5] * rel;
+}

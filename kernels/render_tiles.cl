@@ -1,0 +1,84 @@
+/* Shades one frame: one work-item per TILE x TILE screen tile (a modeled shading unit owns a tile).
+ * It walks the tile's triangle list in primitive order; for each triangle it finds the spans of all
+ * its rows in the tile at once (row_spans, rows as vector lanes), then shades each row segment of VEC
+ * pixels as vector lanes. Depth and colour of the tile stay in private memory and are written once,
+ * so there is no read-modify-write of the frame and the result is deterministic.
+ * The method (method_*.h, chosen by the host) supplies shade_pixels(). */
+#include "common.h"
+#include "triangle_record.h"
+#include "span.h"
+
+#define TILE_VECTORS (TILE * SEGMENTS)
+
+__kernel __attribute__((reqd_work_group_size(1, 1, 1)))
+void render_tiles(__global const TriangleGeometry* tris, __global const float* attrs,
+                  __global const uint* tile_start, __global const uint* tile_tris,
+                  __constant float4* lights, __constant float4* materials, float4 viewer, float4 background,
+                  int tiles_x, __global uint* out_rgba, __global float* out_float) {
+  const int tile = get_global_id(0);
+  const int tile_x = (tile % tiles_x) * TILE, tile_y = (tile / tiles_x) * TILE;
+
+  floatV depth[TILE_VECTORS], cr[TILE_VECTORS], cg[TILE_VECTORS], cb[TILE_VECTORS];
+  for (int i = 0; i < TILE_VECTORS; ++i) {
+    depth[i] = (floatV)INFINITY;
+    cr[i] = (floatV)background.x;
+    cg[i] = (floatV)background.y;
+    cb[i] = (floatV)background.z;
+  }
+  const intV lane = LANE_INDEX;
+  int span_lo[VEC], span_hi[VEC];
+
+  const uint end = tile_start[tile + 1];
+  for (uint k = tile_start[tile]; k < end; ++k) {
+    const uint ti = tile_tris[k];
+    __global const TriangleGeometry* t = &tris[ti];
+    const int x0 = t->x0, y0 = t->y0;
+    const int row_first = max(tile_y, y0), row_last = min(tile_y + TILE - 1, (int)t->y1);
+    const int lo = max(tile_x, x0) - x0, hi = min(tile_x + TILE - 1, (int)t->x1) - x0;
+    if (row_first > row_last || lo > hi) continue;
+    __global const float* attr = attrs + (size_t)ti * ATTR_FLOATS;
+    for (int block = row_first; block <= row_last; block += VEC) {
+      intV lo_v, hi_v;
+      row_spans(t, lane + (block - y0), &lo_v, &hi_v, lo, hi);
+      vstoreV(lo_v, 0, span_lo);
+      vstoreV(hi_v, 0, span_hi);
+      const int rows = min(VEC, row_last - block + 1);
+      for (int j = 0; j < rows; ++j) {
+        const int xl = span_lo[j], xr = span_hi[j];
+        if (xl > xr) continue;
+        const int py = block + j, dy = py - y0;
+        const float z_row = t->z_ref + t->z_ddy * (float)dy;
+        for (int s = (xl + x0 - tile_x) / VEC; s <= (xr + x0 - tile_x) / VEC; ++s) {
+          const int slot = (py - tile_y) * SEGMENTS + s;
+          const intV rel = lane + (tile_x + s * VEC - x0);
+          const floatV frel = convert_floatV(rel);
+          const floatV z = (floatV)z_row + t->z_ddx * frel;
+          const intV pass = (rel >= xl) & (rel <= xr) & isless(z, depth[slot]);
+          if (!any(pass)) continue;
+          floatV sr, sg, sb;
+          shade_pixels(attr, dy, frel, &sr, &sg, &sb, lights, materials, viewer);
+          depth[slot] = select(depth[slot], z, pass);
+          cr[slot] = select(cr[slot], sr, pass);
+          cg[slot] = select(cg[slot], sg, pass);
+          cb[slot] = select(cb[slot], sb, pass);
+        }
+      }
+    }
+  }
+
+  const int pitch = tiles_x * TILE;
+#if OUTPUT_FLOAT
+  const size_t plane = (size_t)pitch * (get_global_size(0) / tiles_x) * TILE; /* padded frame */
+#endif
+  for (int i = 0; i < TILE_VECTORS; ++i) {
+    const size_t at = (size_t)(tile_y + i / SEGMENTS) * pitch + tile_x + (i % SEGMENTS) * VEC;
+    const uintV covered = convert_uintV(isless(depth[i], (floatV)INFINITY)) & 0xFF000000u;
+    const uintV rgba = to_level(cr[i]) | (to_level(cg[i]) << 8) | (to_level(cb[i]) << 16) | covered;
+    vstoreV(rgba, 0, out_rgba + at);
+#if OUTPUT_FLOAT
+    vstoreV(cr[i], 0, out_float + at);
+    vstoreV(cg[i], 0, out_float + plane + at);
+    vstoreV(cb[i], 0, out_float + 2 * plane + at);
+#endif
+  }
+}

@@ -1,0 +1,45 @@
+/* Spans of a triangle on VEC consecutive pixel rows at once (one row per lane): the exact range of
+ * covered pixel centres (the coverage rule of screen_geometry.hpp). Per edge, the crossing is
+ * estimated in float, q = -E_row / a, and settled by exact 64-bit evaluation of the edge function at
+ * the candidate and its neighbour. |q| <= 4097 within a window and the estimate's relative error is
+ * below 2^-22, so it is off by less than 0.001 pixel and one correction step each way is enough. */
+#ifndef PARASHADE_SPAN_H
+#define PARASHADE_SPAN_H
+
+#include "triangle_record.h"
+
+typedef long16 longV;
+#define convert_longV convert_long16
+
+/* Row dy (per lane, relative to the record's y0): covered pixels [*lo, *hi] (relative to x0) within
+ * the window [lo, hi] given on entry; empty where *lo > *hi. */
+inline void row_spans(__global const TriangleGeometry* t, intV dy, intV* lo_out, intV* hi_out, int lo, int hi) {
+  intV lo_v = (intV)lo, hi_v = (intV)hi;
+  const longV dyl = convert_longV(dy);
+  for (int e = 0; e < 3; ++e) {
+    const long a = t->edge_a[e];
+    const longV r = (longV)t->edge_c[e] + dyl * (long)t->edge_b[e]; /* E at x = x0 on each row */
+    if (a == 0) {
+      hi_v = select(hi_v, lo_v - 1, convert_intV(r < 0));
+      continue;
+    }
+    const floatV q = -convert_floatV(r) * t->edge_inv_a[e];
+    if (a > 0) { /* covered for x >= boundary */
+      intV c = convert_intV(ceil(clamp(q, convert_floatV(lo_v), convert_floatV(hi_v + 1))));
+      const longV cl = convert_longV(c);
+      c = select(c, c - 1, (c > lo_v) & convert_intV(r + a * (cl - 1) >= 0));
+      c = select(c, c + 1, (c <= hi_v) & convert_intV(r + a * cl < 0));
+      lo_v = max(lo_v, c);
+    } else { /* covered for x <= boundary */
+      intV c = convert_intV(floor(clamp(q, convert_floatV(lo_v - 1), convert_floatV(hi_v))));
+      const longV cl = convert_longV(c);
+      c = select(c, c + 1, (c < hi_v) & convert_intV(r + a * (cl + 1) >= 0));
+      c = select(c, c - 1, (c >= lo_v) & convert_intV(r + a * cl < 0));
+      hi_v = min(hi_v, c);
+    }
+  }
+  *lo_out = lo_v;
+  *hi_out = hi_v;
+}
+
+#endif

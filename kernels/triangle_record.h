@@ -1,0 +1,42 @@
+/* Per-triangle setup records, shared by the host (C++) and the kernels (OpenCL C): one layout, one
+ * definition. Written by host/core/setup.cpp, read by the unit kernels.
+ *
+ * Coverage: for edge e, E_e(x, y) = edge_c[e] + edge_a[e]*(x - x0) + edge_b[e]*(y - y0) is the edge
+ * function of screen_geometry.hpp at the centre of pixel (x, y), minus the edge's top-left bias; the
+ * pixel is covered when all three are >= 0. edge_a, edge_b are exact (|.| < 2^31 in the guard band),
+ * edge_c needs 64 bits. edge_inv_a = 1/edge_a only seeds the span-end search; the result is exact.
+ * Planes: value(x, y) = ref + ddx*(x - x0) + ddy*(y - y0), with (x0, y0) the bounding box corner. */
+#ifndef PARASHADE_TRIANGLE_RECORD_H
+#define PARASHADE_TRIANGLE_RECORD_H
+
+#ifdef __OPENCL_VERSION__
+typedef long ps_long;
+typedef int ps_int;
+typedef short ps_short;
+typedef float ps_float;
+#else
+#include <cstdint>
+typedef std::int64_t ps_long;
+typedef std::int32_t ps_int;
+typedef std::int16_t ps_short;
+typedef float ps_float;
+#endif
+
+typedef struct {
+  ps_long edge_c[3];
+  ps_int edge_a[3];
+  ps_int edge_b[3];
+  ps_float edge_inv_a[3];
+  ps_short x0, y0, x1, y1;  /* pixels whose centres may be covered, clamped to the screen; empty if x0 > x1 */
+  ps_float z_ref, z_ddx, z_ddy;  /* window depth plane */
+  ps_int pad;
+} TriangleGeometry;
+
+/* Per-method attribute records: ATTR_* floats per triangle, indexed like TriangleGeometry. */
+#define FLAT_ATTR_FLOATS 4      /* r, g, b (levels), unused */
+#define GOURAUD_ATTR_FLOATS 12  /* ref r,g,b; ddx r,g,b (the constant span increment dI_G); ddy r,g,b; 3 unused */
+/* Phong: normal ref xyz, ddx xyz, ddy xyz; position ref xyz, ddx xyz, ddy xyz; material; 3 unused */
+#define PHONG_ATTR_FLOATS 22
+#define PHONG_MATERIAL_SLOT 18
+
+#endif
