@@ -1,0 +1,165 @@
+#include <cstdio>
+#include <iostream>
+#include <regex>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "parashade/errors.hpp"
+#include "parashade/geometry_stage.hpp"
+#include "parashade/image.hpp"
+#include "parashade/metrics.hpp"
+#include "parashade/reference.hpp"
+#include "parashade/renderer.hpp"
+#include "parashade/report.hpp"
+#include "parashade/scene.hpp"
+#include "parashade/statistics.hpp"
+
+namespace parashade::cli {
+namespace {
+
+struct RenderArgs {
+  std::string scene, output, method = "gouraud", device, size, report;
+  int frames = 5, warmup = 1, tile = 16;
+  bool float_output = false, no_error = false, quiet = false;
+};
+
+void apply_size(Scene& scene, const std::string& size) {
+  if (size.empty()) return;
+  std::smatch m;
+  if (!std::regex_match(size, m, std::regex(R"((\d{1,9})x(\d{1,9}))")))
+    throw UsageError("--size '" + size + "' is not of the form WIDTHxHEIGHT, e.g. 1920x1080");
+  scene.width = std::stoi(m[1]);
+  scene.height = std::stoi(m[2]);
+  check_resolution(scene.width, scene.height, "--size " + size);
+}
+
+// Median of each stage over the timed frames.
+FrameTimings median_timings(const std::vector<FrameTimings>& f) {
+  const auto med = [&](double FrameTimings::*field) {
+    std::vector<double> v;
+    for (const auto& t : f) v.push_back(t.*field);
+    return median(v);
+  };
+  FrameTimings m;
+  m.geometry_ms = med(&FrameTimings::geometry_ms);
+  m.setup_ms = med(&FrameTimings::setup_ms);
+  m.binning_ms = med(&FrameTimings::binning_ms);
+  m.kernel_ms = med(&FrameTimings::kernel_ms);
+  m.launch_ms = med(&FrameTimings::launch_ms);
+  m.readback_ms = med(&FrameTimings::readback_ms);
+  m.total_ms = med(&FrameTimings::total_ms);
+  return m;
+}
+
+std::string describe(const ErrorMetrics& e) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "NMSE %.3g, PSNR %.2f dB, max %.2f, mean %.3f levels, %llu px > 1 level, %llu coverage mismatches",
+                e.nmse, e.psnr_db, e.max_abs, e.mean_abs, (unsigned long long)e.pixels_over_1_level,
+                (unsigned long long)e.coverage_mismatch);
+  return buf;
+}
+
+int run_render(const RenderArgs& a) {
+  const Method method = parse_method(a.method);
+  if (a.frames < 1) throw UsageError("--frames must be at least 1");
+  if (a.warmup < 0) throw UsageError("--warmup must not be negative");
+  Scene scene = load_scene(a.scene);
+  apply_size(scene, a.size);
+  check_resolution(scene.width, scene.height, "scene '" + a.scene + "'");
+  // Fail on an unwritable output before the work, not after it.
+  const std::filesystem::path out_path(a.output);
+  const std::filesystem::path out_dir = out_path.parent_path().empty() ? "." : out_path.parent_path();
+  if (!std::filesystem::is_directory(out_dir))
+    throw InputError("cannot write '" + a.output + "': directory '" + out_dir.string() + "' does not exist");
+
+  auto device = open_device(a.device);
+  const DeviceInfo& dev = device->info();
+  Renderer renderer(*device, {method, a.float_output, a.tile});
+  if (!a.quiet)
+    std::cerr << "rendering " << scene.name << " (" << scene.width << "x" << scene.height << ", "
+              << scene.triangle_count() << " triangles, " << method_name(method) << ") on " << dev.name << " ...\n";
+  for (int i = 0; i < a.warmup; ++i) renderer.render(scene);  // builds programs, compiles work-group functions
+  std::vector<FrameTimings> timings;
+  Frame frame;
+  for (int i = 0; i < a.frames; ++i) {
+    frame = renderer.render(scene);
+    timings.push_back(frame.timings);
+  }
+  const FrameTimings med = median_timings(timings);
+
+  nlohmann::json errors = nlohmann::json::object();
+  std::vector<std::string> error_lines;
+  if (!a.no_error) {
+    ScreenGeometry g;
+    build_screen_geometry(scene, {method, true}, g);
+    const ReferenceImage ref = render_reference(scene, g, method);
+    const ErrorMetrics ideal =
+        compare_to_reference(frame.image, ref.covered, ref.ideal, std::string("ideal ") + method_name(method));
+    const ErrorMetrics exact = compare_to_reference(frame.image, ref.covered, ref.exact, "exact phong");
+    errors["implementation"] = to_json(ideal);
+    errors["method"] = to_json(exact);
+    error_lines.push_back("error vs " + ideal.reference + ": " + describe(ideal));
+    error_lines.push_back("error vs " + exact.reference + ": " + describe(exact));
+  }
+
+  write_image(out_path, frame.image);
+  const double pixels = double(scene.width) * scene.height;
+  nlohmann::json report = {
+      {"scene", scene.name},
+      {"scene_file", a.scene},
+      {"image", a.output},
+      {"device", to_json(dev)},
+      {"method", method_name(method)},
+      {"width", scene.width},
+      {"height", scene.height},
+      {"tile_size", a.tile},
+      {"triangles", {{"in", frame.stats.geometry.triangles_in},
+                     {"after_culling", frame.stats.geometry.triangles_out}}},
+      {"frame_ms", med.total_ms},
+      {"frame_ms_note", "median of " + std::to_string(a.frames) + " frames after " + std::to_string(a.warmup) +
+                            " warm-up frame(s); whole frame: geometry, setup, binning, kernel, read-back"},
+      {"stages_ms", to_json(med)},
+      {"mpixel_per_s", pixels / (med.total_ms * 1e3)},
+      {"mtriangle_per_s", double(frame.stats.geometry.triangles_in) / (med.total_ms * 1e3)},
+      {"stats", to_json(frame.stats)},
+      {"error", errors}};
+  if (!a.report.empty()) write_text_atomically(a.report, report.dump(2) + "\n");
+
+  std::printf("%s: %dx%d, %llu triangles (%llu after culling and clipping), method %s\n", scene.name.c_str(),
+              scene.width, scene.height, (unsigned long long)frame.stats.geometry.triangles_in,
+              (unsigned long long)frame.stats.geometry.triangles_out, method_name(method));
+  std::printf("device: %s (%s), %d compute units\n", dev.name.c_str(), dev.platform.c_str(), dev.compute_units);
+  std::printf("frame: %.3f ms (median of %d after %d warm-up; geometry %.3f, setup %.3f, binning %.3f, kernel %.3f, "
+              "read-back %.3f) = %.1f fps, %.1f Mpixel/s, %.2f Mtriangle/s\n",
+              med.total_ms, a.frames, a.warmup, med.geometry_ms, med.setup_ms, med.binning_ms, med.kernel_ms,
+              med.readback_ms, 1e3 / med.total_ms, pixels / (med.total_ms * 1e3),
+              double(frame.stats.geometry.triangles_in) / (med.total_ms * 1e3));
+  for (const auto& l : error_lines) std::printf("%s\n", l.c_str());
+  std::printf("wrote %s%s%s\n", a.output.c_str(), a.report.empty() ? "" : " and ", a.report.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Command add_render_command(CLI::App& app) {
+  auto a = std::make_shared<RenderArgs>();
+  auto* cmd = app.add_subcommand("render", "Render a scene (JSON) or a bare mesh file; print frame time and error");
+  cmd->add_option("scene", a->scene, "Scene file (.json) or mesh (.obj .off .ply .stl)")->required();
+  cmd->add_option("-o,--output", a->output, "Image to write; format from the extension (png, jpg, tif, ppm, exr ...)")
+      ->required();
+  cmd->add_option("--method", a->method, "Shading method: flat, gouraud, phong")->capture_default_str();
+  cmd->add_option("--device", a->device, "OpenCL device: index or name substring (see 'parashade devices')");
+  cmd->add_option("--size", a->size, "Resolution WIDTHxHEIGHT (at most 4096x4096), overriding the scene's");
+  cmd->add_option("--report", a->report, "Write a JSON report (timings, stages, error figures)");
+  cmd->add_option("--frames", a->frames, "Timed frames; the median is reported")->capture_default_str();
+  cmd->add_option("--warmup", a->warmup, "Untimed frames first (program build, work-group compilation)")
+      ->capture_default_str();
+  cmd->add_option("--tile", a->tile, "Screen tile size: 16, 32 or 64")->capture_default_str();
+  cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
+  cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");
+  cmd->add_flag("-q,--quiet", a->quiet, "No progress line");
+  return {cmd, [a]() { return run_render(*a); }};
+}
+
+}  // namespace parashade::cli

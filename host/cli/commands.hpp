@@ -1,0 +1,17 @@
+#pragma once
+// The parashade subcommands: each registers its options on the CLI11 app and runs when chosen.
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace parashade::cli {
+
+// A registered subcommand and the function that runs it (returning the exit code).
+struct Command {
+  CLI::App* app;
+  std::function<int()> run;
+};
+Command add_devices_command(CLI::App& app);
+Command add_render_command(CLI::App& app);
+
+}  // namespace parashade::cli

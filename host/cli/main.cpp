@@ -1,0 +1,40 @@
+// parashade: OpenCL models of parallel Gouraud/Phong shading hardware, measured for speed and error.
+#include <iostream>
+#include <vector>
+#include <new>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.hpp"
+#include "parashade/errors.hpp"
+
+int main(int argc, char** argv) {
+  using namespace parashade;
+  CLI::App app{"parashade — parallel Gouraud and Phong shading units, emulated in OpenCL and measured"};
+  app.set_version_flag("--version", std::string("parashade ") + PARASHADE_VERSION);
+  app.require_subcommand(1);
+  app.footer(
+      "Exit codes: 0 ok, 2 usage error, 3 bad input (scene, mesh, values), 4 OpenCL or device failure.\n"
+      "Run 'parashade COMMAND --help' for a command's options.");
+  const std::vector<cli::Command> commands = {cli::add_devices_command(app), cli::add_render_command(app)};
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : int(ExitCode::usage);
+  }
+  try {
+    for (const cli::Command& c : commands)
+      if (c.app->parsed()) return c.run();
+    return int(ExitCode::usage);
+  } catch (const Error& e) {
+    std::cerr << "parashade: error: " << e.what() << "\n";
+    return int(e.code());
+  } catch (const std::bad_alloc&) {
+    std::cerr << "parashade: error: out of host memory\n";
+    return int(ExitCode::bad_input);
+  } catch (const std::exception& e) {
+    std::cerr << "parashade: internal error: " << e.what() << "\n";
+    return int(ExitCode::internal);
+  }
+}

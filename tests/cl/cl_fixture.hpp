@@ -1,0 +1,77 @@
+#pragma once
+// Shared by the OpenCL tests: one device for the whole program (PARASHADE_TEST_DEVICE selects it,
+// default the first), and scenes built in code with a pixel-aligned orthographic camera.
+#include <cstdlib>
+#include <memory>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "parashade/device.hpp"
+#include "parashade/scene.hpp"
+
+namespace parashade::testing_support {
+
+inline Device& test_device() {
+  static std::unique_ptr<Device> device = [] {
+    const char* sel = std::getenv("PARASHADE_TEST_DEVICE");
+    return open_device(sel ? sel : "");
+  }();
+  return *device;
+}
+
+// Orthographic camera on +z looking down -z, 1 world unit = 1 pixel, world (x, y) at screen
+// (x + W/2, H/2 - y); one directional light, one material.
+inline Scene pixel_scene(int width, int height) {
+  Scene s;
+  s.name = "test";
+  s.width = width;
+  s.height = height;
+  s.camera.projection = Projection::orthographic;
+  s.camera.position = {0.0f, 0.0f, 10.0f};
+  s.camera.target = {0.0f, 0.0f, 0.0f};
+  s.camera.ortho_height = float(height);
+  s.camera.near_plane = 1.0f;
+  s.camera.far_plane = 20.0f;
+  s.background = {0.0f, 0.0f, 0.0f};
+  s.ambient_light = {1.0f, 1.0f, 1.0f};
+  Light l;
+  l.direction = glm::normalize(glm::vec3(-0.3f, -0.4f, -1.0f));
+  l.color = {1.0f, 0.9f, 0.8f};
+  s.lights.push_back(l);
+  Material m;
+  m.ambient = {0.1f, 0.1f, 0.1f};
+  m.diffuse = {0.6f, 0.5f, 0.4f};
+  m.specular = {0.3f, 0.3f, 0.3f};
+  m.shininess = 20.0f;
+  s.materials.push_back(m);
+  return s;
+}
+
+// `count` random triangles inside the screen (one object), random depths in the view volume and
+// random unit normals facing the viewer, so vertex colours vary strongly.
+inline std::shared_ptr<Mesh> random_triangles(int count, int width, int height, float max_size, std::mt19937& rng) {
+  auto mesh = std::make_shared<Mesh>();
+  std::uniform_real_distribution<float> ux(-0.5f * width, 0.5f * width), uy(-0.5f * height, 0.5f * height);
+  std::uniform_real_distribution<float> ud(-max_size, max_size), uz(-5.0f, 5.0f), un(-1.0f, 1.0f);
+  for (int t = 0; t < count; ++t) {
+    const glm::vec2 c(ux(rng), uy(rng));
+    for (int k = 0; k < 3; ++k) {
+      mesh->positions.push_back({c.x + ud(rng), c.y + ud(rng), uz(rng)});
+      glm::vec3 n(un(rng), un(rng), 1.0f + std::abs(un(rng)));
+      mesh->normals.push_back(glm::normalize(n));
+    }
+    mesh->triangles.push_back({3 * t, 3 * t + 1, 3 * t + 2});
+  }
+  return mesh;
+}
+
+inline void add_object(Scene& s, std::shared_ptr<const Mesh> mesh, glm::mat4 model = glm::mat4(1.0f)) {
+  Object o;
+  o.name = "object" + std::to_string(s.objects.size());
+  o.mesh = std::move(mesh);
+  o.model = model;
+  s.objects.push_back(o);
+}
+
+}  // namespace parashade::testing_support
