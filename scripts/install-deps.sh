@@ -1,0 +1,14 @@
+#!/bin/sh
+# Installs the Debian (bookworm) packages parashade builds, tests and benchmarks with.
+# Runs as root or through sudo; safe to run again.
+set -eu
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -q
+$SUDO apt-get install -y -q --no-install-recommends \
+    g++ cmake ninja-build pkg-config \
+    pocl-opencl-icd ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers clinfo \
+    libglm-dev libopenmesh-dev libopenimageio-dev openimageio-tools \
+    nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev \
+    ca-certificates
