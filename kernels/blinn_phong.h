@@ -6,12 +6,12 @@
 #ifndef PARASHADE_BLINN_PHONG_H
 #define PARASHADE_BLINN_PHONG_H
 
-inline floatV positive_power(floatV x, float n) {
+INLINE floatV positive_power(floatV x, float n) {
   /* max(0,x)^n for n > 0; log2(0) = -inf gives exp2(-inf) = 0. */
   return exp2(n * log2(fmax(x, (floatV)0.0f)));
 }
 
-inline void blinn_phong(__constant float4* materials, int m, __constant float4* lights, float4 viewer,
+INLINE void blinn_phong(__constant float4* materials, int m, __constant float4* lights, float4 viewer,
                         floatV nx, floatV ny, floatV nz, floatV px, floatV py, floatV pz,
                         floatV* r, floatV* g, floatV* b) {
   const float4 amb = materials[3 * m], kd = materials[3 * m + 1], ks = materials[3 * m + 2];

@@ -5,6 +5,10 @@
 /* No silent fused multiply-adds: results must not depend on what the compiler contracts. */
 #pragma OPENCL FP_CONTRACT OFF
 
+/* Helpers are always inlined: PoCL 3.1 otherwise keeps some as calls inside the hot loops (row_spans
+ * was 12% of a frame profile as a call), which also stops vectorization across them. */
+#define INLINE inline __attribute__((always_inline))
+
 /* A work-item owns one row segment of VEC pixels; its pixels are the lanes of these vectors. */
 #define VEC 16
 typedef float16 floatV;
@@ -18,11 +22,14 @@ typedef uint16 uintV;
 #define LANE_INDEX ((intV)(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15))
 
 /* 1/sqrt(x), and 0 where x is 0: a zero vector stays zero instead of becoming NaN. */
-inline floatV safe_rsqrt(floatV x) { return select((floatV)0.0f, rsqrt(x), isgreater(x, (floatV)0.0f)); }
+INLINE floatV safe_rsqrt(floatV x) { return select((floatV)0.0f, rsqrt(x), isgreater(x, (floatV)0.0f)); }
 
-/* An 8-bit level: round to nearest (ties to even) and saturate. rint + clamp + truncation compiles
- * to three vector instructions where convert_uchar16_sat_rte is emulated with a dozen. */
-inline uintV to_level(floatV x) { return convert_uintV(clamp(rint(x), 0.0f, 255.0f)); }
+/* An 8-bit level: round to nearest (ties to even) and saturate. Adding 2^23 to a value in [0, 255]
+ * rounds it to an integer in the float's low mantissa bits (the default rounding mode is to nearest
+ * even), which are then read as an integer. rint() and convert_*_sat_rte are emulated lane by lane on
+ * PoCL 3.1 and cost more than the rest of an empty frame. */
+#define as_uintV as_uint16
+INLINE uintV to_level(floatV x) { return as_uintV(clamp(x, 0.0f, 255.0f) + 8388608.0f) - 0x4B000000u; }
 
 #ifndef TILE
 #define TILE 16

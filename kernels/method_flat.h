@@ -1,7 +1,7 @@
 /* Flat: the triangle's one value (computed in the vertex stage) on every pixel. */
 #define ATTR_FLOATS FLAT_ATTR_FLOATS
 
-inline void shade_pixels(__global const float* a, int dy, floatV rel, floatV* r, floatV* g, floatV* b,
+INLINE void shade_pixels(__global const float* a, int dy, floatV rel, floatV* r, floatV* g, floatV* b,
                          __constant float4* lights, __constant float4* materials, float4 viewer) {
   *r = (floatV)a[0];
   *g = (floatV)a[1];

@@ -3,7 +3,7 @@
  * the row comes from the y increment. Float arithmetic here; the fixed-point units come later. */
 #define ATTR_FLOATS GOURAUD_ATTR_FLOATS
 
-inline void shade_pixels(__global const float* a, int dy, floatV rel, floatV* r, floatV* g, floatV* b,
+INLINE void shade_pixels(__global const float* a, int dy, floatV rel, floatV* r, floatV* g, floatV* b,
                          __constant float4* lights, __constant float4* materials, float4 viewer) {
   const float fdy = (float)dy;
   *r = (floatV)(a[0] + a[6] * fdy) + a[3] * rel;

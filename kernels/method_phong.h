@@ -4,11 +4,11 @@
 
 #include "blinn_phong.h"
 
-inline floatV plane_row(__global const float* a, int slot, float fdy, floatV rel) {
+INLINE floatV plane_row(__global const float* a, int slot, float fdy, floatV rel) {
   return (floatV)(a[slot] + a[slot + 6] * fdy) + a[slot + 3] * rel;
 }
 
-inline void shade_pixels(__global const float* a, int dy, floatV rel, floatV* r, floatV* g, floatV* b,
+INLINE void shade_pixels(__global const float* a, int dy, floatV rel, floatV* r, floatV* g, floatV* b,
                          __constant float4* lights, __constant float4* materials, float4 viewer) {
   const float fdy = (float)dy;
   floatV nx = plane_row(a, 0, fdy, rel), ny = plane_row(a, 1, fdy, rel), nz = plane_row(a, 2, fdy, rel);

@@ -1,5 +1,7 @@
-/* Shades one frame: one work-item per TILE x TILE screen tile (a modeled shading unit owns a tile).
- * It walks the tile's triangle list in primitive order; for each triangle it finds the spans of all
+/* Shades one frame. A work-item renders TILE x TILE screen tiles one after another (tiles
+ * g, g + G, g + 2G, ... for work-item g of G: few work-items, because PoCL pays a fixed cost per
+ * work-group, and interleaved tiles, so every work-item gets a share of the busy screen areas).
+ * For each tile it walks the tile's triangle list in primitive order; for each triangle it finds the spans of all
  * its rows in the tile at once (row_spans, rows as vector lanes), then shades each row segment of VEC
  * pixels as vector lanes. Depth and colour of the tile stay in private memory and are written once,
  * so there is no read-modify-write of the frame and the result is deterministic.
@@ -14,8 +16,9 @@ __kernel __attribute__((reqd_work_group_size(1, 1, 1)))
 void render_tiles(__global const TriangleGeometry* tris, __global const float* attrs,
                   __global const uint* tile_start, __global const uint* tile_tris,
                   __constant float4* lights, __constant float4* materials, float4 viewer, float4 background,
-                  int tiles_x, __global uint* out_rgba, __global float* out_float) {
-  const int tile = get_global_id(0);
+                  int tiles_x, int num_tiles, int width, int height, __global uint* out_rgba,
+                  __global float* out_float) {
+  for (int tile = get_global_id(0); tile < num_tiles; tile += get_global_size(0)) {
   const int tile_x = (tile % tiles_x) * TILE, tile_y = (tile / tiles_x) * TILE;
 
   floatV depth[TILE_VECTORS], cr[TILE_VECTORS], cg[TILE_VECTORS], cb[TILE_VECTORS];
@@ -66,19 +69,32 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
     }
   }
 
-  const int pitch = tiles_x * TILE;
-#if OUTPUT_FLOAT
-  const size_t plane = (size_t)pitch * (get_global_size(0) / tiles_x) * TILE; /* padded frame */
-#endif
+  /* The frame is width x height exactly (no padding), so the host can use it without a copy. */
   for (int i = 0; i < TILE_VECTORS; ++i) {
-    const size_t at = (size_t)(tile_y + i / SEGMENTS) * pitch + tile_x + (i % SEGMENTS) * VEC;
+    const int y = tile_y + i / SEGMENTS, x = tile_x + (i % SEGMENTS) * VEC;
+    if (y >= height || x >= width) continue;
+    const size_t at = (size_t)y * width + x;
     const uintV covered = convert_uintV(isless(depth[i], (floatV)INFINITY)) & 0xFF000000u;
     const uintV rgba = to_level(cr[i]) | (to_level(cg[i]) << 8) | (to_level(cb[i]) << 16) | covered;
-    vstoreV(rgba, 0, out_rgba + at);
+    if (x + VEC <= width) {
+      vstoreV(rgba, 0, out_rgba + at);
+    } else {
+      uint lanes[VEC];
+      vstoreV(rgba, 0, lanes);
+      for (int l = 0; l < width - x; ++l) out_rgba[at + l] = lanes[l];
+    }
 #if OUTPUT_FLOAT
-    vstoreV(cr[i], 0, out_float + at);
-    vstoreV(cg[i], 0, out_float + plane + at);
-    vstoreV(cb[i], 0, out_float + 2 * plane + at);
+    const size_t plane = (size_t)width * height;
+    float fr[VEC], fg[VEC], fb[VEC];
+    vstoreV(cr[i], 0, fr);
+    vstoreV(cg[i], 0, fg);
+    vstoreV(cb[i], 0, fb);
+    for (int l = 0; l < min(VEC, width - x); ++l) {
+      out_float[at + l] = fr[l];
+      out_float[plane + at + l] = fg[l];
+      out_float[2 * plane + at + l] = fb[l];
+    }
 #endif
+  }
   }
 }

@@ -13,7 +13,7 @@ typedef long16 longV;
 
 /* Row dy (per lane, relative to the record's y0): covered pixels [*lo, *hi] (relative to x0) within
  * the window [lo, hi] given on entry; empty where *lo > *hi. */
-inline void row_spans(__global const TriangleGeometry* t, intV dy, intV* lo_out, intV* hi_out, int lo, int hi) {
+INLINE void row_spans(__global const TriangleGeometry* t, intV dy, intV* lo_out, intV* hi_out, int lo, int hi) {
   intV lo_v = (intV)lo, hi_v = (intV)hi;
   const longV dyl = convert_longV(dy);
   for (int e = 0; e < 3; ++e) {

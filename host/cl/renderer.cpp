@@ -6,6 +6,7 @@
 
 #include "parashade/errors.hpp"
 #include "parashade/geometry_stage.hpp"
+#include "parashade/parallel.hpp"
 #include "parashade/setup.hpp"
 
 namespace parashade {
@@ -131,16 +132,21 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
   s.tiles = binner_.tiles_x() * binner_.tiles_y();
 }
 
-Frame Renderer::render(const Scene& scene) {
-  Frame frame;
+int Renderer::work_items(int tiles) const {
+  const int wanted = options_.work_items > 0 ? options_.work_items : 16 * std::max(1, device_.info().compute_units);
+  return std::max(1, std::min(tiles, wanted));
+}
+
+const Frame& Renderer::render(const Scene& scene) {
+  Frame& frame = frame_;
   FrameTimings& t = frame.timings;
+  t = FrameTimings{};
+  frame.stats = FrameStats{};
   try {
     const auto frame_start = Clock::now();
     prepare(scene, t, frame.stats);
     cl::CommandQueue& q = device_.queue();
-    const int tile = options_.tile_size;
-    const int tiles_x = binner_.tiles_x(), tiles_y = binner_.tiles_y();
-    const std::size_t pitch = std::size_t(tiles_x) * tile, rows = std::size_t(tiles_y) * tile;
+    const std::size_t pixels = std::size_t(scene.width) * scene.height;
 
     const auto lights = light_table(scene);
     const auto materials = material_table(scene);
@@ -150,8 +156,16 @@ Frame Renderer::render(const Scene& scene) {
     ensure(materials_, materials_cap_, materials.size() * sizeof(cl_float4), CL_MEM_READ_ONLY);
     q.enqueueWriteBuffer(lights_, CL_FALSE, 0, lights.size() * sizeof(cl_float4), lights.data());
     q.enqueueWriteBuffer(materials_, CL_FALSE, 0, materials.size() * sizeof(cl_float4), materials.data());
-    ensure(out_rgba_, rgba_cap_, pitch * rows * sizeof(std::uint32_t), CL_MEM_WRITE_ONLY);
-    if (options_.float_output) ensure(out_float_, float_cap_, 3 * pitch * rows * sizeof(float), CL_MEM_WRITE_ONLY);
+    // The kernel writes the 8-bit frame straight into the image kept here (no copy on the host).
+    RenderedImage& img = frame.image;
+    img.width = scene.width;
+    img.height = scene.height;
+    if (img.rgba.size() != pixels * 4 || img.rgba.data() != rgba_host_) {
+      img.rgba.assign(pixels * 4, 0);
+      rgba_host_ = img.rgba.data();
+      out_rgba_ = cl::Buffer(device_.context(), CL_MEM_WRITE_ONLY | CL_MEM_USE_HOST_PTR, pixels * 4, rgba_host_);
+    }
+    if (options_.float_output) ensure(out_float_, float_cap_, 3 * pixels * sizeof(float), CL_MEM_WRITE_ONLY);
     else ensure(out_float_, float_cap_, 64, CL_MEM_WRITE_ONLY);
 
     cl::Program& program = device_.program({"common.h", "triangle_record.h", method_header(options_.method), "render_tiles.cl"},
@@ -169,37 +183,34 @@ Frame Renderer::render(const Scene& scene) {
     kernel.setArg(5, materials_);
     kernel.setArg(6, cl_float4{{viewer.x, viewer.y, viewer.z, 0.0f}});
     kernel.setArg(7, cl_float4{{bg.x, bg.y, bg.z, 0.0f}});
-    kernel.setArg(8, cl_int(tiles_x));
-    kernel.setArg(9, out_rgba_);
-    kernel.setArg(10, out_float_);
-    const std::size_t group = 1;  // one work-item per tile
+    kernel.setArg(8, cl_int(binner_.tiles_x()));
+    kernel.setArg(9, cl_int(frame.stats.tiles));
+    kernel.setArg(10, cl_int(scene.width));
+    kernel.setArg(11, cl_int(scene.height));
+    kernel.setArg(12, out_rgba_);
+    kernel.setArg(13, out_float_);
     auto t0 = Clock::now();
     cl::Event done;
-    q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(std::size_t(frame.stats.tiles) * group), cl::NDRange(group),
-                           nullptr, &done);
+    q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(std::size_t(work_items(frame.stats.tiles))),
+                           cl::NDRange(1), nullptr, &done);
     done.wait();
     t.launch_ms = ms_since(t0);
     t.kernel_ms = event_ms(done);
 
+    // Read-back: mapping makes the frame valid in the image's own memory (on a CPU device the kernel
+    // wrote it there already; a device with its own memory copies it here).
     t0 = Clock::now();
-    RenderedImage& img = frame.image;
-    img.width = scene.width;
-    img.height = scene.height;
-    img.rgba.resize(std::size_t(img.width) * img.height * 4);
-    const auto* rgba = static_cast<const std::uint32_t*>(
-        q.enqueueMapBuffer(out_rgba_, CL_TRUE, CL_MAP_READ, 0, pitch * rows * sizeof(std::uint32_t)));
-    for (int y = 0; y < img.height; ++y)
-      std::memcpy(&img.rgba[std::size_t(y) * img.width * 4], rgba + std::size_t(y) * pitch, std::size_t(img.width) * 4);
-    q.enqueueUnmapMemObject(out_rgba_, const_cast<std::uint32_t*>(rgba));
+    void* mapped = q.enqueueMapBuffer(out_rgba_, CL_TRUE, CL_MAP_READ, 0, pixels * 4);
+    if (mapped != rgba_host_)
+      std::memcpy(img.rgba.data(), mapped, pixels * 4);  // the spec says it is the host pointer; be safe
+    q.enqueueUnmapMemObject(out_rgba_, mapped);
+    img.rgb_float.clear();
     if (options_.float_output) {
       const auto* f = static_cast<const float*>(
-          q.enqueueMapBuffer(out_float_, CL_TRUE, CL_MAP_READ, 0, 3 * pitch * rows * sizeof(float)));
-      img.rgb_float.resize(std::size_t(img.width) * img.height * 3);
-      const std::size_t plane = pitch * rows;
-      for (int y = 0; y < img.height; ++y)
-        for (int x = 0; x < img.width; ++x)
-          for (int c = 0; c < 3; ++c)
-            img.rgb_float[(std::size_t(y) * img.width + x) * 3 + c] = f[c * plane + std::size_t(y) * pitch + x];
+          q.enqueueMapBuffer(out_float_, CL_TRUE, CL_MAP_READ, 0, 3 * pixels * sizeof(float)));
+      img.rgb_float.resize(pixels * 3);
+      for (std::size_t p = 0; p < pixels; ++p)
+        for (int c = 0; c < 3; ++c) img.rgb_float[p * 3 + c] = f[c * pixels + p];
       q.enqueueUnmapMemObject(out_float_, const_cast<float*>(f));
     }
     q.finish();

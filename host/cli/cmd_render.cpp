@@ -20,7 +20,7 @@ namespace {
 
 struct RenderArgs {
   std::string scene, output, method = "gouraud", device, size, report;
-  int frames = 5, warmup = 1, tile = 16;
+  int frames = 5, warmup = 1, tile = 16, work_items = 0;
   bool float_output = false, no_error = false, quiet = false;
 };
 
@@ -75,17 +75,19 @@ int run_render(const RenderArgs& a) {
 
   auto device = open_device(a.device);
   const DeviceInfo& dev = device->info();
-  Renderer renderer(*device, {method, a.float_output, a.tile});
+  if (a.work_items < 0) throw UsageError("--work-items must not be negative");
+  Renderer renderer(*device, {method, a.float_output, a.tile, a.work_items});
   if (!a.quiet)
     std::cerr << "rendering " << scene.name << " (" << scene.width << "x" << scene.height << ", "
               << scene.triangle_count() << " triangles, " << method_name(method) << ") on " << dev.name << " ...\n";
   for (int i = 0; i < a.warmup; ++i) renderer.render(scene);  // builds programs, compiles work-group functions
   std::vector<FrameTimings> timings;
-  Frame frame;
+  const Frame* last = nullptr;
   for (int i = 0; i < a.frames; ++i) {
-    frame = renderer.render(scene);
-    timings.push_back(frame.timings);
+    last = &renderer.render(scene);
+    timings.push_back(last->timings);
   }
+  const Frame& frame = *last;
   const FrameTimings med = median_timings(timings);
 
   nlohmann::json errors = nlohmann::json::object();
@@ -114,6 +116,7 @@ int run_render(const RenderArgs& a) {
       {"width", scene.width},
       {"height", scene.height},
       {"tile_size", a.tile},
+      {"work_items", renderer.work_items(frame.stats.tiles)},
       {"triangles", {{"in", frame.stats.geometry.triangles_in},
                      {"after_culling", frame.stats.geometry.triangles_out}}},
       {"frame_ms", med.total_ms},
@@ -156,6 +159,9 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("--warmup", a->warmup, "Untimed frames first (program build, work-group compilation)")
       ->capture_default_str();
   cmd->add_option("--tile", a->tile, "Screen tile size: 16, 32 or 64")->capture_default_str();
+  cmd->add_option("--work-items", a->work_items,
+                  "Kernel work-items, each rendering every N-th tile (0: 16 per compute unit)")
+      ->capture_default_str();
   cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
   cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");
   cmd->add_flag("-q,--quiet", a->quiet, "No progress line");

@@ -2,14 +2,31 @@
 // A rendered frame on the host, and writing/reading images through OpenImageIO.
 #include <cstdint>
 #include <filesystem>
+#include <new>
 #include <vector>
 
 namespace parashade {
 
+// Page-aligned storage, so an OpenCL device can write a frame straight into it (CL_MEM_USE_HOST_PTR).
+template <class T>
+struct PageAlignedAllocator {
+  using value_type = T;
+  static constexpr std::align_val_t alignment{4096};
+  PageAlignedAllocator() = default;
+  template <class U>
+  PageAlignedAllocator(const PageAlignedAllocator<U>&) {}
+  T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), alignment)); }
+  void deallocate(T* p, std::size_t) { ::operator delete(p, alignment); }
+  template <class U>
+  bool operator==(const PageAlignedAllocator<U>&) const { return true; }
+  template <class U>
+  bool operator!=(const PageAlignedAllocator<U>&) const { return false; }
+};
+
 struct RenderedImage {
   int width = 0;
   int height = 0;
-  std::vector<std::uint8_t> rgba;     // 8-bit RGBA, row 0 at the top; alpha 255 where covered, 0 elsewhere
+  std::vector<std::uint8_t, PageAlignedAllocator<std::uint8_t>> rgba;  // 8-bit RGBA, row 0 at the top; alpha 255 where covered, 0 elsewhere
   std::vector<float> rgb_float;       // optional: unclamped RGB in 8-bit levels (empty when not rendered)
   bool covered(std::size_t pixel) const { return rgba[4 * pixel + 3] != 0; }
 };

@@ -19,6 +19,7 @@ struct RenderOptions {
   Method method = Method::gouraud;
   bool float_output = false;  // also read back unclamped float RGB (for EXR and exact error figures)
   int tile_size = 16;         // screen tile edge in pixels: 16, 32 or 64
+  int work_items = 0;         // kernel work-items, each rendering every G-th tile; 0: 16 per compute unit
 };
 
 // Milliseconds. Host stages by the host clock; kernel_ms from the OpenCL profiling event.
@@ -48,13 +49,16 @@ struct Frame {
 class Renderer {
  public:
   Renderer(Device& device, RenderOptions options);
-  Frame render(const Scene& scene);
+  // Renders one frame. The result stays valid until the next render() (its memory is reused).
+  const Frame& render(const Scene& scene);
   // Per pixel (row-major, width x height), how many triangles cover its centre, ignoring depth:
   // the same geometry, tiles and span computation as render(). For watertightness tests.
   std::vector<std::uint32_t> coverage_counts(const Scene& scene);
   // The screen geometry of the last render() or coverage_counts().
   const ScreenGeometry& geometry() const { return geometry_; }
   const RenderOptions& options() const { return options_; }
+  // Work-items the kernel runs with for a frame of `tiles` tiles.
+  int work_items(int tiles) const;
 
  private:
   void prepare(const Scene& scene, FrameTimings& t, FrameStats& s);  // geometry, setup, binning
@@ -63,10 +67,12 @@ class Renderer {
   Device& device_;
   RenderOptions options_;
   ScreenGeometry geometry_;
+  Frame frame_;
   Binner binner_;
   cl::Buffer tris_, attrs_, tile_start_, tile_tris_, lights_, materials_, out_rgba_, out_float_, counts_;
+  void* rgba_host_ = nullptr;       // the memory out_rgba_ was created on (frame_.image.rgba)
   std::size_t tris_cap_ = 0, attrs_cap_ = 0, start_cap_ = 0, list_cap_ = 0, lights_cap_ = 0, materials_cap_ = 0,
-              rgba_cap_ = 0, float_cap_ = 0, counts_cap_ = 0;
+              float_cap_ = 0, counts_cap_ = 0;
 };
 
 }  // namespace parashade
