@@ -19,6 +19,9 @@ typedef uint16 uintV;
 #define convert_uintV convert_uint16
 #define convert_ucharV_sat_rte convert_uchar16_sat_rte
 #define vstoreV vstore16
+#define as_intV as_int16
+#define as_uintV as_uint16
+#define as_floatV as_float16
 #define LANE_INDEX ((intV)(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15))
 
 /* 1/sqrt(x), and 0 where x is 0: a zero vector stays zero instead of becoming NaN. */
@@ -28,7 +31,6 @@ INLINE floatV safe_rsqrt(floatV x) { return select((floatV)0.0f, rsqrt(x), isgre
  * rounds it to an integer in the float's low mantissa bits (the default rounding mode is to nearest
  * even), which are then read as an integer. rint() and convert_*_sat_rte are emulated lane by lane on
  * PoCL 3.1 and cost more than the rest of an empty frame. */
-#define as_uintV as_uint16
 INLINE uintV to_level(floatV x) { return as_uintV(clamp(x, 0.0f, 255.0f) + 8388608.0f) - 0x4B000000u; }
 
 #ifndef TILE
