@@ -11,7 +11,7 @@
 // interpolated normal of zero length is replaced by the world-space face normal turned toward the
 // viewer (never NaN). Uncovered pixels hold the background (x255) in both. Needs world and normal per
 // vertex (and color for gouraud, flat_color for flat); throws std::invalid_argument on inconsistent
-// geometry or a triangle not ordered E01(V2) > 0. Deterministic for any OpenMP thread count.
+// geometry or a triangle not ordered E01(V2) > 0. Deterministic for any host thread count.
 #include <cstdint>
 #include <vector>
 
