@@ -21,6 +21,15 @@ void coverage_count(__global const TriangleGeometry* tris, __global const uint* 
     const int row_first = max(tile_y, y0), row_last = min(tile_y + TILE - 1, (int)t->y1);
     const int lo = max(tile_x, x0) - x0, hi = min(tile_x + TILE - 1, (int)t->x1) - x0;
     if (row_first > row_last || lo > hi) continue;
+    if (t->flags & TRIANGLE_SMALL) { /* the same two paths as render_tiles.cl */
+      for (int py = row_first; py <= row_last; ++py)
+        for (int s = 0; s < SEGMENTS; ++s) {
+          const intV rel = lane + (tile_x + s * VEC - x0);
+          const intV inside = small_triangle_inside(t, rel, py - y0) & (rel >= lo) & (rel <= hi);
+          count[(py - tile_y) * SEGMENTS + s] += convert_uintV(-inside);
+        }
+      continue;
+    }
     for (int block = row_first; block <= row_last; block += VEC) {
       intV lo_v, hi_v;
       row_spans(t, lane + (block - y0), &lo_v, &hi_v, lo, hi);

@@ -12,6 +12,23 @@
 
 #define TILE_VECTORS (TILE * SEGMENTS)
 
+/* One row segment of VEC pixels (columns rel from the triangle's x0, row dy from its y0; `inside` marks
+ * covered lanes): depth test, shade, keep. */
+INLINE void shade_segment(__global const TriangleGeometry* t, __global const float* attr, int dy, intV rel,
+                          intV inside, int slot, floatV* depth, floatV* cr, floatV* cg, floatV* cb,
+                          __constant float4* lights, __constant float4* materials, float4 viewer) {
+  const floatV frel = convert_floatV(rel);
+  const floatV z = (floatV)(t->z_ref + t->z_ddy * (float)dy) + t->z_ddx * frel;
+  const intV pass = inside & isless(z, depth[slot]);
+  if (!any(pass)) return;
+  floatV sr, sg, sb;
+  shade_pixels(attr, dy, frel, &sr, &sg, &sb, lights, materials, viewer);
+  depth[slot] = select(depth[slot], z, pass);
+  cr[slot] = select(cr[slot], sr, pass);
+  cg[slot] = select(cg[slot], sg, pass);
+  cb[slot] = select(cb[slot], sb, pass);
+}
+
 __kernel __attribute__((reqd_work_group_size(1, 1, 1)))
 void render_tiles(__global const TriangleGeometry* tris, __global const float* attrs,
                   __global const uint* tile_start, __global const uint* tile_tris,
@@ -40,6 +57,20 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
     const int lo = max(tile_x, x0) - x0, hi = min(tile_x + TILE - 1, (int)t->x1) - x0;
     if (row_first > row_last || lo > hi) continue;
     __global const float* attr = attrs + (size_t)ti * ATTR_FLOATS;
+    const int seg_first = (lo + x0 - tile_x) / VEC, seg_last = (hi + x0 - tile_x) / VEC;
+    if (t->flags & TRIANGLE_SMALL) {
+      /* Few rows: test each pixel's edge functions directly. */
+      for (int py = row_first; py <= row_last; ++py) {
+        const int dy = py - y0;
+        for (int s = seg_first; s <= seg_last; ++s) {
+          const intV rel = lane + (tile_x + s * VEC - x0);
+          const intV inside = small_triangle_inside(t, rel, dy) & (rel >= lo) & (rel <= hi);
+          shade_segment(t, attr, dy, rel, inside, (py - tile_y) * SEGMENTS + s, depth, cr, cg, cb, lights, materials,
+                        viewer);
+        }
+      }
+      continue;
+    }
     for (int block = row_first; block <= row_last; block += VEC) {
       intV lo_v, hi_v;
       row_spans(t, lane + (block - y0), &lo_v, &hi_v, lo, hi);
@@ -49,21 +80,11 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
       for (int j = 0; j < rows; ++j) {
         const int xl = span_lo[j], xr = span_hi[j];
         if (xl > xr) continue;
-        const int py = block + j, dy = py - y0;
-        const float z_row = t->z_ref + t->z_ddy * (float)dy;
+        const int py = block + j;
         for (int s = (xl + x0 - tile_x) / VEC; s <= (xr + x0 - tile_x) / VEC; ++s) {
-          const int slot = (py - tile_y) * SEGMENTS + s;
           const intV rel = lane + (tile_x + s * VEC - x0);
-          const floatV frel = convert_floatV(rel);
-          const floatV z = (floatV)z_row + t->z_ddx * frel;
-          const intV pass = (rel >= xl) & (rel <= xr) & isless(z, depth[slot]);
-          if (!any(pass)) continue;
-          floatV sr, sg, sb;
-          shade_pixels(attr, dy, frel, &sr, &sg, &sb, lights, materials, viewer);
-          depth[slot] = select(depth[slot], z, pass);
-          cr[slot] = select(cr[slot], sr, pass);
-          cg[slot] = select(cg[slot], sg, pass);
-          cb[slot] = select(cb[slot], sb, pass);
+          shade_segment(t, attr, py - y0, rel, (rel >= xl) & (rel <= xr), (py - tile_y) * SEGMENTS + s, depth, cr, cg,
+                        cb, lights, materials, viewer);
         }
       }
     }

@@ -42,4 +42,16 @@ INLINE void row_spans(__global const TriangleGeometry* t, intV dy, intV* lo_out,
   *hi_out = hi_v;
 }
 
+/* Small triangles (TRIANGLE_SMALL): which of the VEC pixels at columns rel (relative to x0) of row dy
+ * are covered, from the edge functions evaluated exactly in 32 bits (triangle_record.h). Cheaper than
+ * row_spans when a triangle meets only a few rows of a tile. -1 where covered. */
+INLINE intV small_triangle_inside(__global const TriangleGeometry* t, intV rel, int dy) {
+  intV inside = (intV)(-1);
+  for (int e = 0; e < 3; ++e) {
+    const int row = (int)t->edge_c[e] + t->edge_b[e] * dy;
+    inside &= ((intV)row + t->edge_a[e] * rel) >= 0;
+  }
+  return inside;
+}
+
 #endif

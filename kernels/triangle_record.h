@@ -5,6 +5,8 @@
  * function of screen_geometry.hpp at the centre of pixel (x, y), minus the edge's top-left bias; the
  * pixel is covered when all three are >= 0. edge_a, edge_b are exact (|.| < 2^31 in the guard band),
  * edge_c needs 64 bits. edge_inv_a = 1/edge_a only seeds the span-end search; the result is exact.
+ * Small triangles (vertex extent <= SMALL_EXTENT pixels both ways) have |E| < 2^30 over their box and
+ * the 16 pixels beyond it, so the kernels may evaluate their edge functions per pixel in 32 bits.
  * Planes: value(x, y) = ref + ddx*(x - x0) + ddy*(y - y0), with (x0, y0) the bounding box corner. */
 #ifndef PARASHADE_TRIANGLE_RECORD_H
 #define PARASHADE_TRIANGLE_RECORD_H
@@ -29,8 +31,11 @@ typedef struct {
   ps_float edge_inv_a[3];
   ps_short x0, y0, x1, y1;  /* pixels whose centres may be covered, clamped to the screen; empty if x0 > x1 */
   ps_float z_ref, z_ddx, z_ddy;  /* window depth plane */
-  ps_int pad;
+  ps_int flags;                  /* TRIANGLE_SMALL */
 } TriangleGeometry;
+
+#define SMALL_EXTENT 64
+#define TRIANGLE_SMALL 1
 
 /* Per-method attribute records: ATTR_* floats per triangle, indexed like TriangleGeometry. */
 #define FLAT_ATTR_FLOATS 4      /* r, g, b (levels), unused */

@@ -100,7 +100,8 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
     r.y0 = ps_short(y0);
     r.x1 = ps_short(x1);
     r.y1 = ps_short(y1);
-    r.pad = 0;
+    const bool small = xmax - xmin <= SMALL_EXTENT * kSubpixel && ymax - ymin <= SMALL_EXTENT * kSubpixel;
+    r.flags = small ? TRIANGLE_SMALL : 0;
     const std::int64_t cx = kSubpixel * x0 + half, cy = kSubpixel * y0 + half;
     for (int e = 0; e < 3; ++e) {
       const glm::i64vec2 vi = p[e], vj = p[(e + 1) % 3];
