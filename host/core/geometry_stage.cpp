@@ -27,11 +27,13 @@ float plane_distance(const glm::vec4& c, int plane) {
 }
 
 std::uint8_t outcode_of(const glm::vec4& c) {
-  if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w))) return kAllPlanes;
-  std::uint8_t code = 0;
-  for (int plane = kNear; plane <= kTop; plane <<= 1)
-    if (plane_distance(c, plane) < 0.0f) code |= plane;
-  return code;
+  // One test for NaN or Inf in any coordinate (the sum is then NaN or Inf); finite coordinates so
+  // large that their sum overflows (> 3e38) count as outside too.
+  if (!std::isfinite(c.x + c.y + c.z + c.w)) return kAllPlanes;
+  const float g = kGuardBand * c.w;
+  return std::uint8_t((c.z + c.w >= 0.0f ? 0 : kNear) | (c.w - c.z >= 0.0f ? 0 : kFar) |
+                      (c.x + g >= 0.0f ? 0 : kLeft) | (g - c.x >= 0.0f ? 0 : kRight) |
+                      (c.y + g >= 0.0f ? 0 : kBottom) | (g - c.y >= 0.0f ? 0 : kTop));
 }
 
 struct Snapped {
@@ -89,6 +91,9 @@ class Assembler {
   void run(const ChunkJob& job, std::uint32_t vertex_base, ChunkOutput& out) const {
     const Object& obj = scene_.objects[job.object];
     const Mesh& mesh = *obj.mesh;
+    out.triangles.reserve(job.count);
+    out.material.reserve(job.count);
+    if (needs_.flat) out.flat_color.reserve(job.count);
     for (std::size_t t = job.first; t < job.first + job.count; ++t) {
       const glm::uvec3 tri = mesh.triangles[t] + glm::uvec3(vertex_base);
       ++out.stats.triangles_in;
@@ -266,26 +271,29 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
     const Object& obj = scene.objects[o];
     const Mesh& mesh = *obj.mesh;
     const glm::mat4 model = obj.model;
+    const glm::mat4 model_vp = vp * model;
     const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(model)));
     const std::size_t base = vertex_base[o];
     parallel_for_ranges(mesh.positions.size(), 8192, [&](std::size_t first, std::size_t last) {
     for (std::size_t i = first; i < last; ++i) {
       const std::size_t v = base + i;
-      const glm::vec4 world = model * glm::vec4(mesh.positions[i], 1.0f);
-      const glm::vec4 clip = vp * world;
+      const glm::vec4 position(mesh.positions[i], 1.0f);
+      const glm::vec4 clip = model_vp * position;
       g.clip[v] = clip;
       g.outcode[v] = outcode_of(clip);
       const Snapped s = snap(clip, g.width, g.height);
       g.xy[v] = s.xy;
       g.depth[v] = s.depth;
       g.inv_w[v] = s.inv_w;
-      if (needs.world) g.world[v] = glm::vec3(world);
-      if (needs.normal || needs.color) {
+      const bool lit = needs.normal || needs.color;
+      const glm::vec3 world = (needs.world || lit) ? glm::vec3(model * position) : glm::vec3(0.0f);
+      if (needs.world) g.world[v] = world;
+      if (lit) {
         glm::vec3 nrm = normal_matrix * mesh.normals[i];
         const float len = glm::length(nrm);
         nrm = len > 0.0f ? nrm / len : glm::vec3(0.0f, 0.0f, 1.0f);
         if (needs.normal) g.normal[v] = nrm;
-        if (needs.color) g.color[v] = lighting.shade(obj.material, glm::vec3(world), nrm);
+        if (needs.color) g.color[v] = lighting.shade(obj.material, world, nrm);
       }
     }
     });

@@ -17,13 +17,21 @@ struct Plane {
   double ref, ddx, ddy;
 };
 
-// The affine function through (a, va), (b, vb), (c, vc), evaluated at pixel centre `at`.
-Plane plane_through(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double va, double vb, double vc, glm::dvec2 at) {
-  const double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
-  const double ddx = ((vb - va) * (c.y - a.y) - (vc - va) * (b.y - a.y)) / det;
-  const double ddy = ((vc - va) * (b.x - a.x) - (vb - va) * (c.x - a.x)) / det;
-  return {va + ddx * (at.x - a.x) + ddy * (at.y - a.y), ddx, ddy};
-}
+// Affine functions over one triangle: the geometry shared by all its attribute planes is computed once.
+struct PlaneBasis {
+  glm::dvec2 e1, e2;   // b - a, c - a
+  glm::dvec2 at;       // evaluation point - a
+  double inv_det;
+  PlaneBasis(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, glm::dvec2 point)
+      : e1(b - a), e2(c - a), at(point - a), inv_det(1.0 / (e1.x * e2.y - e2.x * e1.y)) {}
+  // The plane through values va, vb, vc at a, b, c, evaluated at the point.
+  Plane plane(double va, double vb, double vc) const {
+    const double d1 = vb - va, d2 = vc - va;
+    const double ddx = (d1 * e2.y - d2 * e1.y) * inv_det;
+    const double ddy = (d2 * e1.x - d1 * e2.x) * inv_det;
+    return {va + ddx * at.x + ddy * at.y, ddx, ddy};
+  }
+};
 
 void store(float* dst, int slot, const Plane& p0, const Plane& p1, const Plane& p2) {
   dst[slot + 0] = float(p0.ref);
@@ -115,7 +123,8 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
     const glm::dvec2 s[3] = {glm::dvec2(p[0]) / double(kSubpixel), glm::dvec2(p[1]) / double(kSubpixel),
                              glm::dvec2(p[2]) / double(kSubpixel)};
     const glm::dvec2 at(double(x0) + 0.5, double(y0) + 0.5);
-    const auto plane = [&](double a, double b, double c) { return plane_through(s[0], s[1], s[2], a, b, c, at); };
+    const PlaneBasis basis(s[0], s[1], s[2], at);
+    const auto plane = [&](double a, double b, double c) { return basis.plane(a, b, c); };
     const Plane z = plane(g.depth[vid[0]], g.depth[vid[1]], g.depth[vid[2]]);
     r.z_ref = float(z.ref);
     r.z_ddx = float(z.ddx);
