@@ -12,7 +12,9 @@ int main(int argc, char** argv) {
   using namespace parashade;
   CLI::App app{"parashade — parallel Gouraud and Phong shading units, emulated in OpenCL and measured"};
   app.set_version_flag("--version", std::string("parashade ") + PARASHADE_VERSION);
-  app.require_subcommand(1);
+  // At most one command; none is reported below, so that an unknown word is named ("not expected: X")
+  // instead of CLI11's "A subcommand is required".
+  app.require_subcommand(0, 1);
   app.footer(
       "Exit codes: 0 ok, 2 usage error, 3 bad input (scene, mesh, values), 4 OpenCL or device failure.\n"
       "Run 'parashade COMMAND --help' for a command's options.");
@@ -26,6 +28,8 @@ int main(int argc, char** argv) {
   try {
     for (const cli::Command& c : commands)
       if (c.app->parsed()) return c.run();
+    std::cerr << "parashade: error: a command is required: devices or render\n"
+                 "Run with --help for more information.\n";
     return int(ExitCode::usage);
   } catch (const Error& e) {
     std::cerr << "parashade: error: " << e.what() << "\n";
