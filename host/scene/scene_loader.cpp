@@ -362,6 +362,8 @@ Scene load_scene(const std::filesystem::path& path) {
   const std::string ext = lower_extension(path);
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path.string() + ": no such file");
+  // A directory opens as an empty stream, which would read as "invalid JSON".
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": is a directory, not a scene file");
   if (ext == ".json") return read_scene(detail::parse_json_file(path), path);
   if (ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl") return scene_for_mesh(path);
   throw InputError(path.string() + ": unknown scene format '" + ext + "' (expected .json, or a mesh: .obj .off .ply .stl)");
