@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -40,7 +41,9 @@ bool JsonValue::boolean() const {
 double JsonValue::number() const {
   if (!value_->is_number()) fail("expected a number, got " + type_name(*value_));
   const double v = value_->get<double>();
-  if (!std::isfinite(v)) fail("must be finite");
+  // Scenes are float: 1e300 is finite here but would become inf in the renderer.
+  if (!(std::abs(v) <= double(std::numeric_limits<float>::max())))
+    fail("must be finite and within single precision, |x| <= 3.4e38 (got " + dump() + ")");
   return v;
 }
 
