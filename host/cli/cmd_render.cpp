@@ -1,6 +1,9 @@
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <regex>
+#include <tuple>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -24,14 +27,14 @@ struct RenderArgs {
   bool float_output = false, no_error = false, quiet = false;
 };
 
-void apply_size(Scene& scene, const std::string& size) {
-  if (size.empty()) return;
+// --size WIDTHxHEIGHT (nullopt when absent). Only the syntax, so that a usage error is reported before
+// the scene is read; the limit is checked with the scene's own resolution.
+std::optional<std::pair<int, int>> parse_size(const std::string& size) {
+  if (size.empty()) return std::nullopt;
   std::smatch m;
   if (!std::regex_match(size, m, std::regex(R"((\d{1,9})x(\d{1,9}))")))
     throw UsageError("--size '" + size + "' is not of the form WIDTHxHEIGHT, e.g. 1920x1080");
-  scene.width = std::stoi(m[1]);
-  scene.height = std::stoi(m[2]);
-  check_resolution(scene.width, scene.height, "--size " + size);
+  return std::make_pair(std::stoi(m[1]), std::stoi(m[2]));
 }
 
 // Median of each stage over the timed frames.
@@ -62,10 +65,14 @@ std::string describe(const ErrorMetrics& e) {
 
 int run_render(const RenderArgs& a) {
   const Method method = parse_method(a.method);
+  const auto size = parse_size(a.size);
   if (a.frames < 1) throw UsageError("--frames must be at least 1");
   if (a.warmup < 0) throw UsageError("--warmup must not be negative");
   Scene scene = load_scene(a.scene);
-  apply_size(scene, a.size);
+  if (size) {
+    std::tie(scene.width, scene.height) = *size;
+    check_resolution(scene.width, scene.height, "--size " + a.size);
+  }
   check_resolution(scene.width, scene.height, "scene '" + a.scene + "'");
   // Fail on an unwritable output before the work, not after it.
   const std::filesystem::path out_path(a.output);
