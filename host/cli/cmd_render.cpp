@@ -37,6 +37,16 @@ std::optional<std::pair<int, int>> parse_size(const std::string& size) {
   return std::make_pair(std::stoi(m[1]), std::stoi(m[2]));
 }
 
+// The report is written after the image; a folder that is not there must stop the run before either.
+void check_report_destination(const std::filesystem::path& report) {
+  const std::filesystem::path dir = report.parent_path().empty() ? "." : report.parent_path();
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec))
+    throw InputError("cannot write '" + report.string() + "': directory '" + dir.string() + "' does not exist");
+  if (std::filesystem::is_directory(report, ec))
+    throw InputError("cannot write '" + report.string() + "': it is a directory");
+}
+
 // Median of each stage over the timed frames.
 FrameTimings median_timings(const std::vector<FrameTimings>& f) {
   const auto med = [&](double FrameTimings::*field) {
@@ -76,9 +86,8 @@ int run_render(const RenderArgs& a) {
   check_resolution(scene.width, scene.height, "scene '" + a.scene + "'");
   // Fail on an unwritable output before the work, not after it.
   const std::filesystem::path out_path(a.output);
-  const std::filesystem::path out_dir = out_path.parent_path().empty() ? "." : out_path.parent_path();
-  if (!std::filesystem::is_directory(out_dir))
-    throw InputError("cannot write '" + a.output + "': directory '" + out_dir.string() + "' does not exist");
+  check_image_destination(out_path);
+  if (!a.report.empty()) check_report_destination(a.report);
 
   auto device = open_device(a.device);
   const DeviceInfo& dev = device->info();
@@ -134,7 +143,15 @@ int run_render(const RenderArgs& a) {
       {"mtriangle_per_s", double(frame.stats.geometry.triangles_in) / (med.total_ms * 1e3)},
       {"stats", to_json(frame.stats)},
       {"error", errors}};
-  if (!a.report.empty()) write_text_atomically(a.report, report.dump(2) + "\n");
+  if (!a.report.empty()) {
+    try {
+      write_text_atomically(a.report, report.dump(2) + "\n");
+    } catch (...) {
+      std::error_code ignored;  // both outputs or neither
+      std::filesystem::remove(out_path, ignored);
+      throw;
+    }
+  }
 
   std::printf("%s: %dx%d, %llu triangles (%llu after culling and clipping), method %s\n", scene.name.c_str(),
               scene.width, scene.height, (unsigned long long)frame.stats.geometry.triangles_in,

@@ -85,22 +85,30 @@ std::string write_file(const fs::path& file, const RenderedImage& image, bool as
 
 }  // namespace
 
+void check_image_destination(const fs::path& path) {
+  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw InputError("cannot write " + path.string() + ": directory '" + dir.string() + "' does not exist");
+  if (fs::is_directory(path, ec)) throw InputError("cannot write " + path.string() + ": it is a directory");
+  const std::string ext = lower_extension(path);
+  if (ext.empty())
+    throw InputError("cannot write " + path.string() + ": no extension to choose the image format");
+  // OIIO knows the format by the extension; asking creates nothing on disk.
+  auto probe = OIIO::ImageOutput::create(path.string());
+  if (!probe) {
+    take_global_oiio_error();
+    throw InputError("cannot write " + path.string() + ": unknown image format '" + ext + "'");
+  }
+}
+
 void write_image(const fs::path& path, const RenderedImage& image) {
   const std::size_t n = std::size_t(std::max(image.width, 0)) * std::size_t(std::max(image.height, 0));
   if (image.width < 1 || image.height < 1 || image.rgba.size() != 4 * n)
     throw InputError("cannot write " + path.string() + ": the image is empty or inconsistent");
-  const std::string ext = lower_extension(path);
-  if (ext.empty())
-    throw InputError("cannot write " + path.string() + ": no extension to choose the image format");
-  {
-    // Reject an unknown format before touching the file system.
-    auto probe = OIIO::ImageOutput::create(path.string());
-    if (!probe) {
-      take_global_oiio_error();
-      throw InputError("cannot write " + path.string() + ": unknown image format '" + ext + "'");
-    }
-  }
+  check_image_destination(path);  // before touching the file system
 
+  const std::string ext = lower_extension(path);
   const fs::path tmp = temporary_beside(path);
   std::string why = write_file(tmp, image, ext == ".exr");
   if (why.empty()) {

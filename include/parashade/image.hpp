@@ -38,6 +38,10 @@ struct RenderedImage {
 // Throws InputError for an unknown extension or an unwritable path.
 void write_image(const std::filesystem::path& path, const RenderedImage& image);
 
+// Throws the InputError write_image would throw for `path` itself (no such directory, a directory, no
+// or an unknown extension), so a caller can refuse a destination before the work that fills it.
+void check_image_destination(const std::filesystem::path& path);
+
 // Reads an image as 8-bit RGBA (alpha 255 where the file has none; grey files give R = G = B). Float
 // files (EXR) also fill rgb_float with their values in levels (x255). Throws InputError.
 RenderedImage read_image(const std::filesystem::path& path);
