@@ -41,6 +41,7 @@ nlohmann::json to_json(const FrameStats& s) {
           {"zero_area", s.geometry.zero_area},
           {"outside", s.geometry.outside},
           {"clipped", s.geometry.clipped},
+          {"non_finite", s.geometry.non_finite},
           {"screen_triangles", s.geometry.triangles_out},
           {"triangles_without_pixels", s.triangles_without_pixels},
           {"bin_entries", s.bin_entries},

@@ -13,7 +13,8 @@ namespace parashade {
 namespace {
 
 // Clip planes; bit i of an outcode = outside plane i.
-enum : std::uint8_t { kNear = 1, kFar = 2, kLeft = 4, kRight = 8, kBottom = 16, kTop = 32, kAllPlanes = 63 };
+enum : std::uint8_t { kNear = 1, kFar = 2, kLeft = 4, kRight = 8, kBottom = 16, kTop = 32 };
+constexpr std::uint8_t kNonFinite = 64;  // not a plane: the vertex has NaN or Inf coordinates
 
 float plane_distance(const glm::vec4& c, int plane) {
   switch (plane) {
@@ -29,7 +30,7 @@ float plane_distance(const glm::vec4& c, int plane) {
 std::uint8_t outcode_of(const glm::vec4& c) {
   // One test for NaN or Inf in any coordinate (the sum is then NaN or Inf); finite coordinates so
   // large that their sum overflows (> 3e38) count as outside too.
-  if (!std::isfinite(c.x + c.y + c.z + c.w)) return kAllPlanes;
+  if (!std::isfinite(c.x + c.y + c.z + c.w)) return kNonFinite;
   const float g = kGuardBand * c.w;
   return std::uint8_t((c.z + c.w >= 0.0f ? 0 : kNear) | (c.w - c.z >= 0.0f ? 0 : kFar) |
                       (c.x + g >= 0.0f ? 0 : kLeft) | (g - c.x >= 0.0f ? 0 : kRight) |
@@ -68,6 +69,24 @@ struct Needs {
   bool world, normal, color, flat;
 };
 
+// Where an object's vertices come from: world position, unit normal and (Gouraud) lit colour of one of
+// its vertices, computed on demand. Lighting is the costly part of the vertex stage, so it runs only
+// for vertices of triangles that survive culling (or that clipping needs).
+struct VertexSource {
+  const Mesh* mesh = nullptr;
+  glm::mat4 model{1.0f};
+  glm::mat3 normal_matrix{1.0f};
+  std::uint32_t material = 0;
+  std::uint32_t base = 0;  // index of the object's first vertex in the frame
+
+  glm::vec3 world(std::size_t i) const { return glm::vec3(model * glm::vec4(mesh->positions[i], 1.0f)); }
+  glm::vec3 normal(std::size_t i) const {
+    const glm::vec3 n = normal_matrix * mesh->normals[i];
+    const float len = glm::length(n);
+    return len > 0.0f ? n / len : glm::vec3(0.0f, 0.0f, 1.0f);
+  }
+};
+
 // Work of one chunk of input triangles, merged in chunk order so the output order is deterministic.
 struct ChunkOutput {
   std::vector<glm::uvec3> triangles;
@@ -85,11 +104,13 @@ struct ChunkJob {
 
 class Assembler {
  public:
-  Assembler(const Scene& scene, const ScreenGeometry& g, const Needs& needs, const VertexLighting& lighting)
-      : scene_(scene), g_(g), needs_(needs), lighting_(lighting) {}
+  Assembler(const Scene& scene, const ScreenGeometry& g, const Needs& needs, const VertexLighting& lighting,
+            const std::vector<VertexSource>& sources, std::vector<std::uint8_t>& used)
+      : scene_(scene), g_(g), needs_(needs), lighting_(lighting), sources_(sources), used_(used) {}
 
   void run(const ChunkJob& job, std::uint32_t vertex_base, ChunkOutput& out) const {
     const Object& obj = scene_.objects[job.object];
+    const VertexSource& src = sources_[job.object];
     const Mesh& mesh = *obj.mesh;
     out.triangles.reserve(job.count);
     out.material.reserve(job.count);
@@ -98,6 +119,10 @@ class Assembler {
       const glm::uvec3 tri = mesh.triangles[t] + glm::uvec3(vertex_base);
       ++out.stats.triangles_in;
       const std::uint8_t o0 = g_.outcode[tri.x], o1 = g_.outcode[tri.y], o2 = g_.outcode[tri.z];
+      if ((o0 | o1 | o2) & kNonFinite) {  // no meaningful position to clip or draw
+        ++out.stats.non_finite;
+        continue;
+      }
       if (o0 & o1 & o2) {
         ++out.stats.outside;
         continue;
@@ -107,7 +132,7 @@ class Assembler {
         emit(tri, obj.material, flat, out);
       } else {
         ++out.stats.clipped;
-        clip_and_emit(tri, std::uint8_t(o0 | o1 | o2), obj.material, flat, out);
+        clip_and_emit(tri, std::uint8_t(o0 | o1 | o2), obj.material, flat, src, out);
       }
     }
   }
@@ -142,16 +167,22 @@ class Assembler {
       return;
     }
     if (area2 < 0) std::swap(tri.y, tri.z);
+    if (needs_.color)
+      for (std::uint32_t v : {tri.x, tri.y, tri.z})
+        if (!(v & kNewVertex)) __atomic_store_n(&used_[v], std::uint8_t(1), __ATOMIC_RELAXED);  // same value from any thread
     out.triangles.push_back(tri);
     out.material.push_back(material);
     if (needs_.flat) out.flat_color.push_back(flat);
   }
 
-  ClipVertex clip_vertex(std::uint32_t v) const {
+  ClipVertex clip_vertex(std::uint32_t v, const VertexSource& src) const {
     ClipVertex c{v, g_.clip[v], glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
     if (needs_.world) c.world = g_.world[v];
     if (needs_.normal) c.normal = g_.normal[v];
-    if (needs_.color) c.color = g_.color[v];
+    if (needs_.color) {  // not lit yet (lighting follows assembly): light this vertex now
+      const std::size_t i = v - src.base;
+      c.color = lighting_.shade(src.material, src.world(i), src.normal(i));
+    }
     return c;
   }
 
@@ -170,15 +201,15 @@ class Assembler {
   }
 
   void clip_and_emit(glm::uvec3 tri, std::uint8_t planes, std::uint32_t material, glm::vec3 flat,
-                     ChunkOutput& out) const {
+                     const VertexSource& src, ChunkOutput& out) const {
     // Sutherland–Hodgman against each plane the triangle reaches beyond; at most 3 + 6 vertices.
     ClipVertex buffer_a[12], buffer_b[12];
     ClipVertex* poly = buffer_a;
     ClipVertex* next = buffer_b;
     int n = 3;
-    poly[0] = clip_vertex(tri.x);
-    poly[1] = clip_vertex(tri.y);
-    poly[2] = clip_vertex(tri.z);
+    poly[0] = clip_vertex(tri.x, src);
+    poly[1] = clip_vertex(tri.y, src);
+    poly[2] = clip_vertex(tri.z, src);
     for (int plane = kNear; plane <= kTop && n >= 3; plane <<= 1) {
       if (!(planes & plane)) continue;
       int m = 0;
@@ -214,6 +245,8 @@ class Assembler {
   const ScreenGeometry& g_;
   const Needs needs_;
   const VertexLighting& lighting_;
+  const std::vector<VertexSource>& sources_;
+  std::vector<std::uint8_t>& used_;  // Gouraud: per scene vertex, 1 when a surviving triangle uses it
 };
 
 template <typename T>
@@ -267,34 +300,29 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
   resize_if(g.world, needs.world, vertex_count);
   resize_if(g.normal, needs.normal, vertex_count);
   resize_if(g.color, needs.color, vertex_count);
+  std::vector<VertexSource> sources(scene.objects.size());
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     const Object& obj = scene.objects[o];
-    const Mesh& mesh = *obj.mesh;
-    const glm::mat4 model = obj.model;
-    const glm::mat4 model_vp = vp * model;
-    const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(model)));
-    const std::size_t base = vertex_base[o];
+    sources[o] = {obj.mesh.get(), obj.model, glm::transpose(glm::inverse(glm::mat3(obj.model))), obj.material,
+                  vertex_base[o]};
+  }
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    const VertexSource& src = sources[o];
+    const Mesh& mesh = *src.mesh;
+    const glm::mat4 model_vp = vp * src.model;
+    const std::size_t base = src.base;
     parallel_for_ranges(mesh.positions.size(), 8192, [&](std::size_t first, std::size_t last) {
     for (std::size_t i = first; i < last; ++i) {
       const std::size_t v = base + i;
-      const glm::vec4 position(mesh.positions[i], 1.0f);
-      const glm::vec4 clip = model_vp * position;
+      const glm::vec4 clip = model_vp * glm::vec4(mesh.positions[i], 1.0f);
       g.clip[v] = clip;
       g.outcode[v] = outcode_of(clip);
       const Snapped s = snap(clip, g.width, g.height);
       g.xy[v] = s.xy;
       g.depth[v] = s.depth;
       g.inv_w[v] = s.inv_w;
-      const bool lit = needs.normal || needs.color;
-      const glm::vec3 world = (needs.world || lit) ? glm::vec3(model * position) : glm::vec3(0.0f);
-      if (needs.world) g.world[v] = world;
-      if (lit) {
-        glm::vec3 nrm = normal_matrix * mesh.normals[i];
-        const float len = glm::length(nrm);
-        nrm = len > 0.0f ? nrm / len : glm::vec3(0.0f, 0.0f, 1.0f);
-        if (needs.normal) g.normal[v] = nrm;
-        if (needs.color) g.color[v] = lighting.shade(obj.material, world, nrm);
-      }
+      if (needs.world) g.world[v] = src.world(i);
+      if (needs.normal) g.normal[v] = src.normal(i);
     }
     });
   }
@@ -308,8 +336,21 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
       jobs.push_back({o, first, std::min(kChunk, count - first)});
   }
   std::vector<ChunkOutput> outputs(jobs.size());
-  const Assembler assembler(scene, g, needs, lighting);
+  std::vector<std::uint8_t> used(needs.color ? vertex_count : 0, 0);
+  const Assembler assembler(scene, g, needs, lighting, sources, used);
   parallel_for(jobs.size(), [&](std::size_t j) { assembler.run(jobs[j], vertex_base[jobs[j].object], outputs[j]); });
+
+  // Gouraud: light the vertices the surviving triangles use (the others keep a zero colour).
+  if (needs.color) {
+    for (const VertexSource& src : sources) {
+      parallel_for_ranges(src.mesh->positions.size(), 8192, [&](std::size_t first, std::size_t last) {
+        for (std::size_t i = first; i < last; ++i) {
+          const std::size_t v = src.base + i;
+          g.color[v] = used[v] ? lighting.shade(src.material, src.world(i), src.normal(i)) : glm::vec3(0.0f);
+        }
+      });
+    }
+  }
 
   std::size_t tri_total = 0, new_total = 0;
   std::vector<std::size_t> tri_offset(outputs.size()), new_offset(outputs.size());
@@ -324,6 +365,7 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
     g.stats.zero_area += s.zero_area;
     g.stats.outside += s.outside;
     g.stats.clipped += s.clipped;
+    g.stats.non_finite += s.non_finite;
   }
   g.stats.triangles_out = tri_total;
   const std::size_t total_vertices = vertex_count + new_total;

@@ -31,6 +31,7 @@ struct GeometryStats {
   std::uint64_t culled_backface = 0;
   std::uint64_t zero_area = 0;           // after snapping
   std::uint64_t outside = 0;             // entirely outside the view volume
+  std::uint64_t non_finite = 0;          // a vertex with NaN or Inf clip coordinates: dropped
   std::uint64_t clipped = 0;             // input triangles that needed clipping
   std::uint64_t triangles_out = 0;       // screen triangles (after clipping, culling)
 };
