@@ -91,13 +91,10 @@ void check_geometry(const Scene& scene, const ScreenGeometry& g, Method method) 
   auto fail = [](const std::string& what) { throw std::invalid_argument("render_reference: " + what); };
   if (g.width < 1 || g.height < 1) fail("empty screen");
   const std::size_t nv = g.xy.size();
-  // The guard band keeps coordinates within 14 integer bits + sign; 2^24 leaves the int64 edge
-  // functions far from overflow.
+  // The guard band keeps the vertices of screen triangles within 14 integer bits + sign; 2^24 leaves
+  // the int64 edge functions far from overflow. (Scene vertices that clipping cut away may lie
+  // anywhere; no triangle uses them.)
   constexpr int kCoordLimit = 1 << 24;
-  for (const glm::ivec2& v : g.xy) {
-    if (std::abs(i64(v.x)) > kCoordLimit || std::abs(i64(v.y)) > kCoordLimit)
-      fail("vertex far outside the guard band");
-  }
   if (g.depth.size() != nv || g.inv_w.size() != nv) fail("per-vertex depth or 1/w missing");
   if (g.world.size() != nv || g.normal.size() != nv) fail("exact shading needs world positions and normals");
   if (method == Method::gouraud && g.color.size() != nv) fail("gouraud needs a colour per vertex");
@@ -108,6 +105,9 @@ void check_geometry(const Scene& scene, const ScreenGeometry& g, Method method) 
     const glm::uvec3 idx = g.triangles[t];
     if (idx.x >= nv || idx.y >= nv || idx.z >= nv)
       fail("triangle " + std::to_string(t) + " indexes no vertex");
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(i64(g.xy[idx[k]].x)) > kCoordLimit || std::abs(i64(g.xy[idx[k]].y)) > kCoordLimit)
+        fail("triangle " + std::to_string(t) + " has a vertex far outside the guard band");
     if (g.material[t] >= scene.materials.size()) fail("triangle " + std::to_string(t) + " has no material");
   }
 }

@@ -11,6 +11,8 @@
 #include "parashade/geometry_stage.hpp"
 #include "parashade/lighting.hpp"
 #include "parashade/parallel.hpp"
+#include "parashade/reference.hpp"
+#include "parashade/shapes.hpp"
 
 namespace parashade {
 namespace {
@@ -152,6 +154,33 @@ TEST(GeometryStage, TrianglesBeyondTheGuardBandAreClippedToIt) {
       EXPECT_GE(g.xy[t[k]].x, -100 * 256 - 1);
       EXPECT_LE(g.xy[t[k]].x, 200 * 256 + 1);
     }
+}
+
+TEST(GeometryStage, CameraInsideALargeSphereSeesItsInsideWithinTheGuardBand) {
+  // Many scene vertices lie far outside the guard band (behind or beside the camera); the triangles
+  // that reach the screen must use only clipped vertices within it, and the reference must accept them.
+  Scene s = ortho_scene(64, 48);
+  s.camera.projection = Projection::perspective;
+  s.camera.position = {0.0f, 0.0f, 0.5f};
+  s.camera.far_plane = 1e5f;
+  auto sphere = std::make_shared<Mesh>(make_sphere(32, 17));
+  Object o;
+  o.mesh = sphere;
+  o.model = glm::scale(glm::mat4(1.0f), glm::vec3(1e4f));
+  s.objects.push_back(o);
+  ScreenGeometry g;
+  build_screen_geometry(s, {Method::gouraud, true}, g);
+  EXPECT_GT(g.stats.clipped, 0u);
+  ASSERT_GT(g.triangles.size(), 0u);
+  for (const auto& t : g.triangles)
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_LE(std::abs(g.xy[t[k]].x), 3 * 64 * 256);
+      EXPECT_LE(std::abs(g.xy[t[k]].y), 3 * 48 * 256);
+    }
+  const ReferenceImage r = render_reference(s, g, Method::gouraud);
+  std::size_t covered = 0;
+  for (auto c : r.covered) covered += c;
+  EXPECT_EQ(covered, std::size_t(64 * 48)) << "inside a closed sphere every pixel sees it";
 }
 
 TEST(GeometryStage, NonFiniteAndOutsideTrianglesAreDroppedAndCounted) {
