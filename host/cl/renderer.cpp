@@ -101,15 +101,25 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
   t.geometry_ms = ms_since(t0);
   s.geometry = geometry_.stats;
 
+  // Every blocking OpenCL call costs a round trip to the device's threads (~60 us on PoCL here), so the
+  // three input buffers are mapped together: the tile list at its current capacity, since binning's
+  // size is known only later (it is mapped again in the rare frame it must grow).
   t0 = Clock::now();
   const std::size_t n = geometry_.triangles.size();
-  const std::size_t tri_bytes = n * sizeof(TriangleGeometry), attr_bytes = n * attribute_floats(method) * sizeof(float);
+  const std::size_t tri_bytes = std::max<std::size_t>(64, n * sizeof(TriangleGeometry));
+  const std::size_t attr_bytes = std::max<std::size_t>(64, n * attribute_floats(method) * sizeof(float));
   ensure(tris_, tris_cap_, tri_bytes, CL_MEM_READ_ONLY);
   ensure(attrs_, attrs_cap_, attr_bytes, CL_MEM_READ_ONLY);
+  ensure(tile_tris_, list_cap_, std::max<std::size_t>(64, 2 * n * sizeof(std::uint32_t)), CL_MEM_READ_ONLY);
+  std::vector<cl::Event> mapped(3);
   auto* tri_ptr = static_cast<TriangleGeometry*>(
-      q.enqueueMapBuffer(tris_, CL_TRUE, CL_MAP_WRITE_INVALIDATE_REGION, 0, std::max<std::size_t>(tri_bytes, 64)));
+      q.enqueueMapBuffer(tris_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, tri_bytes, nullptr, &mapped[0]));
   auto* attr_ptr = static_cast<float*>(
-      q.enqueueMapBuffer(attrs_, CL_TRUE, CL_MAP_WRITE_INVALIDATE_REGION, 0, std::max<std::size_t>(attr_bytes, 64)));
+      q.enqueueMapBuffer(attrs_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, attr_bytes, nullptr, &mapped[1]));
+  std::size_t list_mapped = list_cap_;
+  auto* list_ptr = static_cast<std::uint32_t*>(
+      q.enqueueMapBuffer(tile_tris_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, list_mapped, nullptr, &mapped[2]));
+  cl::Event::waitForEvents(mapped);
   s.triangles_without_pixels = setup_triangles(geometry_, method, tri_ptr, attr_ptr).without_pixels;
   q.enqueueUnmapMemObject(attrs_, attr_ptr);
   t.setup_ms = ms_since(t0);
@@ -120,10 +130,13 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
   const std::size_t start_bytes = start.size() * sizeof(std::uint32_t);
   const std::size_t list_bytes = binner_.entries() * sizeof(std::uint32_t);
   ensure(tile_start_, start_cap_, start_bytes, CL_MEM_READ_ONLY);
-  ensure(tile_tris_, list_cap_, list_bytes, CL_MEM_READ_ONLY);
   q.enqueueWriteBuffer(tile_start_, CL_FALSE, 0, start_bytes, start.data());
-  auto* list_ptr = static_cast<std::uint32_t*>(
-      q.enqueueMapBuffer(tile_tris_, CL_TRUE, CL_MAP_WRITE_INVALIDATE_REGION, 0, std::max<std::size_t>(list_bytes, 64)));
+  if (list_bytes > list_mapped) {
+    q.enqueueUnmapMemObject(tile_tris_, list_ptr);
+    ensure(tile_tris_, list_cap_, list_bytes, CL_MEM_READ_ONLY);
+    list_ptr = static_cast<std::uint32_t*>(
+        q.enqueueMapBuffer(tile_tris_, CL_TRUE, CL_MAP_WRITE_INVALIDATE_REGION, 0, list_bytes));
+  }
   binner_.fill(list_ptr);
   q.enqueueUnmapMemObject(tile_tris_, list_ptr);
   q.enqueueUnmapMemObject(tris_, tri_ptr);
@@ -137,12 +150,28 @@ int Renderer::work_items(int tiles) const {
   return std::max(1, std::min(tiles, wanted));
 }
 
+Renderer::~Renderer() {
+  try {
+    release_frame();
+    device_.queue().finish();
+  } catch (...) {  // nothing sensible to do while tearing down
+  }
+}
+
+void Renderer::release_frame() {
+  if (mapped_rgba_) {
+    device_.queue().enqueueUnmapMemObject(out_rgba_, mapped_rgba_);
+    mapped_rgba_ = nullptr;
+  }
+}
+
 const Frame& Renderer::render(const Scene& scene) {
   Frame& frame = frame_;
   FrameTimings& t = frame.timings;
   t = FrameTimings{};
   frame.stats = FrameStats{};
   try {
+    release_frame();  // the previous frame's image stays mapped until now
     const auto frame_start = Clock::now();
     prepare(scene, t, frame.stats);
     cl::CommandQueue& q = device_.queue();
@@ -161,6 +190,7 @@ const Frame& Renderer::render(const Scene& scene) {
     img.width = scene.width;
     img.height = scene.height;
     if (img.rgba.size() != pixels * 4 || img.rgba.data() != rgba_host_) {
+      q.finish();  // the old buffer's pending unmap must not outlive the memory it maps
       img.rgba.assign(pixels * 4, 0);
       rgba_host_ = img.rgba.data();
       out_rgba_ = cl::Buffer(device_.context(), CL_MEM_WRITE_ONLY | CL_MEM_USE_HOST_PTR, pixels * 4, rgba_host_);
@@ -189,32 +219,37 @@ const Frame& Renderer::render(const Scene& scene) {
     kernel.setArg(11, cl_int(scene.height));
     kernel.setArg(12, out_rgba_);
     kernel.setArg(13, out_float_);
+    // The kernel, then the map that makes the frame valid in the image's memory (on a CPU device the
+    // kernel wrote it there already): one wait for both. The frame stays mapped until the next render.
     auto t0 = Clock::now();
-    cl::Event done;
+    cl::Event done, mapped;
     q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(std::size_t(work_items(frame.stats.tiles))),
                            cl::NDRange(1), nullptr, &done);
-    done.wait();
+    void* rgba = q.enqueueMapBuffer(out_rgba_, CL_FALSE, CL_MAP_READ, 0, pixels * 4, nullptr, &mapped);
+    const float* planar = nullptr;
+    cl::Event float_mapped;
+    if (options_.float_output)
+      planar = static_cast<const float*>(
+          q.enqueueMapBuffer(out_float_, CL_FALSE, CL_MAP_READ, 0, 3 * pixels * sizeof(float), nullptr, &float_mapped));
+    mapped.wait();
+    mapped_rgba_ = rgba;
     t.launch_ms = ms_since(t0);
     t.kernel_ms = event_ms(done);
-
-    // Read-back: mapping makes the frame valid in the image's own memory (on a CPU device the kernel
-    // wrote it there already; a device with its own memory copies it here).
     t0 = Clock::now();
-    void* mapped = q.enqueueMapBuffer(out_rgba_, CL_TRUE, CL_MAP_READ, 0, pixels * 4);
-    if (mapped != rgba_host_)
-      std::memcpy(img.rgba.data(), mapped, pixels * 4);  // the spec says it is the host pointer; be safe
-    q.enqueueUnmapMemObject(out_rgba_, mapped);
+    if (rgba != rgba_host_)
+      std::memcpy(img.rgba.data(), rgba, pixels * 4);  // the spec says it is the host pointer; be safe
     img.rgb_float.clear();
     if (options_.float_output) {
-      const auto* f = static_cast<const float*>(
-          q.enqueueMapBuffer(out_float_, CL_TRUE, CL_MAP_READ, 0, 3 * pixels * sizeof(float)));
+      float_mapped.wait();
       img.rgb_float.resize(pixels * 3);
       for (std::size_t p = 0; p < pixels; ++p)
-        for (int c = 0; c < 3; ++c) img.rgb_float[p * 3 + c] = f[c * pixels + p];
-      q.enqueueUnmapMemObject(out_float_, const_cast<float*>(f));
+        for (int c = 0; c < 3; ++c) img.rgb_float[p * 3 + c] = planar[c * pixels + p];
+      q.enqueueUnmapMemObject(out_float_, const_cast<float*>(planar));
     }
-    q.finish();
-    t.readback_ms = ms_since(t0);
+    // Read-back: from the kernel's end to the frame in host memory (device clock), plus host copies.
+    const auto kernel_end = done.getProfilingInfo<CL_PROFILING_COMMAND_END>();
+    const auto map_end = mapped.getProfilingInfo<CL_PROFILING_COMMAND_END>();
+    t.readback_ms = double(map_end > kernel_end ? map_end - kernel_end : 0) * 1e-6 + ms_since(t0);
     t.total_ms = ms_since(frame_start);
   } catch (const cl::Error&) {
     rethrow_cl_error("rendering on '" + device_.info().name + "'");

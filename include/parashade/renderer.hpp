@@ -49,6 +49,9 @@ struct Frame {
 class Renderer {
  public:
   Renderer(Device& device, RenderOptions options);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
   // Renders one frame. The result stays valid until the next render() (its memory is reused).
   const Frame& render(const Scene& scene);
   // Per pixel (row-major, width x height), how many triangles cover its centre, ignoring depth:
@@ -62,6 +65,7 @@ class Renderer {
 
  private:
   void prepare(const Scene& scene, FrameTimings& t, FrameStats& s);  // geometry, setup, binning
+  void release_frame();  // unmaps the last frame's image
   cl::Buffer& ensure(cl::Buffer& buffer, std::size_t& capacity, std::size_t bytes, cl_mem_flags flags);
 
   Device& device_;
@@ -70,6 +74,7 @@ class Renderer {
   Frame frame_;
   Binner binner_;
   cl::Buffer tris_, attrs_, tile_start_, tile_tris_, lights_, materials_, out_rgba_, out_float_, counts_;
+  void* mapped_rgba_ = nullptr;   // the last frame's image, mapped for the host until the next render
   void* rgba_host_ = nullptr;       // the memory out_rgba_ was created on (frame_.image.rgba)
   std::size_t tris_cap_ = 0, attrs_cap_ = 0, start_cap_ = 0, list_cap_ = 0, lights_cap_ = 0, materials_cap_ = 0,
               float_cap_ = 0, counts_cap_ = 0;
