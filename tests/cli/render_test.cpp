@@ -1,6 +1,7 @@
 // Good renders: exit 0, an image of the asked size read back from disk with the scene's content where
 // it can be known without the renderer (background in the corners, a grey object in the middle), and a
 // report with the fields the README promises.
+#include <cmath>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -118,6 +119,30 @@ TEST_F(CliRender, OutputWithoutFolderGoesToTheWorkingDirectory) {
   ASSERT_TRUE(succeeds(run_parashade(args, out_dir())));
   EXPECT_EQ(out_entries(), std::vector<std::string>{"plain.png"});
   EXPECT_EQ(read_image(out_dir() / "plain.png").width, 64);
+}
+
+// --float with an EXR keeps the unclamped float values: each matches the 8-bit image of the same
+// render within its rounding (half a level), and the values are not all whole levels.
+TEST_F(CliRender, FloatOutputToExrMatchesTheEightBitImage) {
+  const auto scene = input("ball.json", sphere_scene());
+  ASSERT_TRUE(succeeds(render(scene, {"--float"})));
+  const RenderedImage png = read_image(image());
+  const std::filesystem::path exr = out_dir() / "image.exr";
+  std::vector<std::string> args = render_args(scene, {"--float"}, ErrorFigures::skip);
+  for (std::size_t i = 0; i + 1 < args.size(); ++i)
+    if (args[i] == "-o") args[i + 1] = exr.string();
+  ASSERT_TRUE(succeeds(run_parashade(args)));
+  const RenderedImage f = read_image(exr);
+  ASSERT_EQ(f.width, png.width);
+  ASSERT_EQ(f.rgb_float.size(), std::size_t(3) * f.width * f.height);
+  std::size_t fractional = 0;
+  for (std::size_t p = 0; p < std::size_t(f.width) * f.height; ++p)
+    for (int c = 0; c < 3; ++c) {
+      const float v = f.rgb_float[3 * p + c], level = png.rgba[4 * p + c];
+      if (v >= 0.0f && v <= 255.0f) EXPECT_LE(std::abs(v - level), 0.5f + 1e-3f) << "pixel " << p;
+      fractional += std::abs(v - std::round(v)) > 1e-3f;
+    }
+  EXPECT_GT(fractional, 100u) << "the EXR should hold the unrounded values";
 }
 
 class CliMethod : public CliTest, public ::testing::WithParamInterface<const char*> {};
