@@ -127,7 +127,7 @@ class Assembler {
         ++out.stats.outside;
         continue;
       }
-      const glm::vec3 flat = needs_.flat ? flat_value(obj.material, tri) : glm::vec3(0.0f);
+      FlatValue flat{this, obj.material, tri};
       if ((o0 | o1 | o2) == 0) {
         emit(tri, obj.material, flat, out);
       } else {
@@ -138,6 +138,19 @@ class Assembler {
   }
 
  private:
+  // Flat: the triangle's value, computed when its first (sub-)triangle survives culling, then reused.
+  struct FlatValue {
+    const Assembler* assembler;
+    std::uint32_t material;
+    glm::uvec3 tri;
+    bool known = false;
+    glm::vec3 value{0.0f};
+    glm::vec3 get() {
+      if (!known) value = assembler->flat_value(material, tri), known = true;
+      return value;
+    }
+  };
+
   glm::vec3 flat_value(std::uint32_t material, glm::uvec3 tri) const {
     const glm::vec3 a = g_.world[tri.x], b = g_.world[tri.y], c = g_.world[tri.z];
     glm::vec3 n = glm::cross(b - a, c - a);
@@ -154,7 +167,7 @@ class Assembler {
     return (v & kNewVertex) ? out.new_snapped[v & ~kNewVertex].xy : g_.xy[v];
   }
 
-  void emit(glm::uvec3 tri, std::uint32_t material, glm::vec3 flat, ChunkOutput& out) const {
+  void emit(glm::uvec3 tri, std::uint32_t material, FlatValue& flat, ChunkOutput& out) const {
     const glm::i64vec2 p0(xy_of(tri.x, out)), p1(xy_of(tri.y, out)), p2(xy_of(tri.z, out));
     const std::int64_t area2 = (p1.x - p0.x) * (p2.y - p0.y) - (p1.y - p0.y) * (p2.x - p0.x);
     if (area2 == 0) {
@@ -172,7 +185,7 @@ class Assembler {
         if (!(v & kNewVertex)) __atomic_store_n(&used_[v], std::uint8_t(1), __ATOMIC_RELAXED);  // same value from any thread
     out.triangles.push_back(tri);
     out.material.push_back(material);
-    if (needs_.flat) out.flat_color.push_back(flat);
+    if (needs_.flat) out.flat_color.push_back(flat.get());
   }
 
   ClipVertex clip_vertex(std::uint32_t v, const VertexSource& src) const {
@@ -200,7 +213,7 @@ class Assembler {
     return r;
   }
 
-  void clip_and_emit(glm::uvec3 tri, std::uint8_t planes, std::uint32_t material, glm::vec3 flat,
+  void clip_and_emit(glm::uvec3 tri, std::uint8_t planes, std::uint32_t material, FlatValue& flat,
                      const VertexSource& src, ChunkOutput& out) const {
     // Sutherland–Hodgman against each plane the triangle reaches beyond; at most 3 + 6 vertices.
     ClipVertex buffer_a[12], buffer_b[12];
