@@ -57,9 +57,11 @@ std::size_t attribute_floats(Method method) {
 }
 
 double constant_span_increment(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double ia, double ib, double ic) {
-  const double dy_bc = c.y - b.y, dy_ac = c.y - a.y, dx_ac = c.x - a.x, dx_bc = c.x - b.x;
-  return ((ic - ia) * dy_bc - (ic - ib) * dy_ac) / (dx_ac * dy_bc - dx_bc * dy_ac);
+  return ConstantSpanIncrement(a, b, c)(ia, ib, ic);
 }
+
+ConstantSpanIncrement::ConstantSpanIncrement(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c)
+    : dy_bc(c.y - b.y), dy_ac(c.y - a.y), inv_denominator(1.0 / ((c.x - a.x) * (c.y - b.y) - (c.x - b.x) * (c.y - a.y))) {}
 
 double constant_span_increment_longest_span(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double ia, double ib,
                                             double ic) {
@@ -117,7 +119,8 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
       r.edge_c[e] = dx * (cy - vi.y) - dy * (cx - vi.x) - edge_bias(glm::ivec2(vi), glm::ivec2(vj));
       r.edge_a[e] = ps_int(-dy * kSubpixel);
       r.edge_b[e] = ps_int(dx * kSubpixel);
-      r.edge_inv_a[e] = r.edge_a[e] != 0 ? 1.0f / float(r.edge_a[e]) : 0.0f;
+      // Only the 64-bit span search of large triangles reads it (kernels/span.h).
+      r.edge_inv_a[e] = (!small && r.edge_a[e] != 0) ? 1.0f / float(r.edge_a[e]) : 0.0f;
     }
 
     const glm::dvec2 s[3] = {glm::dvec2(p[0]) / double(kSubpixel), glm::dvec2(p[1]) / double(kSubpixel),
@@ -141,10 +144,11 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
       }
       case Method::gouraud: {
         Plane ch[3];
+        const ConstantSpanIncrement span_increment(s[0], s[1], s[2]);
         for (int k = 0; k < 3; ++k) {
           const double ia = g.color[vid[0]][k], ib = g.color[vid[1]][k], ic = g.color[vid[2]][k];
           ch[k] = plane(ia, ib, ic);
-          ch[k].ddx = constant_span_increment(s[0], s[1], s[2], ia, ib, ic);  // dI_G, once per triangle
+          ch[k].ddx = span_increment(ia, ib, ic);  // dI_G, once per triangle (formula 2.16)
         }
         store(attr, 0, ch[0], ch[1], ch[2]);
         attr[9] = attr[10] = attr[11] = 0.0f;

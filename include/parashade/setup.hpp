@@ -27,6 +27,15 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
 // The constant span increment dI_G (SEEDS formula 2.16) for vertex values ia, ib, ic at screen
 // positions a, b, c (pixels): [(Ic-Ia)*dy_BC - (Ic-Ib)*dy_AC] / [dx_AC*dy_BC - dx_BC*dy_AC].
 double constant_span_increment(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double ia, double ib, double ic);
+// Formula (2.16) as setup evaluates it: the denominator depends only on the triangle, so its
+// reciprocal is computed once and each channel costs a numerator and a product.
+struct ConstantSpanIncrement {
+  ConstantSpanIncrement(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c);
+  double operator()(double ia, double ib, double ic) const {
+    return ((ic - ia) * dy_bc - (ic - ib) * dy_ac) * inv_denominator;
+  }
+  double dy_bc, dy_ac, inv_denominator;
+};
 // The same increment by formula (2.15): along the longest span through the middle vertex B.
 double constant_span_increment_longest_span(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double ia, double ib,
                                             double ic);
