@@ -5,28 +5,45 @@
  * its rows in the tile at once (row_spans, rows as vector lanes), then shades each row segment of VEC
  * pixels as vector lanes. Depth and colour of the tile stay in private memory and are written once,
  * so there is no read-modify-write of the frame and the result is deterministic.
- * The method (method_*.h, chosen by the host) supplies shade_pixels(). */
+ * The method (method_*.h, chosen by the host) supplies shade_pixels().
+ * UNIT_PATH = 1 (Gouraud through a modeled unit, method_gouraud_units.h): every triangle is walked by
+ * whole spans, each span's registers come from its full extent, and the tile that holds a span's
+ * left pixel counts its modeled clocks into tile_clocks (spans, pixels, clocks per tile). */
 #include "common.h"
 #include "triangle_record.h"
 #include "span.h"
+#include "fixed_point.h"
+#if UNIT_PATH
+#include "method_gouraud_units.h"
+#endif
 
 #define TILE_VECTORS (TILE * SEGMENTS)
 
-/* One row segment of VEC pixels (columns rel from the triangle's x0, row dy from its y0; `inside` marks
- * covered lanes): depth test, shade, keep. */
+/* Depth test of one row segment of VEC pixels (columns rel from the triangle's x0, row dy from its y0;
+ * `inside` marks covered lanes): the lanes that pass, their depth kept. */
+INLINE intV depth_test(__global const TriangleGeometry* t, int dy, floatV frel, intV inside, floatV* depth) {
+  const floatV z = (floatV)(t->z_ref + t->z_ddy * (float)dy) + t->z_ddx * frel;
+  const intV pass = inside & isless(z, *depth);
+  *depth = select(*depth, z, pass);
+  return pass;
+}
+
+INLINE void keep(intV pass, floatV sr, floatV sg, floatV sb, floatV* cr, floatV* cg, floatV* cb) {
+  *cr = select(*cr, sr, pass);
+  *cg = select(*cg, sg, pass);
+  *cb = select(*cb, sb, pass);
+}
+
+/* One row segment of VEC pixels: depth test, shade, keep. */
 INLINE void shade_segment(__global const TriangleGeometry* t, __global const float* attr, int dy, intV rel,
                           intV inside, int slot, floatV* depth, floatV* cr, floatV* cg, floatV* cb,
                           __constant float4* lights, __constant float4* materials, float4 viewer) {
   const floatV frel = convert_floatV(rel);
-  const floatV z = (floatV)(t->z_ref + t->z_ddy * (float)dy) + t->z_ddx * frel;
-  const intV pass = inside & isless(z, depth[slot]);
+  const intV pass = depth_test(t, dy, frel, inside, &depth[slot]);
   if (!any(pass)) return;
   floatV sr, sg, sb;
   shade_pixels(attr, dy, frel, &sr, &sg, &sb, lights, materials, viewer);
-  depth[slot] = select(depth[slot], z, pass);
-  cr[slot] = select(cr[slot], sr, pass);
-  cg[slot] = select(cg[slot], sg, pass);
-  cb[slot] = select(cb[slot], sb, pass);
+  keep(pass, sr, sg, sb, &cr[slot], &cg[slot], &cb[slot]);
 }
 
 __kernel __attribute__((reqd_work_group_size(1, 1, 1)))
@@ -34,17 +51,27 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
                   __global const uint* tile_start, __global const uint* tile_tris,
                   __constant float4* lights, __constant float4* materials, float4 viewer, float4 background,
                   int tiles_x, int num_tiles, int width, int height, __global uint* out_rgba,
-                  __global float* out_float) {
+                  __global float* out_float, __global const FixedPlanes* fixed, __global ulong* tile_clocks) {
   for (int tile = get_global_id(0); tile < num_tiles; tile += get_global_size(0)) {
   const int tile_x = (tile % tiles_x) * TILE, tile_y = (tile / tiles_x) * TILE;
 
   floatV depth[TILE_VECTORS], cr[TILE_VECTORS], cg[TILE_VECTORS], cb[TILE_VECTORS];
   for (int i = 0; i < TILE_VECTORS; ++i) {
     depth[i] = (floatV)INFINITY;
+#if UNIT_PATH && FIXED
+    /* Colour holds span registers (their bits): the background as a register value. */
+    cr[i] = as_floatV((intV)(int)(background.x * (1 << FRAC_BITS)));
+    cg[i] = as_floatV((intV)(int)(background.y * (1 << FRAC_BITS)));
+    cb[i] = as_floatV((intV)(int)(background.z * (1 << FRAC_BITS)));
+#else
     cr[i] = (floatV)background.x;
     cg[i] = (floatV)background.y;
     cb[i] = (floatV)background.z;
+#endif
   }
+#if UNIT_PATH
+  ulong spans = 0, span_pixels = 0, clocks = 0;
+#endif
   const intV lane = LANE_INDEX;
   int span_lo[VEC], span_hi[VEC];
 
@@ -57,6 +84,50 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
     const int lo = max(tile_x, x0) - x0, hi = min(tile_x + TILE - 1, (int)t->x1) - x0;
     if (row_first > row_last || lo > hi) continue;
     __global const float* attr = attrs + (size_t)ti * ATTR_FLOATS;
+#if UNIT_PATH
+    /* Every triangle by whole spans: a unit's registers depend on where its span starts and ends. A span
+     * is counted (modeled clocks) by the tile that holds its left pixel, so each is counted once. */
+    for (int block = row_first; block <= row_last; block += VEC) {
+      intV lo_v, hi_v;
+      row_spans(t, lane + (block - y0), &lo_v, &hi_v, 0, t->x1 - x0);
+      vstoreV(lo_v, 0, span_lo);
+      vstoreV(hi_v, 0, span_hi);
+      const int rows = min(VEC, row_last - block + 1);
+      for (int j = 0; j < rows; ++j) {
+        const int xl = span_lo[j], xr = span_hi[j];
+        if (xl > xr) continue;
+        const int length = xr - xl + 1;
+        if (xl + x0 >= tile_x && xl + x0 < tile_x + TILE) {
+          spans += 1;
+          span_pixels += (ulong)length;
+          clocks += (ulong)(SPAN_LOAD_CLOCKS + span_clocks(UNIT_KIND, UNIT_LANES, length));
+        }
+        const int sl = max(xl, lo), sr = min(xr, hi);
+        if (sl > sr) continue;
+        const int py = block + j, dy = py - y0;
+#if FIXED
+        SpanRegisters regs;
+        load_span_registers(&fixed[ti], xl, xr, dy, &regs);
+#endif
+        for (int s = (sl + x0 - tile_x) / VEC; s <= (sr + x0 - tile_x) / VEC; ++s) {
+          const intV rel = lane + (tile_x + s * VEC - x0);
+          const floatV frel = convert_floatV(rel);
+          const int slot = (py - tile_y) * SEGMENTS + s;
+          const intV pass = depth_test(t, dy, frel, (rel >= sl) & (rel <= sr), &depth[slot]);
+          if (!any(pass)) continue;
+#if FIXED
+          const intV i = rel - xl;
+          keep(pass, as_floatV(unit_register(&regs, 0, i, length)), as_floatV(unit_register(&regs, 1, i, length)),
+               as_floatV(unit_register(&regs, 2, i, length)), &cr[slot], &cg[slot], &cb[slot]);
+#else
+          floatV sr_, sg_, sb_;
+          shade_pixels(attr, dy, frel, &sr_, &sg_, &sb_, lights, materials, viewer);
+          keep(pass, sr_, sg_, sb_, &cr[slot], &cg[slot], &cb[slot]);
+#endif
+        }
+      }
+    }
+#else
     const int seg_first = (lo + x0 - tile_x) / VEC, seg_last = (hi + x0 - tile_x) / VEC;
     if (t->flags & TRIANGLE_SMALL) {
       /* Few rows: test each pixel's edge functions directly. */
@@ -88,6 +159,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
         }
       }
     }
+#endif
   }
 
   /* The frame is width x height exactly (no padding), so the host can use it without a copy. */
@@ -96,7 +168,16 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
     if (y >= height || x >= width) continue;
     const size_t at = (size_t)y * width + x;
     const uintV covered = convert_uintV(isless(depth[i], (floatV)INFINITY)) & 0xFF000000u;
+#if UNIT_PATH && FIXED
+    const uintV rgba = register_levels(as_intV(cr[i])) | (register_levels(as_intV(cg[i])) << 8) |
+                       (register_levels(as_intV(cb[i])) << 16) | covered;
+    /* The float image holds the register values in levels (exact while REG_BITS <= 24). */
+    cr[i] = convert_floatV(as_intV(cr[i])) * (1.0f / (1 << FRAC_BITS));
+    cg[i] = convert_floatV(as_intV(cg[i])) * (1.0f / (1 << FRAC_BITS));
+    cb[i] = convert_floatV(as_intV(cb[i])) * (1.0f / (1 << FRAC_BITS));
+#else
     const uintV rgba = to_level(cr[i]) | (to_level(cg[i]) << 8) | (to_level(cb[i]) << 16) | covered;
+#endif
     if (x + VEC <= width) {
       vstoreV(rgba, 0, out_rgba + at);
     } else {
@@ -117,5 +198,10 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
     }
 #endif
   }
+#if UNIT_PATH
+  tile_clocks[3 * tile] = spans;
+  tile_clocks[3 * tile + 1] = span_pixels;
+  tile_clocks[3 * tile + 2] = clocks;
+#endif
   }
 }

@@ -61,7 +61,13 @@ std::string kernel_options(const Scene& s, const RenderOptions& o) {
   std::ostringstream opt;
   opt << "-D TILE=" << o.tile_size << " -D NUM_LIGHTS=" << s.lights.size() << " -D POINT_LIGHTS=" << point_mask
       << " -D LOCAL_VIEWER=" << (needs_local_viewer(s) ? 1 : 0) << " -D NEED_POSITION=" << (need_position ? 1 : 0)
-      << " -D OUTPUT_FLOAT=" << (o.float_output ? 1 : 0);
+      << " -D OUTPUT_FLOAT=" << (o.float_output ? 1 : 0) << " -D UNIT_PATH=" << (o.unit_path() ? 1 : 0);
+  if (o.unit_path()) {
+    const UnitConfig u = o.unit();
+    opt << " -D UNIT_KIND=" << int(u.kind) << " -D UNIT_LANES=" << u.lanes << " -D UNIT_OWN_STEP=" << (u.own_step ? 1 : 0)
+        << " -D FIXED=" << (o.arith.fixed ? 1 : 0) << " -D FRAC_BITS=" << o.arith.frac_bits
+        << " -D REG_BITS=" << o.arith.width();
+  }
   return opt.str();
 }
 
@@ -76,6 +82,9 @@ double event_ms(const cl::Event& e) {
 Renderer::Renderer(Device& device, RenderOptions options) : device_(device), options_(options) {
   if (options_.tile_size != 16 && options_.tile_size != 32 && options_.tile_size != 64)
     throw InputError("tile size " + std::to_string(options_.tile_size) + " is not supported (16, 32 or 64)");
+  if (options_.unit_path() && options_.method != Method::gouraud)
+    throw UsageError(std::string("the shading units (--units, --arith fixed) model Gouraud's code interpolators; method '") +
+                     method_name(options_.method) + "' has no unit model yet");
 }
 
 cl::Buffer& Renderer::ensure(cl::Buffer& buffer, std::size_t& capacity, std::size_t bytes, cl_mem_flags flags) {
@@ -119,8 +128,16 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
   std::size_t list_mapped = list_cap_;
   auto* list_ptr = static_cast<std::uint32_t*>(
       q.enqueueMapBuffer(tile_tris_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, list_mapped, nullptr, &mapped[2]));
+  FixedPlanes* fixed_ptr = nullptr;
+  const std::size_t fixed_bytes = std::max<std::size_t>(64, n * sizeof(FixedPlanes));
+  if (options_.arith.fixed) {
+    ensure(fixed_, fixed_cap_, fixed_bytes, CL_MEM_READ_ONLY);
+    fixed_ptr = static_cast<FixedPlanes*>(
+        q.enqueueMapBuffer(fixed_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, fixed_bytes, nullptr, &mapped.emplace_back()));
+  }
   cl::Event::waitForEvents(mapped);
-  s.triangles_without_pixels = setup_triangles(geometry_, method, tri_ptr, attr_ptr).without_pixels;
+  s.triangles_without_pixels = setup_triangles(geometry_, method, tri_ptr, attr_ptr, fixed_ptr).without_pixels;
+  if (fixed_ptr) q.enqueueUnmapMemObject(fixed_, fixed_ptr);
   q.enqueueUnmapMemObject(attrs_, attr_ptr);
   t.setup_ms = ms_since(t0);
 
@@ -219,6 +236,12 @@ const Frame& Renderer::render(const Scene& scene) {
     kernel.setArg(11, cl_int(scene.height));
     kernel.setArg(12, out_rgba_);
     kernel.setArg(13, out_float_);
+    // Unused by the kernel off the unit path (and the planes without fixed point): a small placeholder.
+    if (!options_.arith.fixed) ensure(fixed_, fixed_cap_, 64, CL_MEM_READ_ONLY);
+    const std::size_t clock_bytes = options_.unit_path() ? 3 * std::size_t(frame.stats.tiles) * sizeof(cl_ulong) : 64;
+    ensure(tile_clocks_, tile_clocks_cap_, clock_bytes, CL_MEM_WRITE_ONLY);
+    kernel.setArg(14, fixed_);
+    kernel.setArg(15, tile_clocks_);
     // The kernel, then the map that makes the frame valid in the image's memory (on a CPU device the
     // kernel wrote it there already): one wait for both. The frame stays mapped until the next render.
     auto t0 = Clock::now();
@@ -231,8 +254,23 @@ const Frame& Renderer::render(const Scene& scene) {
     if (options_.float_output)
       planar = static_cast<const float*>(
           q.enqueueMapBuffer(out_float_, CL_FALSE, CL_MAP_READ, 0, 3 * pixels * sizeof(float), nullptr, &float_mapped));
+    cl::Event clocks_mapped;
+    const cl_ulong* tile_clocks = nullptr;
+    if (options_.unit_path())
+      tile_clocks = static_cast<const cl_ulong*>(
+          q.enqueueMapBuffer(tile_clocks_, CL_FALSE, CL_MAP_READ, 0, clock_bytes, nullptr, &clocks_mapped));
     mapped.wait();
     mapped_rgba_ = rgba;
+    if (tile_clocks) {
+      clocks_mapped.wait();
+      ModeledClocks& c = frame.stats.clocks;
+      for (int tile = 0; tile < frame.stats.tiles; ++tile) {
+        c.spans += tile_clocks[3 * tile];
+        c.pixels += tile_clocks[3 * tile + 1];
+        c.clocks += tile_clocks[3 * tile + 2];
+      }
+      q.enqueueUnmapMemObject(tile_clocks_, const_cast<cl_ulong*>(tile_clocks));
+    }
     t.launch_ms = ms_since(t0);
     t.kernel_ms = event_ms(done);
     t0 = Clock::now();

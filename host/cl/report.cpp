@@ -48,6 +48,10 @@ nlohmann::json to_json(const FrameStats& s) {
           {"tiles", s.tiles}};
 }
 
+nlohmann::json to_json(const ModeledClocks& c) {
+  return {{"spans", c.spans}, {"span_pixels", c.pixels}, {"clocks", c.clocks}};
+}
+
 void write_text_atomically(const std::filesystem::path& path, const std::string& text) {
   namespace fs = std::filesystem;
   const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();

@@ -22,7 +22,7 @@ namespace parashade::cli {
 namespace {
 
 struct RenderArgs {
-  std::string scene, output, method = "gouraud", device, size, report;
+  std::string scene, output, method = "gouraud", device, size, report, units, arith = "float";
   int frames = 5, warmup = 1, tile = 16, work_items = 0;
   bool float_output = false, no_error = false, quiet = false;
 };
@@ -75,6 +75,13 @@ std::string describe(const ErrorMetrics& e) {
 
 int run_render(const RenderArgs& a) {
   const Method method = parse_method(a.method);
+  RenderOptions options;
+  options.method = method;
+  options.float_output = a.float_output;
+  options.tile_size = a.tile;
+  options.work_items = a.work_items;
+  if (!a.units.empty()) options.units = parse_units(a.units);
+  options.arith = parse_arith(a.arith);
   const auto size = parse_size(a.size);
   if (a.frames < 1) throw UsageError("--frames must be at least 1");
   if (a.warmup < 0) throw UsageError("--warmup must not be negative");
@@ -92,7 +99,7 @@ int run_render(const RenderArgs& a) {
   auto device = open_device(a.device);
   const DeviceInfo& dev = device->info();
   if (a.work_items < 0) throw UsageError("--work-items must not be negative");
-  Renderer renderer(*device, {method, a.float_output, a.tile, a.work_items});
+  Renderer renderer(*device, options);
   if (!a.quiet)
     std::cerr << "rendering " << scene.name << " (" << scene.width << "x" << scene.height << ", "
               << scene.triangle_count() << " triangles, " << method_name(method) << ") on " << dev.name << " ...\n";
@@ -143,6 +150,11 @@ int run_render(const RenderArgs& a) {
       {"mtriangle_per_s", double(frame.stats.geometry.triangles_in) / (med.total_ms * 1e3)},
       {"stats", to_json(frame.stats)},
       {"error", errors}};
+  if (options.unit_path()) {
+    report["units"] = unit_name(options.unit());
+    report["arith"] = arith_name(options.arith);
+    report["modeled_clocks"] = to_json(frame.stats.clocks);
+  }
   if (!a.report.empty()) {
     try {
       write_text_atomically(a.report, report.dump(2) + "\n");
@@ -162,6 +174,12 @@ int run_render(const RenderArgs& a) {
               med.total_ms, a.frames, a.warmup, med.geometry_ms, med.setup_ms, med.binning_ms, med.kernel_ms,
               med.readback_ms, 1e3 / med.total_ms, pixels / (med.total_ms * 1e3),
               double(frame.stats.geometry.triangles_in) / (med.total_ms * 1e3));
+  if (options.unit_path()) {
+    const ModeledClocks& c = frame.stats.clocks;
+    std::printf("unit %s, %s arithmetic: %llu modeled clocks (%llu spans, %llu span pixels, %.3f pixels per clock)\n",
+                unit_name(options.unit()).c_str(), arith_name(options.arith).c_str(), (unsigned long long)c.clocks,
+                (unsigned long long)c.spans, (unsigned long long)c.pixels, c.clocks ? double(c.pixels) / double(c.clocks) : 0.0);
+  }
   for (const auto& l : error_lines) std::printf("%s\n", l.c_str());
   std::printf("wrote %s%s%s\n", a.output.c_str(), a.report.empty() ? "" : " and ", a.report.c_str());
   return 0;
@@ -185,6 +203,11 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("--tile", a->tile, "Screen tile size: 16, 32 or 64")->capture_default_str();
   cmd->add_option("--work-items", a->work_items,
                   "Kernel work-items, each rendering every N-th tile (0: 16 per compute unit)")
+      ->capture_default_str();
+  cmd->add_option("--units", a->units,
+                  "Gouraud through a modeled shading unit: classic, counter, interleave:M[:own] (M = 1..16), "
+                  "segment:P (P = 2..64, power of two); reports modeled clocks");
+  cmd->add_option("--arith", a->arith, "Span register arithmetic: float, fixed (= fixed:12.12) or fixed:I.F (I >= 9, I + F <= 32)")
       ->capture_default_str();
   cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
   cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");

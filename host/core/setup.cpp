@@ -78,7 +78,13 @@ double constant_span_increment_longest_span(glm::dvec2 a, glm::dvec2 b, glm::dve
   return (i_h - B.i) / (x_h - B.p.x);
 }
 
-SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeometry* geometry, float* attributes) {
+std::int64_t to_plane_register(double levels) {
+  const double v = std::isnan(levels) ? 0.0 : std::clamp(levels, -kPlaneLimit, kPlaneLimit);
+  return std::llround(std::ldexp(v, PLANE_FRAC));
+}
+
+SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeometry* geometry, float* attributes,
+                           FixedPlanes* fixed) {
   const std::int64_t count = std::int64_t(g.triangles.size());
   const std::size_t stride = attribute_floats(method);
   const bool has_position = !g.world.empty();
@@ -103,6 +109,7 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
       r = TriangleGeometry{};
       r.x0 = 1;  // empty box
       r.x1 = 0;
+      if (fixed) fixed[t] = FixedPlanes{};
       ++empty;
       continue;
     }
@@ -119,8 +126,8 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
       r.edge_c[e] = dx * (cy - vi.y) - dy * (cx - vi.x) - edge_bias(glm::ivec2(vi), glm::ivec2(vj));
       r.edge_a[e] = ps_int(-dy * kSubpixel);
       r.edge_b[e] = ps_int(dx * kSubpixel);
-      // Only the 64-bit span search of large triangles reads it (kernels/span.h).
-      r.edge_inv_a[e] = (!small && r.edge_a[e] != 0) ? 1.0f / float(r.edge_a[e]) : 0.0f;
+      // Seeds the span search (kernels/span.h): large triangles, and all triangles on the unit path.
+      r.edge_inv_a[e] = r.edge_a[e] != 0 ? 1.0f / float(r.edge_a[e]) : 0.0f;
     }
 
     const glm::dvec2 s[3] = {glm::dvec2(p[0]) / double(kSubpixel), glm::dvec2(p[1]) / double(kSubpixel),
@@ -152,6 +159,13 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
         }
         store(attr, 0, ch[0], ch[1], ch[2]);
         attr[9] = attr[10] = attr[11] = 0.0f;
+        if (fixed) {
+          for (int k = 0; k < 3; ++k) {
+            fixed[t].ref[k] = to_plane_register(ch[k].ref);
+            fixed[t].ddx[k] = to_plane_register(ch[k].ddx);
+            fixed[t].ddy[k] = to_plane_register(ch[k].ddy);
+          }
+        }
         break;
       }
       case Method::phong: {

@@ -2,6 +2,7 @@
 // One frame on an OpenCL device: vertex stage and primitive assembly, triangle setup, binning (host,
 // "software"), then the shading kernel (the modeled hardware units), then read-back.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <CL/opencl.hpp>
@@ -12,6 +13,7 @@
 #include "parashade/method.hpp"
 #include "parashade/scene.hpp"
 #include "parashade/screen_geometry.hpp"
+#include "parashade/units.hpp"
 
 namespace parashade {
 
@@ -20,6 +22,12 @@ struct RenderOptions {
   bool float_output = false;  // also read back unclamped float RGB (for EXR and exact error figures)
   int tile_size = 16;         // screen tile edge in pixels: 16, 32 or 64
   int work_items = 0;         // kernel work-items, each rendering every G-th tile; 0: 16 per compute unit
+  // Gouraud through a modeled shading unit (units.hpp): set by `--units`, or classic with a fixed `arith`.
+  // Every triangle then goes by whole spans and the frame's modeled clocks are counted.
+  std::optional<UnitConfig> units;
+  Arithmetic arith;
+  bool unit_path() const { return units.has_value() || arith.fixed; }
+  UnitConfig unit() const { return units.value_or(UnitConfig{}); }
 };
 
 // Milliseconds. Host stages by the host clock; kernel_ms from the OpenCL profiling event.
@@ -38,6 +46,7 @@ struct FrameStats {
   std::uint64_t triangles_without_pixels = 0;
   std::uint64_t bin_entries = 0;
   int tiles = 0;
+  ModeledClocks clocks;  // on the unit path only (RenderOptions::unit_path)
 };
 
 struct Frame {
@@ -73,11 +82,13 @@ class Renderer {
   ScreenGeometry geometry_;
   Frame frame_;
   Binner binner_;
-  cl::Buffer tris_, attrs_, tile_start_, tile_tris_, lights_, materials_, out_rgba_, out_float_, counts_;
+  cl::Buffer tris_, attrs_, tile_start_, tile_tris_, lights_, materials_, out_rgba_, out_float_, counts_, fixed_,
+      tile_clocks_;
   void* mapped_rgba_ = nullptr;   // the last frame's image, mapped for the host until the next render
   void* rgba_host_ = nullptr;       // the memory out_rgba_ was created on (frame_.image.rgba)
   std::size_t tris_cap_ = 0, attrs_cap_ = 0, start_cap_ = 0, list_cap_ = 0, lights_cap_ = 0, materials_cap_ = 0,
-              float_cap_ = 0, counts_cap_ = 0;
+              float_cap_ = 0, counts_cap_ = 0, fixed_cap_ = 0,
+              tile_clocks_cap_ = 0;
 };
 
 }  // namespace parashade

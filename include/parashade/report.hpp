@@ -16,6 +16,7 @@ nlohmann::json to_json(const DeviceInfo& d);
 nlohmann::json to_json(const ErrorMetrics& m);
 nlohmann::json to_json(const FrameTimings& t);
 nlohmann::json to_json(const FrameStats& s);
+nlohmann::json to_json(const ModeledClocks& c);
 // A finite number, or null.
 nlohmann::json number_or_null(double v);
 

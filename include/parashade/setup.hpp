@@ -9,6 +9,7 @@
 
 #include "parashade/method.hpp"
 #include "parashade/screen_geometry.hpp"
+#include "fixed_point.h"
 #include "triangle_record.h"
 
 namespace parashade {
@@ -22,7 +23,16 @@ struct SetupStats {
 
 // Fills geometry[i] and attributes[i * attribute_floats(method) ...] for every screen triangle i.
 // Triangles that cannot cover a pixel centre get an empty box (x0 > x1) and are skipped by binning.
-SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeometry* geometry, float* attributes);
+// With `fixed` (Gouraud only), also fills fixed[i] with the planes in setup's fixed-point format
+// (kernels/fixed_point.h) for the fixed-point units.
+SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeometry* geometry, float* attributes,
+                           FixedPlanes* fixed = nullptr);
+
+// A plane value or increment in levels into setup's PLANE_FRAC format, rounded to nearest. Magnitudes
+// beyond kPlaneLimit levels saturate there: only slivers thinner than ~2^-14 pixel reach it, and
+// 16 * kPlaneLimit still fits the 64-bit register (interleave:16:own forms 16*dI from it).
+constexpr double kPlaneLimit = double(1 << 26);
+std::int64_t to_plane_register(double levels);
 
 // The constant span increment dI_G (SEEDS formula 2.16) for vertex values ia, ib, ic at screen
 // positions a, b, c (pixels): [(Ic-Ia)*dy_BC - (Ic-Ib)*dy_AC] / [dx_AC*dy_BC - dx_BC*dy_AC].

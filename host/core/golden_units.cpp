@@ -1,0 +1,111 @@
+#include "parashade/golden_units.hpp"
+
+#include <stdexcept>
+
+namespace parashade {
+namespace {
+
+// One W-bit adder: the carry out of the register is lost.
+struct Adder {
+  int width;
+  std::int32_t operator()(std::int32_t a, std::int32_t b) const {
+    return wrap_register(std::uint32_t(a) + std::uint32_t(b), width);
+  }
+};
+
+SpanTrace classic(const Adder& add, const SpanLoad& s) {
+  SpanTrace t;
+  std::int32_t reg = s.start;
+  for (int x = 0; x < s.length; ++x, ++t.clocks) {
+    t.values.push_back(reg);
+    reg = add(reg, s.step);
+  }
+  return t;
+}
+
+// Two code interpolators from the span's ends toward each other; on an odd length the left one
+// shades the middle pixel while the right one is blocked.
+SpanTrace counter(const Adder& add, const SpanLoad& s) {
+  SpanTrace t;
+  t.values.assign(std::size_t(s.length), 0);
+  std::int32_t left = s.start, right = s.end;
+  const std::int32_t minus_step = add(~s.step, 1);  // two's complement: the right interpolator subtracts
+  for (int a = 0, b = s.length - 1; a <= b; ++t.clocks) {
+    t.values[std::size_t(a++)] = left;
+    left = add(left, s.step);
+    if (a <= b) {
+      t.values[std::size_t(b--)] = right;
+      right = add(right, minus_step);
+    }
+  }
+  return t;
+}
+
+// M interpolators: interpolator j starts at S + j*dI (a chain of adders at load) and steps by M*dI,
+// which is M times the rounded dI (formed by adding dI M times: shifts and adds in hardware) or,
+// with own_step, rounded on its own. An interpolator whose next pixel lies past the span is blocked.
+SpanTrace interleave(const Adder& add, const SpanLoad& s, int m, bool own_step) {
+  SpanTrace t;
+  t.values.assign(std::size_t(s.length), 0);
+  std::int32_t step = 0;
+  for (int j = 0; j < m; ++j) step = add(step, s.step);
+  if (own_step) step = s.own_step;
+  std::vector<std::int32_t> reg(static_cast<std::size_t>(m));
+  reg[0] = s.start;
+  for (int j = 1; j < m; ++j) reg[std::size_t(j)] = add(reg[std::size_t(j - 1)], s.step);
+  for (int first = 0; first < s.length; first += m, ++t.clocks) {
+    for (int j = 0; j < m && first + j < s.length; ++j) {
+      t.values[std::size_t(first + j)] = reg[std::size_t(j)];
+      reg[std::size_t(j)] = add(reg[std::size_t(j)], step);
+    }
+  }
+  return t;
+}
+
+// P intensities per clock from the multiples i*dI (i = 0..P), formed once: powers of two are wired
+// shifts of dI, every other multiple one adder from a smaller one. The segment base steps by P*dI.
+SpanTrace segment(const Adder& add, int width, const SpanLoad& s, int p) {
+  SpanTrace t;
+  t.values.assign(std::size_t(s.length), 0);
+  std::vector<std::int32_t> multiple(std::size_t(p) + 1, 0);
+  for (int i = 1, power = 1; i <= p; ++i) {
+    if (i == 2 * power) power = i;
+    multiple[std::size_t(i)] = i == power ? wrap_register(std::uint32_t(s.step) << __builtin_ctz(unsigned(i)), width)
+                                          : add(multiple[std::size_t(i - power)], multiple[std::size_t(power)]);
+  }
+  std::int32_t base = s.start;
+  for (int first = 0; first < s.length; first += p, ++t.clocks) {
+    for (int i = 0; i < p && first + i < s.length; ++i)
+      t.values[std::size_t(first + i)] = add(base, multiple[std::size_t(i)]);
+    base = add(base, multiple[std::size_t(p)]);
+  }
+  return t;
+}
+
+}  // namespace
+
+SpanLoad load_span(const FixedPlanes& p, int c, int xl, int xr, int dy, const UnitConfig& unit, const Arithmetic& a) {
+  const int f = a.frac_bits, w = a.width();
+  SpanLoad s;
+  s.start = load_register(plane_value(p.ref[c], p.ddx[c], p.ddy[c], xl, dy), f, w);
+  s.end = load_register(plane_value(p.ref[c], p.ddx[c], p.ddy[c], xr, dy), f, w);
+  s.step = load_register(p.ddx[c], f, w);
+  s.own_step = load_register(std::int64_t(std::uint64_t(p.ddx[c]) * std::uint64_t(unit.lanes)), f, w);
+  s.length = xr - xl + 1;
+  return s;
+}
+
+SpanTrace run_unit(const UnitConfig& unit, const Arithmetic& a, const SpanLoad& span) {
+  if (!a.fixed) throw std::invalid_argument("golden unit models are fixed point");
+  if (span.length < 1) throw std::invalid_argument("a span has at least one pixel");
+  const Adder add{a.width()};
+  switch (unit.kind) {
+    case UnitKind::classic: return classic(add, span);
+    case UnitKind::counter: return counter(add, span);
+    case UnitKind::interleave: return interleave(add, span, unit.lanes, unit.own_step);
+    case UnitKind::segment: return segment(add, a.width(), span, unit.lanes);
+  }
+  throw std::invalid_argument("unknown unit");
+}
+
+}  // namespace parashade

@@ -1,0 +1,55 @@
+#include "parashade/units.hpp"
+
+#include <regex>
+
+#include "parashade/errors.hpp"
+
+namespace parashade {
+
+UnitConfig parse_units(const std::string& spec) {
+  const std::string valid = " (valid: classic, counter, interleave:M[:own] with M = 1..16, segment:P with P = 2, 4, ..., 64)";
+  if (spec == "classic") return {UnitKind::classic, 1, false};
+  if (spec == "counter") return {UnitKind::counter, 2, false};
+  std::smatch m;
+  if (std::regex_match(spec, m, std::regex(R"(interleave:(\d{1,3})(:own)?)"))) {
+    const int lanes = std::stoi(m[1]);
+    if (lanes < 1 || lanes > 16) throw UsageError("--units '" + spec + "': M = " + m[1].str() + " is not in 1..16");
+    return {UnitKind::interleave, lanes, m[2].matched};
+  }
+  if (std::regex_match(spec, m, std::regex(R"(segment:(\d{1,3}))"))) {
+    const int lanes = std::stoi(m[1]);
+    if (lanes < 2 || lanes > 64 || (lanes & (lanes - 1)) != 0)
+      throw UsageError("--units '" + spec + "': P = " + m[1].str() + " is not a power of two in 2..64");
+    return {UnitKind::segment, lanes, false};
+  }
+  throw UsageError("unknown unit '" + spec + "'" + valid);
+}
+
+std::string unit_name(const UnitConfig& u) {
+  switch (u.kind) {
+    case UnitKind::classic: return "classic";
+    case UnitKind::counter: return "counter";
+    case UnitKind::interleave: return "interleave:" + std::to_string(u.lanes) + (u.own_step ? ":own" : "");
+    case UnitKind::segment: return "segment:" + std::to_string(u.lanes);
+  }
+  return "?";
+}
+
+Arithmetic parse_arith(const std::string& spec) {
+  if (spec == "float") return {};
+  if (spec == "fixed") return {true, 12, 12};
+  std::smatch m;
+  if (!std::regex_match(spec, m, std::regex(R"(fixed:(\d{1,2})\.(\d{1,2}))")))
+    throw UsageError("unknown arithmetic '" + spec + "' (valid: float, fixed, fixed:I.F)");
+  const int i = std::stoi(m[1]), f = std::stoi(m[2]);
+  if (i < 9) throw UsageError("--arith '" + spec + "': I = " + m[1].str() + " integer bits cannot hold 255 and a sign (I >= 9)");
+  if (f < 1) throw UsageError("--arith '" + spec + "': F must be at least 1 fraction bit");
+  if (i + f > 32) throw UsageError("--arith '" + spec + "': I + F = " + std::to_string(i + f) + " bits exceeds the 32-bit register");
+  return {true, i, f};
+}
+
+std::string arith_name(const Arithmetic& a) {
+  return a.fixed ? "fixed:" + std::to_string(a.int_bits) + "." + std::to_string(a.frac_bits) : "float";
+}
+
+}  // namespace parashade

@@ -1,0 +1,34 @@
+#pragma once
+// Golden models of the shading units: plain C++ that steps each unit's registers clock by clock, as
+// the block diagrams of SEEDS §4 describe (slow, small, obviously right). In fixed point the kernels
+// must reproduce them bit for bit (tests/cl/unit_golden_test.cpp).
+#include <cstdint>
+#include <vector>
+
+#include "parashade/units.hpp"
+#include "fixed_point.h"
+
+namespace parashade {
+
+// What the line interpolators and setup hand a unit for one span, already in span-register format.
+struct SpanLoad {
+  std::int32_t start = 0;    // S: intensity at the span's left pixel (from setup's plane, rounded)
+  std::int32_t end = 0;      // E: intensity at its right pixel, rounded on its own (the counter unit's right start)
+  std::int32_t step = 0;     // dI: the constant span increment, rounded
+  std::int32_t own_step = 0; // M*dI rounded from setup's plane on its own (interleave:M:own)
+  int length = 0;            // pixels, >= 1
+};
+
+// Loads channel `c` of a triangle's planes for the span [xl, xr] of row dy (all relative to the
+// triangle's box corner x0, y0).
+SpanLoad load_span(const FixedPlanes& p, int c, int xl, int xr, int dy, const UnitConfig& unit, const Arithmetic& a);
+
+struct SpanTrace {
+  std::vector<std::int32_t> values;  // span register value per pixel, left to right
+  std::uint64_t clocks = 0;          // clocks the unit took for the span's pixels (without the load)
+};
+
+// Runs the unit over one span, clock by clock. a.fixed must be true.
+SpanTrace run_unit(const UnitConfig& unit, const Arithmetic& a, const SpanLoad& span);
+
+}  // namespace parashade

@@ -1,0 +1,44 @@
+#pragma once
+// The modeled shading units (SEEDS §4) and their arithmetic: what `--units` and `--arith` select.
+// A unit decides how many intensities a clock produces and, in fixed point, which values are
+// quantized where (kernels/fixed_point.h, docs/units.md). Units apply to Gouraud's code interpolators.
+#include <cstdint>
+#include <string>
+
+#include "unit_cost.h"
+
+namespace parashade {
+
+enum class UnitKind { classic = UNIT_CLASSIC, counter = UNIT_COUNTER, interleave = UNIT_INTERLEAVE, segment = UNIT_SEGMENT };
+
+struct UnitConfig {
+  UnitKind kind = UnitKind::classic;
+  int lanes = 1;          // intensities per clock: classic 1, counter 2, interleave M (1..16), segment P (2..64)
+  bool own_step = false;  // interleave: M*dI quantized from setup's plane on its own (else M times the quantized dI)
+};
+
+// "classic", "counter", "interleave:M[:own]", "segment:P". Throws UsageError naming the value.
+UnitConfig parse_units(const std::string& spec);
+std::string unit_name(const UnitConfig& u);
+
+// Span register format I.F (kernels/fixed_point.h), or float.
+struct Arithmetic {
+  bool fixed = false;
+  int int_bits = 12;   // including the sign bit
+  int frac_bits = 12;
+  int width() const { return int_bits + frac_bits; }
+};
+
+// "float" or "fixed:I.F" (9 <= I, 1 <= F, I + F <= 32; "fixed" alone is fixed:12.12). Throws UsageError.
+Arithmetic parse_arith(const std::string& spec);
+std::string arith_name(const Arithmetic& a);
+
+// Modeled clocks of one frame: every span costs SPAN_LOAD_CLOCKS plus the unit's span_clocks().
+// Triangle setup is the host's ("software") work and is timed, not modeled.
+struct ModeledClocks {
+  std::uint64_t spans = 0;
+  std::uint64_t pixels = 0;  // shaded span pixels, hidden ones included (the unit shades before the depth test)
+  std::uint64_t clocks = 0;
+};
+
+}  // namespace parashade
