@@ -1,0 +1,154 @@
+// The unit kernels in fixed point against the golden models, bit for bit: every covered pixel's span
+// register (read back through the float image, exact while I + F <= 24) equals what the golden model
+// of its unit holds for it after stepping the span clock by clock, and the frame's modeled clocks
+// equal the golden models' clocks summed over the spans.
+#include <map>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "cl_fixture.hpp"
+#include "parashade/golden_units.hpp"
+#include "parashade/reference.hpp"
+#include "parashade/renderer.hpp"
+#include "parashade/setup.hpp"
+
+namespace parashade {
+namespace {
+
+using namespace testing_support;
+
+// Triangles in a grid of cells, one per cell and inside it, so none overlap (visibility cannot blur
+// the comparison); sizes from one pixel to the cell.
+std::shared_ptr<Mesh> grid_triangles(int width, int height, int cell, std::mt19937& rng) {
+  auto mesh = std::make_shared<Mesh>();
+  std::uniform_real_distribution<float> u(0.0f, float(cell) - 0.01f), un(-1.0f, 1.0f), uz(-5.0f, 5.0f);
+  for (int cy = 0; cy + cell <= height; cy += cell) {
+    for (int cx = 0; cx + cell <= width; cx += cell) {
+      const std::uint32_t base = std::uint32_t(mesh->positions.size());
+      const float scale = std::uniform_real_distribution<float>(0.1f, 2.0f)(rng);
+      for (int k = 0; k < 3; ++k) {
+        const float x = float(cx) + std::min(u(rng) * scale, float(cell) - 0.01f) - 0.5f * width;
+        const float y = 0.5f * height - float(cy) - std::min(u(rng) * scale, float(cell) - 0.01f);
+        mesh->positions.push_back({x, y, uz(rng)});
+        mesh->normals.push_back(glm::normalize(glm::vec3(un(rng), un(rng), 1.2f + std::abs(un(rng)))));
+      }
+      mesh->triangles.push_back({base, base + 1, base + 2});
+    }
+  }
+  return mesh;
+}
+
+struct Span {
+  int xl = 1, xr = 0;  // relative to the record's x0; empty when xl > xr
+};
+
+// Covered pixels of row dy of a record, straight from the definition of its edge functions.
+Span record_span(const TriangleGeometry& t, int dy) {
+  Span s;
+  for (int dx = 0; dx <= t.x1 - t.x0; ++dx) {
+    bool inside = true;
+    for (int e = 0; e < 3; ++e) inside &= t.edge_c[e] + std::int64_t(t.edge_a[e]) * dx + std::int64_t(t.edge_b[e]) * dy >= 0;
+    if (!inside) continue;
+    if (s.xl > s.xr) s.xl = dx;
+    s.xr = dx;
+  }
+  return s;
+}
+
+struct Check {
+  std::uint64_t pixels = 0, mismatches = 0, golden_clocks = 0, spans = 0;
+};
+
+Check compare_with_golden(const Scene& scene, const UnitConfig& unit, const Arithmetic& arith) {
+  RenderOptions o;
+  o.method = Method::gouraud;
+  o.float_output = true;
+  o.units = unit;
+  o.arith = arith;
+  Renderer renderer(test_device(), o);
+  const Frame& frame = renderer.render(scene);
+  const ScreenGeometry& g = renderer.geometry();
+  const std::size_t n = g.triangles.size();
+  std::vector<TriangleGeometry> records(n);
+  std::vector<float> attrs(n * attribute_floats(Method::gouraud));
+  std::vector<FixedPlanes> planes(n);
+  setup_triangles(g, Method::gouraud, records.data(), attrs.data(), planes.data());
+
+  Check c;
+  const double scale = double(1 << arith.frac_bits);
+  for (std::size_t t = 0; t < n; ++t) {
+    const TriangleGeometry& r = records[t];
+    if (r.x0 > r.x1) continue;
+    for (int dy = 0; dy <= r.y1 - r.y0; ++dy) {
+      const Span s = record_span(r, dy);
+      if (s.xl > s.xr) continue;
+      ++c.spans;
+      for (int ch = 0; ch < 3; ++ch) {
+        const SpanTrace golden = run_unit(unit, arith, load_span(planes[t], ch, s.xl, s.xr, dy, unit, arith));
+        if (ch == 0) c.golden_clocks += SPAN_LOAD_CLOCKS + golden.clocks;
+        for (int i = 0; i < int(golden.values.size()); ++i) {
+          const std::size_t p = std::size_t(r.y0 + dy) * scene.width + std::size_t(r.x0 + s.xl + i);
+          const double kernel = double(frame.image.rgb_float[3 * p + ch]) * scale;
+          ++c.pixels;
+          if (kernel != double(golden.values[std::size_t(i)]) || !frame.image.covered(p)) {
+            if (c.mismatches++ < 5)
+              ADD_FAILURE() << unit_name(unit) << " " << arith_name(arith) << ": triangle " << t << " row " << dy
+                            << " pixel " << i << " of " << golden.values.size() << " channel " << ch << ": kernel "
+                            << kernel << " golden " << golden.values[std::size_t(i)];
+          }
+        }
+      }
+    }
+  }
+  EXPECT_EQ(frame.stats.clocks.clocks, c.golden_clocks) << unit_name(unit);
+  EXPECT_EQ(frame.stats.clocks.spans, c.spans) << unit_name(unit);
+  return c;
+}
+
+const char* kUnits[] = {"classic",          "counter",          "interleave:1",      "interleave:2",
+                        "interleave:3",     "interleave:4",     "interleave:7",      "interleave:16",
+                        "interleave:2:own", "interleave:3:own", "interleave:16:own", "segment:2",
+                        "segment:4",        "segment:16",       "segment:64"};
+
+class UnitGolden : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(UnitGolden, KernelEqualsGoldenModelOnRandomTriangles) {
+  std::mt19937 rng(11);
+  Scene scene = pixel_scene(525, 301);  // odd sizes: partial tiles and segments
+  add_object(scene, grid_triangles(525, 301, 29, rng));
+  const UnitConfig unit = parse_units(GetParam());
+  for (const char* arith : {"fixed:12.12", "fixed:9.3", "fixed:16.8"}) {
+    const Check c = compare_with_golden(scene, unit, parse_arith(arith));
+    EXPECT_GT(c.pixels, 3u * 5000u) << "too few pixels to mean much";
+    EXPECT_EQ(c.mismatches, 0u) << GetParam() << " " << arith << " over " << c.pixels << " register values";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Units, UnitGolden, ::testing::ValuesIn(kUnits),
+                         [](const auto& info) {
+                           std::string s = info.param;
+                           for (char& ch : s) if (ch == ':') ch = '_';
+                           return s;
+                         });
+
+// One right triangle over a 4096 x 4096 screen: its rows have every span length from 1 to 4096 (odd and
+// even, M not dividing them, P larger than the short ones), and its vertices sit at the 12-bit edge.
+TEST(UnitGoldenLimits, EverySpanLengthUpTo4096AtTheAddressLimit) {
+  Scene scene = pixel_scene(4096, 4096);
+  auto mesh = std::make_shared<Mesh>();
+  // The hypotenuse ends 0.3 pixel beyond the right edge, so row j covers exactly j + 1 pixel centres.
+  mesh->positions = {{-2048.0f, 2048.0f, 0.0f}, {2048.3f, -2048.0f, 1.0f}, {-2048.0f, -2048.0f, -2.0f}};
+  mesh->normals = {glm::normalize(glm::vec3(0.9f, 0.1f, 0.4f)), glm::normalize(glm::vec3(-0.5f, 0.2f, 1.0f)),
+                   glm::normalize(glm::vec3(0.1f, -0.8f, 0.6f))};
+  mesh->triangles = {{0, 1, 2}};
+  add_object(scene, mesh);
+  for (const char* u : {"counter", "interleave:3:own", "segment:64"}) {
+    const Check c = compare_with_golden(scene, parse_units(u), parse_arith("fixed:10.14"));
+    EXPECT_EQ(c.spans, 4096u) << u;
+    EXPECT_EQ(c.mismatches, 0u) << u;
+  }
+}
+
+}  // namespace
+}  // namespace parashade

@@ -1,0 +1,133 @@
+// The golden unit models on spans worked out by hand, their clock counts against the cost model,
+// and the register model's rounding, saturation and wrap-around.
+#include <gtest/gtest.h>
+
+#include "parashade/errors.hpp"
+#include "parashade/golden_units.hpp"
+
+namespace parashade {
+namespace {
+
+const Arithmetic kFixed{true, 12, 4};  // W = 16 bits, 4 fraction bits: one level = 16
+
+SpanLoad span(std::int32_t start, std::int32_t end, std::int32_t step, std::int32_t own_step, int length) {
+  SpanLoad s;
+  s.start = start;
+  s.end = end;
+  s.step = step;
+  s.own_step = own_step;
+  s.length = length;
+  return s;
+}
+
+TEST(GoldenUnits, ClassicAccumulatesTheStep) {
+  const SpanTrace t = run_unit({UnitKind::classic, 1, false}, kFixed, span(100, 0, 7, 0, 5));
+  EXPECT_EQ(t.values, (std::vector<std::int32_t>{100, 107, 114, 121, 128}));
+  EXPECT_EQ(t.clocks, 5u);
+}
+
+TEST(GoldenUnits, CounterRunsFromBothEndsAndTheLeftTakesTheOddMiddle) {
+  // E = 131 is not S + 4*7 = 128: the right interpolator starts from its own rounded end value.
+  const SpanTrace odd = run_unit({UnitKind::counter, 2, false}, kFixed, span(100, 131, 7, 0, 5));
+  EXPECT_EQ(odd.values, (std::vector<std::int32_t>{100, 107, 114, 124, 131}));
+  EXPECT_EQ(odd.clocks, 3u);
+  const SpanTrace even = run_unit({UnitKind::counter, 2, false}, kFixed, span(100, 131, 7, 0, 4));
+  EXPECT_EQ(even.values, (std::vector<std::int32_t>{100, 107, 124, 131}));
+  EXPECT_EQ(even.clocks, 2u);
+  const SpanTrace one = run_unit({UnitKind::counter, 2, false}, kFixed, span(100, 100, 7, 0, 1));
+  EXPECT_EQ(one.values, (std::vector<std::int32_t>{100}));
+  EXPECT_EQ(one.clocks, 1u);
+}
+
+TEST(GoldenUnits, InterleaveWithShiftedStepEqualsClassic) {
+  const SpanTrace t = run_unit({UnitKind::interleave, 3, false}, kFixed, span(10, 0, 5, 999, 7));
+  EXPECT_EQ(t.values, (std::vector<std::int32_t>{10, 15, 20, 25, 30, 35, 40}));
+  EXPECT_EQ(t.clocks, 3u);  // ceil(7 / 3)
+}
+
+TEST(GoldenUnits, InterleaveWithOwnStepUsesItBetweenRounds) {
+  // Interpolators start at S, S + dI, S + 2 dI and step by the own-rounded 3 dI = 16 (not 15).
+  const SpanTrace t = run_unit({UnitKind::interleave, 3, true}, kFixed, span(10, 0, 5, 16, 7));
+  EXPECT_EQ(t.values, (std::vector<std::int32_t>{10, 15, 20, 26, 31, 36, 42}));
+  EXPECT_EQ(t.clocks, 3u);
+}
+
+TEST(GoldenUnits, SegmentProducesPPerClockFromMultiples) {
+  const SpanTrace t = run_unit({UnitKind::segment, 4, false}, kFixed, span(1, 0, 3, 0, 10));
+  EXPECT_EQ(t.values, (std::vector<std::int32_t>{1, 4, 7, 10, 13, 16, 19, 22, 25, 28}));
+  EXPECT_EQ(t.clocks, 3u);
+  const SpanTrace wide = run_unit({UnitKind::segment, 64, false}, kFixed, span(1, 0, 3, 0, 3));
+  EXPECT_EQ(wide.values, (std::vector<std::int32_t>{1, 4, 7}));
+  EXPECT_EQ(wide.clocks, 1u);
+}
+
+TEST(GoldenUnits, AddersWrapAroundTheRegisterWidth) {
+  const Arithmetic narrow{true, 9, 1};  // W = 10: -512 .. 511
+  const SpanTrace t = run_unit({UnitKind::classic, 1, false}, narrow, span(509, 0, 1, 0, 4));
+  EXPECT_EQ(t.values, (std::vector<std::int32_t>{509, 510, 511, -512}));
+  const SpanTrace back = run_unit({UnitKind::counter, 2, false}, narrow, span(0, -511, 3, 0, 2));
+  EXPECT_EQ(back.values, (std::vector<std::int32_t>{0, -511}));
+}
+
+TEST(GoldenUnits, ClocksMatchTheCostModelForEveryLength) {
+  const UnitConfig units[] = {{UnitKind::classic, 1, false},   {UnitKind::counter, 2, false},
+                              {UnitKind::interleave, 3, false}, {UnitKind::interleave, 16, true},
+                              {UnitKind::segment, 2, false},    {UnitKind::segment, 64, false}};
+  for (const UnitConfig& u : units) {
+    for (int length = 1; length <= 300; ++length) {
+      const SpanTrace t = run_unit(u, kFixed, span(0, 0, 1, u.lanes, length));
+      ASSERT_EQ(t.values.size(), std::size_t(length));
+      EXPECT_EQ(t.clocks, std::uint64_t(span_clocks(int(u.kind), u.lanes, length))) << unit_name(u) << " L=" << length;
+    }
+  }
+}
+
+TEST(GoldenUnits, RejectFloatAndEmptySpans) {
+  EXPECT_THROW(run_unit({}, Arithmetic{}, span(0, 0, 1, 0, 3)), std::invalid_argument);
+  EXPECT_THROW(run_unit({}, kFixed, span(0, 0, 1, 0, 0)), std::invalid_argument);
+}
+
+TEST(RegisterModel, LoadRoundsToNearestTiesUpAndSaturates) {
+  const std::int64_t one = std::int64_t(1) << PLANE_FRAC;  // 1.0 level in setup's format
+  EXPECT_EQ(load_register(one + one / 32, 4, 16), 17);      // 1.03125 -> 16.5 sixteenths -> 17 (tie up)
+  EXPECT_EQ(load_register(one + one / 32 - 1, 4, 16), 16);  // just below the tie
+  EXPECT_EQ(load_register(-one - one / 32, 4, 16), -16);    // -16.5 -> -16 (ties up, toward +inf)
+  EXPECT_EQ(load_register(4096 * one, 4, 16), 32767);       // beyond the register: saturated
+  EXPECT_EQ(load_register(-4096 * one, 4, 16), -32768);
+}
+
+TEST(RegisterModel, OutputLevelRoundsAndSaturates) {
+  EXPECT_EQ(register_level(16 * 100 + 7, 4), 100);
+  EXPECT_EQ(register_level(16 * 100 + 8, 4), 101);  // tie up
+  EXPECT_EQ(register_level(-3, 4), 0);
+  EXPECT_EQ(register_level(16 * 300, 4), 255);
+}
+
+TEST(RegisterModel, LoadSpanTakesEndsStepAndOwnStepFromThePlane) {
+  FixedPlanes p{};
+  const std::int64_t one = std::int64_t(1) << PLANE_FRAC;
+  p.ref[1] = 10 * one;
+  p.ddx[1] = one / 3;  // 0.333.. levels per pixel
+  p.ddy[1] = 2 * one;
+  const SpanLoad s = load_span(p, 1, 3, 9, 2, {UnitKind::interleave, 4, true}, kFixed);
+  EXPECT_EQ(s.start, 16 * 15);                // 10 + 3/3 + 2*2 = 15 levels
+  EXPECT_EQ(s.end, 16 * 17);                  // 10 + 9/3 + 4 = 17
+  EXPECT_EQ(s.step, 5);                       // 16/3 = 5.33 -> 5
+  EXPECT_EQ(s.own_step, 21);                  // 4 * 16/3 = 21.33 -> 21 (4 * 5 = 20 when shifted)
+  EXPECT_EQ(s.length, 7);
+}
+
+TEST(UnitSpecs, ParseValidAndNameInvalid) {
+  EXPECT_EQ(unit_name(parse_units("interleave:4:own")), "interleave:4:own");
+  EXPECT_EQ(parse_units("segment:64").lanes, 64);
+  EXPECT_EQ(parse_units("counter").lanes, 2);
+  for (const char* bad : {"interleave:0", "interleave:17", "segment:3", "segment:128", "segment:1", "sierpinski:x", ""})
+    EXPECT_THROW(parse_units(bad), UsageError) << bad;
+  EXPECT_EQ(arith_name(parse_arith("fixed:16.8")), "fixed:16.8");
+  EXPECT_EQ(parse_arith("fixed").width(), 24);
+  for (const char* bad : {"fixed:8.8", "fixed:20.13", "fixed:12.0", "fixed:12", "double"})
+    EXPECT_THROW(parse_arith(bad), UsageError) << bad;
+}
+
+}  // namespace
+}  // namespace parashade
