@@ -13,6 +13,7 @@
 #include "triangle_record.h"
 #include "span.h"
 #include "fixed_point.h"
+#include "sierpinski_leaf.h"
 #if UNIT_PATH
 #include "method_gouraud_units.h"
 #endif
@@ -51,7 +52,8 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
                   __global const uint* tile_start, __global const uint* tile_tris,
                   __constant float4* lights, __constant float4* materials, float4 viewer, float4 background,
                   int tiles_x, int num_tiles, int width, int height, __global uint* out_rgba,
-                  __global float* out_float, __global const FixedPlanes* fixed, __global ulong* tile_clocks) {
+                  __global float* out_float, __global const FixedPlanes* fixed, __global ulong* tile_clocks,
+                  __global const SierpinskiLeaf* leaves) {
   for (int tile = get_global_id(0); tile < num_tiles; tile += get_global_size(0)) {
   const int tile_x = (tile % tiles_x) * TILE, tile_y = (tile / tiles_x) * TILE;
 
@@ -97,7 +99,12 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
         const int xl = span_lo[j], xr = span_hi[j];
         if (xl > xr) continue;
         const int length = xr - xl + 1;
-        if (xl + x0 >= tile_x && xl + x0 < tile_x + TILE) {
+#if UNIT_KIND == UNIT_SIERPINSKI
+        const int costs_clocks = leaves[ti].shaded; /* copies come from the adders in the same clock */
+#else
+        const int costs_clocks = 1;
+#endif
+        if (costs_clocks && xl + x0 >= tile_x && xl + x0 < tile_x + TILE) {
           spans += 1;
           span_pixels += (ulong)length;
           clocks += (ulong)(SPAN_LOAD_CLOCKS + span_clocks(UNIT_KIND, UNIT_LANES, length));
@@ -107,7 +114,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
         const int py = block + j, dy = py - y0;
 #if FIXED
         SpanRegisters regs;
-        load_span_registers(&fixed[ti], xl, xr, dy, &regs);
+        load_span_registers(&fixed[ti], &leaves[ti], xl, xr, dy, &regs);
 #endif
         for (int s = (sl + x0 - tile_x) / VEC; s <= (sr + x0 - tile_x) / VEC; ++s) {
           const intV rel = lane + (tile_x + s * VEC - x0);

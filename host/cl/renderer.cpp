@@ -8,6 +8,7 @@
 #include "parashade/geometry_stage.hpp"
 #include "parashade/parallel.hpp"
 #include "parashade/setup.hpp"
+#include "parashade/sierpinski.hpp"
 
 namespace parashade {
 namespace {
@@ -107,6 +108,10 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
 
   auto t0 = Clock::now();
   build_screen_geometry(scene, {method, false}, geometry_);
+  // The extra-triangulation unit needs its midpoints on pixel corners: vertex parity normalization.
+  const UnitConfig unit = options_.unit();
+  const bool split = options_.unit_path() && unit.kind == UnitKind::sierpinski;
+  if (split) s.parity_dropped = normalize_vertex_parity(geometry_, unit.depth, unit.odd_parity);
   t.geometry_ms = ms_since(t0);
   s.geometry = geometry_.stats;
 
@@ -114,7 +119,8 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
   // three input buffers are mapped together: the tile list at its current capacity, since binning's
   // size is known only later (it is mapped again in the rare frame it must grow).
   t0 = Clock::now();
-  const std::size_t n = geometry_.triangles.size();
+  const std::size_t triangles = geometry_.triangles.size();
+  const std::size_t n = split ? triangles << (2 * unit.depth) : triangles;  // records: sub-triangles when split
   const std::size_t tri_bytes = std::max<std::size_t>(64, n * sizeof(TriangleGeometry));
   const std::size_t attr_bytes = std::max<std::size_t>(64, n * attribute_floats(method) * sizeof(float));
   ensure(tris_, tris_cap_, tri_bytes, CL_MEM_READ_ONLY);
@@ -135,8 +141,26 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
     fixed_ptr = static_cast<FixedPlanes*>(
         q.enqueueMapBuffer(fixed_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, fixed_bytes, nullptr, &mapped.emplace_back()));
   }
+  SierpinskiLeaf* leaf_ptr = nullptr;
+  const std::size_t leaf_bytes = std::max<std::size_t>(64, (split ? n : 0) * sizeof(SierpinskiLeaf));
+  ensure(leaves_, leaves_cap_, leaf_bytes, CL_MEM_READ_ONLY);
+  if (split)
+    leaf_ptr = static_cast<SierpinskiLeaf*>(
+        q.enqueueMapBuffer(leaves_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, leaf_bytes, nullptr, &mapped.emplace_back()));
   cl::Event::waitForEvents(mapped);
-  s.triangles_without_pixels = setup_triangles(geometry_, method, tri_ptr, attr_ptr, fixed_ptr).without_pixels;
+  if (split) {
+    // Setup per triangle, then each record split into its sub-triangles' records.
+    std::vector<TriangleGeometry> whole(triangles);
+    std::vector<float> whole_attr(triangles * GOURAUD_ATTR_FLOATS);
+    std::vector<FixedPlanes> whole_fixed(fixed_ptr ? triangles : 0);
+    s.triangles_without_pixels = setup_triangles(geometry_, method, whole.data(), whole_attr.data(),
+                                                 fixed_ptr ? whole_fixed.data() : nullptr).without_pixels;
+    split_sierpinski(geometry_, unit.depth, whole.data(), whole_attr.data(), fixed_ptr ? whole_fixed.data() : nullptr,
+                     tri_ptr, attr_ptr, fixed_ptr, leaf_ptr);
+    q.enqueueUnmapMemObject(leaves_, leaf_ptr);
+  } else {
+    s.triangles_without_pixels = setup_triangles(geometry_, method, tri_ptr, attr_ptr, fixed_ptr).without_pixels;
+  }
   if (fixed_ptr) q.enqueueUnmapMemObject(fixed_, fixed_ptr);
   q.enqueueUnmapMemObject(attrs_, attr_ptr);
   t.setup_ms = ms_since(t0);
@@ -242,6 +266,7 @@ const Frame& Renderer::render(const Scene& scene) {
     ensure(tile_clocks_, tile_clocks_cap_, clock_bytes, CL_MEM_WRITE_ONLY);
     kernel.setArg(14, fixed_);
     kernel.setArg(15, tile_clocks_);
+    kernel.setArg(16, leaves_);
     // The kernel, then the map that makes the frame valid in the image's memory (on a CPU device the
     // kernel wrote it there already): one wait for both. The frame stays mapped until the next render.
     auto t0 = Clock::now();

@@ -45,7 +45,8 @@ nlohmann::json to_json(const FrameStats& s) {
           {"screen_triangles", s.geometry.triangles_out},
           {"triangles_without_pixels", s.triangles_without_pixels},
           {"bin_entries", s.bin_entries},
-          {"tiles", s.tiles}};
+          {"tiles", s.tiles},
+          {"parity_dropped", s.parity_dropped}};
 }
 
 nlohmann::json to_json(const ModeledClocks& c) {

@@ -82,11 +82,39 @@ SpanTrace segment(const Adder& add, int width, const SpanLoad& s, int p) {
   return t;
 }
 
+// Extra triangulation: the classic code interpolator steps the shaded sub-triangle's span; in the same
+// clock the copy's adder turns each value into the copy's (offset + I, or offset - I for a reflected
+// copy, whose pixels run the other way).
+SpanTrace sierpinski(const Adder& add, const SpanLoad& s) {
+  SpanTrace shaded = classic(add, s);
+  SpanTrace t;
+  t.clocks = shaded.clocks;
+  t.values.assign(std::size_t(s.length), 0);
+  const std::int32_t offset = s.offset;
+  for (int x = 0; x < s.length; ++x) {
+    const std::int32_t v = shaded.values[std::size_t(x)];
+    if (s.sign > 0) t.values[std::size_t(x)] = add(offset, v);
+    else t.values[std::size_t(s.length - 1 - x)] = add(offset, add(~v, 1));
+  }
+  return t;
+}
+
 }  // namespace
 
-SpanLoad load_span(const FixedPlanes& p, int c, int xl, int xr, int dy, const UnitConfig& unit, const Arithmetic& a) {
+SpanLoad load_span(const FixedPlanes& p, int c, int xl, int xr, int dy, const UnitConfig& unit, const Arithmetic& a,
+                   const SierpinskiLeaf* leaf) {
   const int f = a.frac_bits, w = a.width();
   SpanLoad s;
+  if (unit.kind == UnitKind::sierpinski) {
+    if (!leaf) throw std::invalid_argument("the sierpinski unit needs the sub-triangle's record");
+    // The shaded sub-triangle's span starts at this copy's left pixel, or at its right one when reflected.
+    s.sign = leaf->sign;
+    s.start = load_register(plane_value(p.ref[c], p.ddx[c], p.ddy[c], s.sign > 0 ? xl : xr, dy), f, w);
+    s.step = load_register(s.sign > 0 ? p.ddx[c] : std::int64_t(0 - std::uint64_t(p.ddx[c])), f, w);
+    s.offset = load_register(leaf->offset[c], f, w);
+    s.length = xr - xl + 1;
+    return s;
+  }
   s.start = load_register(plane_value(p.ref[c], p.ddx[c], p.ddy[c], xl, dy), f, w);
   s.end = load_register(plane_value(p.ref[c], p.ddx[c], p.ddy[c], xr, dy), f, w);
   s.step = load_register(p.ddx[c], f, w);
@@ -104,6 +132,7 @@ SpanTrace run_unit(const UnitConfig& unit, const Arithmetic& a, const SpanLoad& 
     case UnitKind::counter: return counter(add, span);
     case UnitKind::interleave: return interleave(add, span, unit.lanes, unit.own_step);
     case UnitKind::segment: return segment(add, a.width(), span, unit.lanes);
+    case UnitKind::sierpinski: return sierpinski(add, span);
   }
   throw std::invalid_argument("unknown unit");
 }

@@ -9,10 +9,6 @@
 namespace parashade {
 namespace {
 
-std::int64_t floor_div(std::int64_t a, std::int64_t b) {  // b > 0
-  return a >= 0 ? a / b : -((-a + b - 1) / b);
-}
-
 struct Plane {
   double ref, ddx, ddy;
 };
@@ -101,10 +97,7 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
     const std::int64_t half = kSubpixel / 2;
     const std::int64_t xmin = std::min({p[0].x, p[1].x, p[2].x}), xmax = std::max({p[0].x, p[1].x, p[2].x});
     const std::int64_t ymin = std::min({p[0].y, p[1].y, p[2].y}), ymax = std::max({p[0].y, p[1].y, p[2].y});
-    const std::int64_t x0 = std::max<std::int64_t>(0, floor_div(xmin - half + kSubpixel - 1, kSubpixel));
-    const std::int64_t y0 = std::max<std::int64_t>(0, floor_div(ymin - half + kSubpixel - 1, kSubpixel));
-    const std::int64_t x1 = std::min<std::int64_t>(g.width - 1, floor_div(xmax - half, kSubpixel));
-    const std::int64_t y1 = std::min<std::int64_t>(g.height - 1, floor_div(ymax - half, kSubpixel));
+    const auto [x0, y0, x1, y1] = centre_box(xmin, xmax, ymin, ymax, g.width, g.height);
     if (x0 > x1 || y0 > y1) {
       r = TriangleGeometry{};
       r.x0 = 1;  // empty box

@@ -7,6 +7,7 @@
 
 #include "parashade/units.hpp"
 #include "fixed_point.h"
+#include "sierpinski_leaf.h"
 
 namespace parashade {
 
@@ -17,11 +18,16 @@ struct SpanLoad {
   std::int32_t step = 0;     // dI: the constant span increment, rounded
   std::int32_t own_step = 0; // M*dI rounded from setup's plane on its own (interleave:M:own)
   int length = 0;            // pixels, >= 1
+  // sierpinski: start and step are the shaded sub-triangle's span (the one this span is a copy of);
+  // the copy's adder adds `offset` (sign +1) or subtracts from it (sign -1, pixels in reverse order).
+  std::int32_t offset = 0;
+  int sign = 1;
 };
 
 // Loads channel `c` of a triangle's planes for the span [xl, xr] of row dy (all relative to the
-// triangle's box corner x0, y0).
-SpanLoad load_span(const FixedPlanes& p, int c, int xl, int xr, int dy, const UnitConfig& unit, const Arithmetic& a);
+// triangle's box corner x0, y0). For the sierpinski unit, `leaf` is the record's sub-triangle data.
+SpanLoad load_span(const FixedPlanes& p, int c, int xl, int xr, int dy, const UnitConfig& unit, const Arithmetic& a,
+                   const SierpinskiLeaf* leaf = nullptr);
 
 struct SpanTrace {
   std::vector<std::int32_t> values;  // span register value per pixel, left to right

@@ -47,6 +47,7 @@ struct FrameStats {
   std::uint64_t bin_entries = 0;
   int tiles = 0;
   ModeledClocks clocks;  // on the unit path only (RenderOptions::unit_path)
+  std::uint64_t parity_dropped = 0;  // sierpinski: triangles degenerate after vertex parity normalization
 };
 
 struct Frame {
@@ -83,12 +84,12 @@ class Renderer {
   Frame frame_;
   Binner binner_;
   cl::Buffer tris_, attrs_, tile_start_, tile_tris_, lights_, materials_, out_rgba_, out_float_, counts_, fixed_,
-      tile_clocks_;
+      tile_clocks_, leaves_;
   void* mapped_rgba_ = nullptr;   // the last frame's image, mapped for the host until the next render
   void* rgba_host_ = nullptr;       // the memory out_rgba_ was created on (frame_.image.rgba)
   std::size_t tris_cap_ = 0, attrs_cap_ = 0, start_cap_ = 0, list_cap_ = 0, lights_cap_ = 0, materials_cap_ = 0,
               float_cap_ = 0, counts_cap_ = 0, fixed_cap_ = 0,
-              tile_clocks_cap_ = 0;
+              tile_clocks_cap_ = 0, leaves_cap_ = 0;
 };
 
 }  // namespace parashade

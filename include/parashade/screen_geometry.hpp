@@ -15,6 +15,7 @@
 // A pixel centre P is covered when E_ij(P) >= bias_ij for the three edges, with bias 0 for a top edge
 // (Yj == Yi and Xj > Xi) or a left edge (Yj < Yi), bias 1 otherwise. Shared edges are then covered
 // exactly once. Zero-area triangles are dropped.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -56,6 +57,23 @@ struct ScreenGeometry {
   std::vector<glm::vec3> flat_color;   // Flat: the triangle's value in levels (centroid, face normal)
   GeometryStats stats;
 };
+
+// floor(a / b) for b > 0.
+inline std::int64_t floor_div(std::int64_t a, std::int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+
+// The pixels whose centres may lie in the sub-pixel box [xmin, xmax] x [ymin, ymax], clamped to the
+// screen: first and last column and row (empty when x0 > x1 or y0 > y1).
+struct PixelBox {
+  std::int64_t x0, y0, x1, y1;
+};
+inline PixelBox centre_box(std::int64_t xmin, std::int64_t xmax, std::int64_t ymin, std::int64_t ymax, int width,
+                           int height) {
+  const std::int64_t half = kSubpixel / 2;
+  return {std::max<std::int64_t>(0, floor_div(xmin - half + kSubpixel - 1, kSubpixel)),
+          std::max<std::int64_t>(0, floor_div(ymin - half + kSubpixel - 1, kSubpixel)),
+          std::min<std::int64_t>(width - 1, floor_div(xmax - half, kSubpixel)),
+          std::min<std::int64_t>(height - 1, floor_div(ymax - half, kSubpixel))};
+}
 
 // Bias of the edge Vi -> Vj under the top-left rule (see above).
 inline int edge_bias(glm::ivec2 vi, glm::ivec2 vj) {

@@ -9,15 +9,24 @@
 
 namespace parashade {
 
-enum class UnitKind { classic = UNIT_CLASSIC, counter = UNIT_COUNTER, interleave = UNIT_INTERLEAVE, segment = UNIT_SEGMENT };
+enum class UnitKind {
+  classic = UNIT_CLASSIC,
+  counter = UNIT_COUNTER,
+  interleave = UNIT_INTERLEAVE,
+  segment = UNIT_SEGMENT,
+  sierpinski = UNIT_SIERPINSKI,  // extra triangulation (SEEDS §4): one of 4^D sub-triangles shaded, the rest copied
+};
 
 struct UnitConfig {
   UnitKind kind = UnitKind::classic;
-  int lanes = 1;          // intensities per clock: classic 1, counter 2, interleave M (1..16), segment P (2..64)
+  int lanes = 1;          // intensities per clock: classic 1, counter 2, interleave M (1..16), segment P (2..64), sierpinski 4^D
   bool own_step = false;  // interleave: M*dI quantized from setup's plane on its own (else M times the quantized dI)
+  int depth = 0;          // sierpinski: subdivision depth D (1..3)
+  bool odd_parity = false;// sierpinski: vertices normalized to pixel corners = 1 (mod 2^D) instead of 0
 };
 
-// "classic", "counter", "interleave:M[:own]", "segment:P". Throws UsageError naming the value.
+// "classic", "counter", "interleave:M[:own]", "segment:P", "sierpinski[:D[:even|:odd]]" (D = 1 by default).
+// Throws UsageError naming the value.
 UnitConfig parse_units(const std::string& spec);
 std::string unit_name(const UnitConfig& u);
 
