@@ -155,7 +155,7 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
     std::vector<FixedPlanes> whole_fixed(fixed_ptr ? triangles : 0);
     s.triangles_without_pixels = setup_triangles(geometry_, method, whole.data(), whole_attr.data(),
                                                  fixed_ptr ? whole_fixed.data() : nullptr).without_pixels;
-    split_sierpinski(geometry_, unit.depth, whole.data(), whole_attr.data(), fixed_ptr ? whole_fixed.data() : nullptr,
+    split_sierpinski(geometry_, unit.depth, unit.seal, whole.data(), whole_attr.data(), fixed_ptr ? whole_fixed.data() : nullptr,
                      tri_ptr, attr_ptr, fixed_ptr, leaf_ptr);
     q.enqueueUnmapMemObject(leaves_, leaf_ptr);
   } else {

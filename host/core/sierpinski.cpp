@@ -38,10 +38,12 @@ void collect(const v2 v[3], int top, int level, int depth, Leaf node, std::vecto
   collect(v, top, level + 1, depth, {-node.sign, node.t + i64(node.sign) * exact_half_power(sum, level + 1)}, out);
 }
 
-// The shaded sub-triangle's edge e: E(q) = dx (qy - yi) - dy (qx - xi) - bias, q in sub-pixels.
+// The shaded sub-triangle's edge e: E(q) = dx (qy - yi) - dy (qx - xi), q in sub-pixels, and its
+// top-left bias. A point reflection keeps the winding and E(C - p) is the reflected edge's own edge
+// function; the reflected edge runs the other way, so its own bias is the other one.
 struct Edge {
   i64 dx, dy, xi, yi, bias;
-  i64 at(v2 q) const { return dx * (q.y - yi) - dy * (q.x - xi) - bias; }
+  i64 at(v2 q) const { return dx * (q.y - yi) - dy * (q.x - xi); }
 };
 
 i64 snap(i64 c, i64 period, i64 residue) { return floor_div(c - residue + period / 2, period) * period + residue; }
@@ -69,7 +71,7 @@ std::uint64_t normalize_vertex_parity(ScreenGeometry& g, int depth, bool odd) {
   return dropped;
 }
 
-void split_sierpinski(const ScreenGeometry& g, int depth, const TriangleGeometry* in, const float* attr_in,
+void split_sierpinski(const ScreenGeometry& g, int depth, bool seal, const TriangleGeometry* in, const float* attr_in,
                       const FixedPlanes* fixed_in, TriangleGeometry* out, float* attr_out, FixedPlanes* fixed_out,
                       SierpinskiLeaf* leaf_out) {
   const std::size_t leaves = std::size_t(1) << (2 * depth);
@@ -123,7 +125,8 @@ void split_sierpinski(const ScreenGeometry& g, int depth, const TriangleGeometry
         const v2 corner(i64(kSubpixel) * x0 + kSubpixel / 2, i64(kSubpixel) * y0 + kSubpixel / 2);
         for (int e = 0; e < 3; ++e) {
           const Edge& E = edge[e];
-          lr.edge_c[e] = leaf.sign > 0 ? E.at(corner - shift) : E.at(shift - corner);
+          const i64 bias = leaf.sign < 0 && seal ? 1 - E.bias : E.bias;
+          lr.edge_c[e] = (leaf.sign > 0 ? E.at(corner - shift) : E.at(shift - corner)) - bias;
           lr.edge_a[e] = ps_int(-leaf.sign * E.dy * kSubpixel);
           lr.edge_b[e] = ps_int(leaf.sign * E.dx * kSubpixel);
           lr.edge_inv_a[e] = lr.edge_a[e] != 0 ? 1.0f / float(lr.edge_a[e]) : 0.0f;

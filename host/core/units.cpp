@@ -9,7 +9,7 @@ namespace parashade {
 UnitConfig parse_units(const std::string& spec) {
   const std::string valid =
       " (valid: classic, counter, interleave:M[:own] with M = 1..16, segment:P with P = 2, 4, ..., 64, "
-      "sierpinski[:D[:even|:odd]] with D = 1..3)";
+      "sierpinski[:D][:even|:odd][:seal] with D = 1..3)";
   if (spec == "classic") return {UnitKind::classic, 1, false};
   if (spec == "counter") return {UnitKind::counter, 2, false};
   std::smatch m;
@@ -24,11 +24,10 @@ UnitConfig parse_units(const std::string& spec) {
       throw UsageError("--units '" + spec + "': P = " + m[1].str() + " is not a power of two in 2..64");
     return {UnitKind::segment, lanes, false};
   }
-  if (std::regex_match(spec, m, std::regex(R"(sierpinski(:(\d{1,2})(:(even|odd))?)?)"))) {
+  if (std::regex_match(spec, m, std::regex(R"(sierpinski(:(\d{1,2}))?(:(even|odd))?(:seal)?)"))) {
     const int depth = m[2].matched ? std::stoi(m[2]) : 1;
     if (depth < 1 || depth > 3) throw UsageError("--units '" + spec + "': depth D = " + m[2].str() + " is not in 1..3");
-    UnitConfig u{UnitKind::sierpinski, 1 << (2 * depth), false, depth, m[4].matched && m[4].str() == "odd"};
-    return u;
+    return {UnitKind::sierpinski, 1 << (2 * depth), false, depth, m[4].matched && m[4].str() == "odd", m[5].matched};
   }
   throw UsageError("unknown unit '" + spec + "'" + valid);
 }
@@ -40,7 +39,7 @@ std::string unit_name(const UnitConfig& u) {
     case UnitKind::interleave: return "interleave:" + std::to_string(u.lanes) + (u.own_step ? ":own" : "");
     case UnitKind::segment: return "segment:" + std::to_string(u.lanes);
     case UnitKind::sierpinski:
-      return "sierpinski:" + std::to_string(u.depth) + (u.odd_parity ? ":odd" : ":even");
+      return "sierpinski:" + std::to_string(u.depth) + (u.odd_parity ? ":odd" : ":even") + (u.seal ? ":seal" : "");
   }
   return "?";
 }

@@ -20,9 +20,12 @@ std::uint64_t normalize_vertex_parity(ScreenGeometry& g, int depth, bool odd);
 
 // Splits screen triangle records (setup_triangles on the normalized geometry) into 4^depth sub-triangle
 // records each, in primitive order, the shaded one first: out[t * 4^depth + k]. fixed_in/fixed_out may
-// be null (float arithmetic); attributes are Gouraud's. Throws std::logic_error if the geometry is
-// not normalized for `depth`.
-void split_sierpinski(const ScreenGeometry& g, int depth, const TriangleGeometry* in, const float* attr_in,
+// be null (float arithmetic); attributes are Gouraud's. A copy covers exactly the mapped pixels of the
+// shaded sub-triangle; with `seal`, a reflected copy decides pixel centres on its edges by its own
+// top-left rule (the mirror image of the rule is the bottom-right rule, which leaves the midlines it
+// shares with translated copies covered twice or not at all). Throws std::logic_error if the geometry
+// is not normalized for `depth`.
+void split_sierpinski(const ScreenGeometry& g, int depth, bool seal, const TriangleGeometry* in, const float* attr_in,
                       const FixedPlanes* fixed_in, TriangleGeometry* out, float* attr_out, FixedPlanes* fixed_out,
                       SierpinskiLeaf* leaf_out);
 

@@ -23,9 +23,11 @@ struct UnitConfig {
   bool own_step = false;  // interleave: M*dI quantized from setup's plane on its own (else M times the quantized dI)
   int depth = 0;          // sierpinski: subdivision depth D (1..3)
   bool odd_parity = false;// sierpinski: vertices normalized to pixel corners = 1 (mod 2^D) instead of 0
+  bool seal = false;      // sierpinski: reflected copies take pixel centres on their edges by their own
+                          // top-left rule instead of mirroring the shaded sub-triangle's (no holes)
 };
 
-// "classic", "counter", "interleave:M[:own]", "segment:P", "sierpinski[:D[:even|:odd]]" (D = 1 by default).
+// "classic", "counter", "interleave:M[:own]", "segment:P", "sierpinski[:D][:even|:odd][:seal]" (D = 1 by default).
 // Throws UsageError naming the value.
 UnitConfig parse_units(const std::string& spec);
 std::string unit_name(const UnitConfig& u);

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "cl_fixture.hpp"
+#include "parashade/geometry_stage.hpp"
 #include "parashade/golden_units.hpp"
 #include "parashade/reference.hpp"
 #include "parashade/renderer.hpp"
@@ -84,7 +85,7 @@ Records frame_records(const ScreenGeometry& g, const UnitConfig& unit) {
   split.planes.resize(m);
   split.leaves.resize(m);
   std::vector<float> split_attrs(m * GOURAUD_ATTR_FLOATS);
-  split_sierpinski(g, unit.depth, r.geometry.data(), attrs.data(), r.planes.data(), split.geometry.data(),
+  split_sierpinski(g, unit.depth, unit.seal, r.geometry.data(), attrs.data(), r.planes.data(), split.geometry.data(),
                    split_attrs.data(), split.planes.data(), split.leaves.data());
   return split;
 }
@@ -150,7 +151,7 @@ const char* kUnits[] = {"classic",          "counter",          "interleave:1", 
                         "interleave:3",     "interleave:4",     "interleave:7",      "interleave:16",
                         "interleave:2:own", "interleave:3:own", "interleave:16:own", "segment:2",
                         "segment:4",        "segment:16",       "segment:64",       "sierpinski:1",
-                        "sierpinski:2:odd", "sierpinski:3"};
+                        "sierpinski:2:odd", "sierpinski:3",     "sierpinski:2:seal"};
 
 class UnitGolden : public ::testing::TestWithParam<const char*> {};
 
@@ -188,6 +189,87 @@ TEST(UnitGoldenLimits, EverySpanLengthUpTo4096AtTheAddressLimit) {
     const Check c = compare_with_golden(scene, parse_units(u), parse_arith("fixed:10.14"));
     EXPECT_EQ(c.spans, 4096u) << u;
     EXPECT_EQ(c.mismatches, 0u) << u;
+  }
+}
+
+}  // namespace
+}  // namespace parashade
+
+namespace parashade {
+namespace {
+
+// Triangles whose vertices already sit on pixel corners that are multiples of 2^depth, so parity
+// normalization moves nothing and the sub-triangles' coverage can be held against the triangles' own.
+std::shared_ptr<Mesh> corner_triangles(int width, int height, int cell, int depth, std::mt19937& rng) {
+  auto mesh = std::make_shared<Mesh>();
+  const int step = 1 << depth;
+  std::uniform_int_distribution<int> u(0, (cell - 1) / step);
+  for (int cy = 0; cy + cell <= height; cy += cell) {
+    for (int cx = 0; cx + cell <= width; cx += cell) {
+      const std::uint32_t base = std::uint32_t(mesh->positions.size());
+      for (int k = 0; k < 3; ++k) {
+        mesh->positions.push_back({float(cx + step * u(rng) - width / 2), float(height / 2 - cy - step * u(rng)), 0.0f});
+        mesh->normals.push_back(glm::vec3(0.0f, 0.0f, 1.0f));
+      }
+      mesh->triangles.push_back({base, base + 1, base + 2});
+    }
+  }
+  return mesh;
+}
+
+struct CoverageComparison {
+  std::uint64_t covered = 0, holes = 0, doubled = 0, outside = 0;
+};
+
+CoverageComparison sub_triangle_coverage(const Scene& scene, const char* unit_spec) {
+  const UnitConfig unit = parse_units(unit_spec);
+  RenderOptions o;
+  o.method = Method::gouraud;
+  o.units = unit;
+  o.arith = parse_arith("fixed:12.12");
+  Renderer renderer(test_device(), o);
+  renderer.render(scene);
+  const Records records = frame_records(renderer.geometry(), unit);
+  std::vector<int> count(std::size_t(scene.width) * scene.height, 0);
+  for (const TriangleGeometry& r : records.geometry) {
+    if (r.x0 > r.x1) continue;
+    for (int dy = 0; dy <= r.y1 - r.y0; ++dy) {
+      const Span s = record_span(r, dy);
+      for (int x = s.xl; x <= s.xr; ++x) ++count[std::size_t(r.y0 + dy) * scene.width + std::size_t(r.x0 + x)];
+    }
+  }
+  ScreenGeometry g;
+  build_screen_geometry(scene, {Method::gouraud, true}, g);
+  const ReferenceImage ref = render_reference(scene, g, Method::gouraud);
+  CoverageComparison c;
+  for (std::size_t p = 0; p < count.size(); ++p) {
+    c.covered += ref.covered[p];
+    c.holes += ref.covered[p] && count[p] == 0;
+    c.doubled += count[p] > 1;
+    c.outside += !ref.covered[p] && count[p] > 0;
+  }
+  return c;
+}
+
+// With vertices already normalized, the sub-triangles never reach outside their triangle. Mirroring the
+// top-left rule leaves centres on the midlines covered twice or not at all; `seal` covers the triangle
+// exactly once, pixel for pixel.
+TEST(SierpinskiCoverage, MirroredRuleLeavesHolesOnMidlinesSealCoversExactlyOnce) {
+  for (int depth : {1, 2}) {
+    std::mt19937 rng(5 + depth);
+    Scene scene = pixel_scene(320, 240);
+    add_object(scene, corner_triangles(320, 240, 40, depth, rng));
+    const std::string d = std::to_string(depth);
+    const CoverageComparison mirrored = sub_triangle_coverage(scene, ("sierpinski:" + d).c_str());
+    const CoverageComparison sealed = sub_triangle_coverage(scene, ("sierpinski:" + d + ":seal").c_str());
+    RecordProperty("depth" + d + "_mirrored_holes", std::to_string(mirrored.holes));
+    RecordProperty("depth" + d + "_mirrored_doubled", std::to_string(mirrored.doubled));
+    EXPECT_GT(sealed.covered, 3000u);
+    EXPECT_EQ(mirrored.outside, 0u) << "depth " << depth;
+    EXPECT_GT(mirrored.holes + mirrored.doubled, 0u) << "depth " << depth << ": the mirrored rule should show its seams";
+    EXPECT_EQ(sealed.outside, 0u) << "depth " << depth;
+    EXPECT_EQ(sealed.holes, 0u) << "depth " << depth;
+    EXPECT_EQ(sealed.doubled, 0u) << "depth " << depth;
   }
 }
 
