@@ -62,21 +62,33 @@ SpanTrace interleave(const Adder& add, const SpanLoad& s, int m, bool own_step) 
   return t;
 }
 
-// P intensities per clock from the multiples i*dI (i = 0..P), formed once: powers of two are wired
-// shifts of dI, every other multiple one adder from a smaller one. The segment base steps by P*dI.
-SpanTrace segment(const Adder& add, int width, const SpanLoad& s, int p) {
+// The multiples i*dI (i = 0..P) of the segment unit: an even multiple is its half shifted one bit
+// (wiring), an odd one the previous multiple plus dI (one adder). Counts the adders.
+std::vector<std::int32_t> segment_multiples(const Adder& add, std::int32_t step, int p, int* adders) {
+  std::vector<std::int32_t> m(std::size_t(p) + 1, 0);
+  if (p >= 1) m[1] = step;
+  for (int i = 2; i <= p; ++i) {
+    if (i % 2 == 0) {
+      m[std::size_t(i)] = wrap_register(std::uint32_t(m[std::size_t(i / 2)]) << 1, add.width);
+    } else {
+      m[std::size_t(i)] = add(m[std::size_t(i - 1)], step);
+      ++*adders;
+    }
+  }
+  return m;
+}
+
+// P intensities per clock: output adder i adds multiple i to the segment base (P - 1 adders; i = 0 is
+// the base itself); the base steps by P*dI (one accumulating adder).
+SpanTrace segment(const Adder& add, const SpanLoad& s, int p) {
   SpanTrace t;
   t.values.assign(std::size_t(s.length), 0);
-  std::vector<std::int32_t> multiple(std::size_t(p) + 1, 0);
-  for (int i = 1, power = 1; i <= p; ++i) {
-    if (i == 2 * power) power = i;
-    multiple[std::size_t(i)] = i == power ? wrap_register(std::uint32_t(s.step) << __builtin_ctz(unsigned(i)), width)
-                                          : add(multiple[std::size_t(i - power)], multiple[std::size_t(power)]);
-  }
+  int adders = 0;
+  const std::vector<std::int32_t> multiple = segment_multiples(add, s.step, p, &adders);
   std::int32_t base = s.start;
   for (int first = 0; first < s.length; first += p, ++t.clocks) {
     for (int i = 0; i < p && first + i < s.length; ++i)
-      t.values[std::size_t(first + i)] = add(base, multiple[std::size_t(i)]);
+      t.values[std::size_t(first + i)] = i == 0 ? base : add(base, multiple[std::size_t(i)]);
     base = add(base, multiple[std::size_t(p)]);
   }
   return t;
@@ -131,10 +143,19 @@ SpanTrace run_unit(const UnitConfig& unit, const Arithmetic& a, const SpanLoad& 
     case UnitKind::classic: return classic(add, span);
     case UnitKind::counter: return counter(add, span);
     case UnitKind::interleave: return interleave(add, span, unit.lanes, unit.own_step);
-    case UnitKind::segment: return segment(add, a.width(), span, unit.lanes);
+    case UnitKind::segment: return segment(add, span, unit.lanes);
     case UnitKind::sierpinski: return sierpinski(add, span);
   }
   throw std::invalid_argument("unknown unit");
+}
+
+SegmentAdders segment_adders(int p) {
+  if (p < 1) throw std::invalid_argument("a segment has at least one pixel");
+  SegmentAdders a;
+  segment_multiples(Adder{32}, 1, p, &a.multiples);
+  a.outputs = p - 1;
+  a.accumulator = 1;
+  return a;
 }
 
 }  // namespace parashade

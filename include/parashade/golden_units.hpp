@@ -34,6 +34,15 @@ struct SpanTrace {
   std::uint64_t clocks = 0;          // clocks the unit took for the span's pixels (without the load)
 };
 
+// The segment unit's adders as its golden model builds them: the multiples 2..P of dI (even ones are
+// wired shifts of a smaller one, odd ones one adder each), one output adder per lane but the first,
+// and the accumulator that steps the segment base by P*dI.
+struct SegmentAdders {
+  int multiples = 0, outputs = 0, accumulator = 0;
+  int total() const { return multiples + outputs + accumulator; }
+};
+SegmentAdders segment_adders(int p);
+
 // Runs the unit over one span, clock by clock. a.fixed must be true.
 SpanTrace run_unit(const UnitConfig& unit, const Arithmetic& a, const SpanLoad& span);
 

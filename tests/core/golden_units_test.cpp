@@ -61,6 +61,20 @@ TEST(GoldenUnits, SegmentProducesPPerClockFromMultiples) {
   EXPECT_EQ(wide.clocks, 1u);
 }
 
+// The sources print w(P) = 2, 4, 8, 14, 22, 32 for P = 2..64 (SEEDS §4). Our construction needs P/2 - 1
+// adders for the multiples (odd multiples only), P - 1 output adders and one accumulator.
+TEST(GoldenUnits, SegmentAdderCountsOfOurConstruction) {
+  const int p[] = {2, 4, 8, 16, 32, 64};
+  const int multiples[] = {0, 1, 3, 7, 15, 31};
+  const int total[] = {2, 5, 11, 23, 47, 95};
+  for (int k = 0; k < 6; ++k) {
+    const SegmentAdders a = segment_adders(p[k]);
+    EXPECT_EQ(a.multiples, multiples[k]) << "P = " << p[k];
+    EXPECT_EQ(a.outputs, p[k] - 1);
+    EXPECT_EQ(a.total(), total[k]) << "P = " << p[k];
+  }
+}
+
 TEST(GoldenUnits, AddersWrapAroundTheRegisterWidth) {
   const Arithmetic narrow{true, 9, 1};  // W = 10: -512 .. 511
   const SpanTrace t = run_unit({UnitKind::classic, 1, false}, narrow, span(509, 0, 1, 0, 4));
