@@ -41,13 +41,17 @@ PS_INLINE ps_long plane_value(ps_long ref, ps_long ddx, ps_long ddy, ps_int dx, 
   return (ps_long)((ps_ulong)ref + (ps_ulong)ddx * (ps_ulong)(ps_long)dx + (ps_ulong)ddy * (ps_ulong)(ps_long)dy);
 }
 
+/* A value in register units saturated to `width` bits. */
+PS_INLINE ps_int saturate_register(ps_long r, int width) {
+  const ps_long hi = ((ps_long)1 << (width - 1)) - 1, lo = -hi - 1;
+  return (ps_int)(r < lo ? lo : (r > hi ? hi : r));
+}
+
 /* A plane value into a span register of `width` bits with `frac` fraction bits (1 <= frac < PLANE_FRAC):
  * round to nearest (ties up), saturate. */
 PS_INLINE ps_int load_register(ps_long v, int frac, int width) {
   const int shift = PLANE_FRAC - frac;
-  const ps_long r = (v >> shift) + ((v >> (shift - 1)) & 1);
-  const ps_long hi = ((ps_long)1 << (width - 1)) - 1, lo = -hi - 1;
-  return (ps_int)(r < lo ? lo : (r > hi ? hi : r));
+  return saturate_register((v >> shift) + ((v >> (shift - 1)) & 1), width);
 }
 
 /* Two's complement wrap-around to `width` bits (an adder's carry out of the register is lost). */

@@ -17,6 +17,7 @@
 #include "fixed_point.h"
 #include "unit_cost.h"
 #include "sierpinski_leaf.h"
+#include "span_division.h"
 
 #if FIXED
 /* The registers of the current span, per channel (end: counter's right start, or the sierpinski copy's
@@ -39,9 +40,15 @@ INLINE void load_span_registers(__global const FixedPlanes* p, __global const Si
 #else
   for (int c = 0; c < 3; ++c) {
     r->start[c] = load_register(plane_value(p->ref[c], p->ddx[c], p->ddy[c], xl, dy), FRAC_BITS, REG_BITS);
-    r->step[c] = load_register(p->ddx[c], FRAC_BITS, REG_BITS);
-#if UNIT_KIND == UNIT_COUNTER
+#if UNIT_KIND == UNIT_COUNTER || SPAN_DIV != DIV_CONSTANT
     r->end[c] = load_register(plane_value(p->ref[c], p->ddx[c], p->ddy[c], xr, dy), FRAC_BITS, REG_BITS);
+#endif
+#if SPAN_DIV == DIV_CONSTANT
+    r->step[c] = load_register(p->ddx[c], FRAC_BITS, REG_BITS);
+#else
+    r->step[c] = xr > xl ? saturate_register(span_quotient((long)r->end[c] - (long)r->start[c], xr - xl, SPAN_DIV,
+                                                           DIV_BITS, DIV_NEAREST), REG_BITS)
+                         : 0;
 #endif
 #if UNIT_OWN_STEP
     r->lane_step[c] = load_register((long)((ulong)p->ddx[c] * (ulong)UNIT_LANES), FRAC_BITS, REG_BITS);

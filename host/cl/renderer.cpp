@@ -67,7 +67,8 @@ std::string kernel_options(const Scene& s, const RenderOptions& o) {
     const UnitConfig u = o.unit();
     opt << " -D UNIT_KIND=" << int(u.kind) << " -D UNIT_LANES=" << u.lanes << " -D UNIT_OWN_STEP=" << (u.own_step ? 1 : 0)
         << " -D FIXED=" << (o.arith.fixed ? 1 : 0) << " -D FRAC_BITS=" << o.arith.frac_bits
-        << " -D REG_BITS=" << o.arith.width();
+        << " -D REG_BITS=" << o.arith.width() << " -D SPAN_DIV=" << o.division.mode << " -D DIV_BITS=" << o.division.bits
+        << " -D DIV_NEAREST=" << (o.division.nearest ? 1 : 0);
   }
   return opt.str();
 }
@@ -86,6 +87,14 @@ Renderer::Renderer(Device& device, RenderOptions options) : device_(device), opt
   if (options_.unit_path() && options_.method != Method::gouraud)
     throw UsageError(std::string("the shading units (--units, --arith fixed) model Gouraud's code interpolators; method '") +
                      method_name(options_.method) + "' has no unit model yet");
+  if (options_.division.mode != DIV_CONSTANT) {
+    const UnitConfig u = options_.unit();
+    if (!options_.arith.fixed)
+      throw UsageError("--div " + division_name(options_.division) + " divides span registers: it needs --arith fixed:I.F");
+    if (u.kind == UnitKind::sierpinski || u.own_step)
+      throw UsageError("--div " + division_name(options_.division) + " does not combine with --units " + unit_name(u) +
+                       " (its increments come from setup's plane)");
+  }
 }
 
 cl::Buffer& Renderer::ensure(cl::Buffer& buffer, std::size_t& capacity, std::size_t bytes, cl_mem_flags flags) {

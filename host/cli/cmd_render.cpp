@@ -22,7 +22,7 @@ namespace parashade::cli {
 namespace {
 
 struct RenderArgs {
-  std::string scene, output, method = "gouraud", device, size, report, units, arith = "float";
+  std::string scene, output, method = "gouraud", device, size, report, units, arith = "float", division = "constant";
   int frames = 5, warmup = 1, tile = 16, work_items = 0;
   bool float_output = false, no_error = false, quiet = false;
 };
@@ -82,6 +82,7 @@ int run_render(const RenderArgs& a) {
   options.work_items = a.work_items;
   if (!a.units.empty()) options.units = parse_units(a.units);
   options.arith = parse_arith(a.arith);
+  options.division = parse_division(a.division);
   const auto size = parse_size(a.size);
   if (a.frames < 1) throw UsageError("--frames must be at least 1");
   if (a.warmup < 0) throw UsageError("--warmup must not be negative");
@@ -153,6 +154,7 @@ int run_render(const RenderArgs& a) {
   if (options.unit_path()) {
     report["units"] = unit_name(options.unit());
     report["arith"] = arith_name(options.arith);
+    report["span_division"] = division_name(options.division);
     report["modeled_clocks"] = to_json(frame.stats.clocks);
   }
   if (!a.report.empty()) {
@@ -176,8 +178,9 @@ int run_render(const RenderArgs& a) {
               double(frame.stats.geometry.triangles_in) / (med.total_ms * 1e3));
   if (options.unit_path()) {
     const ModeledClocks& c = frame.stats.clocks;
-    std::printf("unit %s, %s arithmetic: %llu modeled clocks (%llu spans, %llu span pixels, %.3f pixels per clock)\n",
-                unit_name(options.unit()).c_str(), arith_name(options.arith).c_str(), (unsigned long long)c.clocks,
+    std::printf("unit %s, %s arithmetic, span increment %s: %llu modeled clocks (%llu spans, %llu span pixels, %.3f pixels per clock)\n",
+                unit_name(options.unit()).c_str(), arith_name(options.arith).c_str(),
+                division_name(options.division).c_str(), (unsigned long long)c.clocks,
                 (unsigned long long)c.spans, (unsigned long long)c.pixels, c.clocks ? double(c.pixels) / double(c.clocks) : 0.0);
   }
   for (const auto& l : error_lines) std::printf("%s\n", l.c_str());
@@ -208,6 +211,10 @@ Command add_render_command(CLI::App& app) {
                   "Gouraud through a modeled shading unit: classic, counter, interleave:M[:own] (M = 1..16), "
                   "segment:P (P = 2..64, power of two); reports modeled clocks");
   cmd->add_option("--arith", a->arith, "Span register arithmetic: float, fixed (= fixed:12.12) or fixed:I.F (I >= 9, I + F <= 32)")
+      ->capture_default_str();
+  cmd->add_option("--div", a->division,
+                  "Span increment: constant (dI_G once per triangle), or a division per span: exact, shiftadd:N "
+                  "(n digits of 1/k, rounded as the sources' Table 1), shiftadd:N:trunc; needs --arith fixed")
       ->capture_default_str();
   cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
   cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");

@@ -1,6 +1,9 @@
 #include "parashade/golden_units.hpp"
 
+#include <cmath>
 #include <stdexcept>
+
+#include "parashade/shift_add_division.hpp"
 
 namespace parashade {
 namespace {
@@ -114,7 +117,7 @@ SpanTrace sierpinski(const Adder& add, const SpanLoad& s) {
 }  // namespace
 
 SpanLoad load_span(const FixedPlanes& p, int c, int xl, int xr, int dy, const UnitConfig& unit, const Arithmetic& a,
-                   const SierpinskiLeaf* leaf) {
+                   const SierpinskiLeaf* leaf, const SpanDivision& division) {
   const int f = a.frac_bits, w = a.width();
   SpanLoad s;
   if (unit.kind == UnitKind::sierpinski) {
@@ -132,6 +135,19 @@ SpanLoad load_span(const FixedPlanes& p, int c, int xl, int xr, int dy, const Un
   s.step = load_register(p.ddx[c], f, w);
   s.own_step = load_register(std::int64_t(std::uint64_t(p.ddx[c]) * std::uint64_t(unit.lanes)), f, w);
   s.length = xr - xl + 1;
+  const int k = xr - xl;
+  if (division.mode != DIV_CONSTANT) {
+    // A divider per span: the difference of the end registers over the k steps between them.
+    const std::int64_t difference = std::int64_t(s.end) - std::int64_t(s.start);
+    std::int64_t q = 0;
+    if (k >= 1 && division.mode == DIV_EXACT) {
+      q = std::int64_t(std::floor((2.0L * difference + k) / (2.0L * k)));
+    } else if (k >= 1) {
+      const auto rounding = division.nearest ? ReciprocalRounding::nearest : ReciprocalRounding::truncate;
+      q = shift_add_divide(difference, shift_add_reciprocal(k, division.bits, rounding)).value;
+    }
+    s.step = saturate_register(q, w);
+  }
   return s;
 }
 

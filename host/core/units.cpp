@@ -44,6 +44,23 @@ std::string unit_name(const UnitConfig& u) {
   return "?";
 }
 
+SpanDivision parse_division(const std::string& spec) {
+  if (spec == "constant") return {DIV_CONSTANT, 8, true};
+  if (spec == "exact") return {DIV_EXACT, 8, true};
+  std::smatch m;
+  if (!std::regex_match(spec, m, std::regex(R"(shiftadd:(\d{1,2})(:trunc)?)")))
+    throw UsageError("unknown span division '" + spec + "' (valid: constant, exact, shiftadd:N, shiftadd:N:trunc)");
+  const int bits = std::stoi(m[1]);
+  if (bits < 1 || bits > 30) throw UsageError("--div '" + spec + "': N = " + m[1].str() + " digits is not in 1..30");
+  return {DIV_SHIFT_ADD, bits, !m[2].matched};
+}
+
+std::string division_name(const SpanDivision& d) {
+  if (d.mode == DIV_CONSTANT) return "constant";
+  if (d.mode == DIV_EXACT) return "exact";
+  return "shiftadd:" + std::to_string(d.bits) + (d.nearest ? "" : ":trunc");
+}
+
 Arithmetic parse_arith(const std::string& spec) {
   if (spec == "float") return {};
   if (spec == "fixed") return {true, 12, 12};

@@ -26,8 +26,9 @@ struct SpanLoad {
 
 // Loads channel `c` of a triangle's planes for the span [xl, xr] of row dy (all relative to the
 // triangle's box corner x0, y0). For the sierpinski unit, `leaf` is the record's sub-triangle data.
+// With a per-span division, the step is (E - S) / (L - 1) (0 for one pixel) instead of the plane's dI_G.
 SpanLoad load_span(const FixedPlanes& p, int c, int xl, int xr, int dy, const UnitConfig& unit, const Arithmetic& a,
-                   const SierpinskiLeaf* leaf = nullptr);
+                   const SierpinskiLeaf* leaf = nullptr, const SpanDivision& division = {});
 
 struct SpanTrace {
   std::vector<std::int32_t> values;  // span register value per pixel, left to right

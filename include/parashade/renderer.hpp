@@ -26,6 +26,7 @@ struct RenderOptions {
   // Every triangle then goes by whole spans and the frame's modeled clocks are counted.
   std::optional<UnitConfig> units;
   Arithmetic arith;
+  SpanDivision division;  // fixed point: the span increment by a division per span (--div)
   bool unit_path() const { return units.has_value() || arith.fixed; }
   UnitConfig unit() const { return units.value_or(UnitConfig{}); }
 };

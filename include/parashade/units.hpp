@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "span_division.h"
 #include "unit_cost.h"
 
 namespace parashade {
@@ -43,6 +44,18 @@ struct Arithmetic {
 // "float" or "fixed:I.F" (9 <= I, 1 <= F, I + F <= 32; "fixed" alone is fixed:12.12). Throws UsageError.
 Arithmetic parse_arith(const std::string& spec);
 std::string arith_name(const Arithmetic& a);
+
+// How a span gets its increment (kernels/span_division.h): the constant dI_G once per triangle, or a
+// division per span of its end registers' difference, exact or by shifts and adds with n digits.
+struct SpanDivision {
+  int mode = 0;          // DIV_CONSTANT, DIV_EXACT, DIV_SHIFT_ADD
+  int bits = 8;          // shiftadd: n digits of 1/k (1..30)
+  bool nearest = true;   // shiftadd: digits rounded to nearest (the source's Table 1) or truncated
+};
+
+// "constant", "exact", "shiftadd:N" or "shiftadd:N:trunc". Throws UsageError naming the value.
+SpanDivision parse_division(const std::string& spec);
+std::string division_name(const SpanDivision& d);
 
 // Modeled clocks of one frame: every span costs SPAN_LOAD_CLOCKS plus the unit's span_clocks().
 // Triangle setup is the host's ("software") work and is timed, not modeled.

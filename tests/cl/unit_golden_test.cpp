@@ -90,12 +90,14 @@ Records frame_records(const ScreenGeometry& g, const UnitConfig& unit) {
   return split;
 }
 
-Check compare_with_golden(const Scene& scene, const UnitConfig& unit, const Arithmetic& arith) {
+Check compare_with_golden(const Scene& scene, const UnitConfig& unit, const Arithmetic& arith,
+                          const SpanDivision& division = {}) {
   RenderOptions o;
   o.method = Method::gouraud;
   o.float_output = true;
   o.units = unit;
   o.arith = arith;
+  o.division = division;
   Renderer renderer(test_device(), o);
   const Frame& frame = renderer.render(scene);
   const Records records = frame_records(renderer.geometry(), unit);
@@ -117,7 +119,7 @@ Check compare_with_golden(const Scene& scene, const UnitConfig& unit, const Arit
       const bool costs = !leaf || leaf->shaded;
       c.spans += costs;
       for (int ch = 0; ch < 3; ++ch) {
-        const SpanTrace golden = run_unit(unit, arith, load_span(records.planes[t], ch, s.xl, s.xr, dy, unit, arith, leaf));
+        const SpanTrace golden = run_unit(unit, arith, load_span(records.planes[t], ch, s.xl, s.xr, dy, unit, arith, leaf, division));
         if (ch == 0 && costs) c.golden_clocks += SPAN_LOAD_CLOCKS + golden.clocks;
         for (int i = 0; i < int(golden.values.size()); ++i) {
           const std::size_t p = std::size_t(r.y0 + dy) * scene.width + std::size_t(r.x0 + s.xl + i);
@@ -173,6 +175,21 @@ INSTANTIATE_TEST_SUITE_P(Units, UnitGolden, ::testing::ValuesIn(kUnits),
                            for (char& ch : s) if (ch == ':') ch = '_';
                            return s;
                          });
+
+// A division per span (exact, or by shifts and adds as the host's independent implementation forms it).
+TEST(UnitGoldenDivision, KernelEqualsGoldenModelWithADivisionPerSpan) {
+  std::mt19937 rng(13);
+  Scene scene = pixel_scene(525, 301);
+  add_object(scene, grid_triangles(525, 301, 29, rng));
+  const std::pair<const char*, const char*> cases[] = {{"classic", "exact"},        {"classic", "shiftadd:8"},
+                                                       {"classic", "shiftadd:5:trunc"}, {"counter", "shiftadd:8"},
+                                                       {"segment:8", "exact"},      {"interleave:3", "shiftadd:12"}};
+  for (const auto& [unit, division] : cases) {
+    const Check c = compare_with_golden(scene, parse_units(unit), parse_arith("fixed:12.10"), parse_division(division));
+    EXPECT_GT(c.pixels, 3u * 5000u);
+    EXPECT_EQ(c.mismatches, 0u) << unit << " --div " << division;
+  }
+}
 
 // One right triangle over a 4096 x 4096 screen: its rows have every span length from 1 to 4096 (odd and
 // even, M not dividing them, P larger than the short ones), and its vertices sit at the 12-bit edge.

@@ -137,6 +137,16 @@ TEST(UnitSpecs, ParseValidAndNameInvalid) {
   EXPECT_EQ(parse_units("counter").lanes, 2);
   for (const char* bad : {"interleave:0", "interleave:17", "segment:3", "segment:128", "segment:1", "sierpinski:x", ""})
     EXPECT_THROW(parse_units(bad), UsageError) << bad;
+  EXPECT_EQ(unit_name(parse_units("sierpinski:2:odd:seal")), "sierpinski:2:odd:seal");
+  EXPECT_EQ(parse_units("sierpinski").depth, 1);
+  EXPECT_EQ(parse_units("sierpinski:3").lanes, 64);
+  for (const char* bad : {"sierpinski:0", "sierpinski:4", "sierpinski:1:seal:odd", "sierpinski:1:both"})
+    EXPECT_THROW(parse_units(bad), UsageError) << bad;
+  EXPECT_EQ(division_name(parse_division("shiftadd:8:trunc")), "shiftadd:8:trunc");
+  EXPECT_EQ(parse_division("shiftadd:12").bits, 12);
+  EXPECT_EQ(parse_division("exact").mode, DIV_EXACT);
+  for (const char* bad : {"shiftadd:0", "shiftadd:31", "shiftadd", "shiftadd:8:round", "divide"})
+    EXPECT_THROW(parse_division(bad), UsageError) << bad;
   EXPECT_EQ(arith_name(parse_arith("fixed:16.8")), "fixed:16.8");
   EXPECT_EQ(parse_arith("fixed").width(), 24);
   for (const char* bad : {"fixed:8.8", "fixed:20.13", "fixed:12.0", "fixed:12", "double"})
