@@ -74,6 +74,20 @@ double constant_span_increment_longest_span(glm::dvec2 a, glm::dvec2 b, glm::dve
   return (i_h - B.i) / (x_h - B.p.x);
 }
 
+void move_plane_anchor(const TriangleGeometry& from, const float* attr, const FixedPlanes* fixed, int x0, int y0,
+                       TriangleGeometry& to, float* attr_to, FixedPlanes* fixed_to) {
+  const double dx = double(x0 - from.x0), dy = double(y0 - from.y0);
+  to.z_ref = float(double(from.z_ref) + double(from.z_ddx) * dx + double(from.z_ddy) * dy);
+  to.z_ddx = from.z_ddx;
+  to.z_ddy = from.z_ddy;
+  std::copy(attr, attr + GOURAUD_ATTR_FLOATS, attr_to);
+  for (int c = 0; c < 3; ++c) attr_to[c] = float(double(attr[c]) + double(attr[3 + c]) * dx + double(attr[6 + c]) * dy);
+  if (!fixed || !fixed_to) return;
+  *fixed_to = *fixed;
+  for (int c = 0; c < 3; ++c)
+    fixed_to->ref[c] = plane_value(fixed->ref[c], fixed->ddx[c], fixed->ddy[c], x0 - from.x0, y0 - from.y0);
+}
+
 std::int64_t to_plane_register(double levels) {
   const double v = std::isnan(levels) ? 0.0 : std::clamp(levels, -kPlaneLimit, kPlaneLimit);
   return std::llround(std::ldexp(v, PLANE_FRAC));

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "parashade/parallel.hpp"
+#include "parashade/setup.hpp"
 
 namespace parashade {
 namespace {
@@ -132,13 +133,7 @@ void split_sierpinski(const ScreenGeometry& g, int depth, bool seal, const Trian
           lr.edge_inv_a[e] = lr.edge_a[e] != 0 ? 1.0f / float(lr.edge_a[e]) : 0.0f;
         }
         // Depth and the float planes: the triangle's own, at this record's corner (the ideal values).
-        const double dx = double(x0 - r.x0), dy = double(y0 - r.y0);
-        lr.z_ref = float(double(r.z_ref) + double(r.z_ddx) * dx + double(r.z_ddy) * dy);
-        lr.z_ddx = r.z_ddx;
-        lr.z_ddy = r.z_ddy;
-        float* la = attr_out + o * GOURAUD_ATTR_FLOATS;
-        std::copy(a, a + GOURAUD_ATTR_FLOATS, la);
-        for (int c = 0; c < 3; ++c) la[c] = float(double(a[c]) + double(a[3 + c]) * dx + double(a[6 + c]) * dy);
+        move_plane_anchor(r, a, nullptr, int(x0), int(y0), lr, attr_out + o * GOURAUD_ATTR_FLOATS, nullptr);
         if (!fixed_out) continue;
         // Fixed planes seen through the map, and the copy's adder constant (modular 64-bit, exact).
         const FixedPlanes& p = fixed_in[t];

@@ -28,6 +28,12 @@ struct SetupStats {
 SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeometry* geometry, float* attributes,
                            FixedPlanes* fixed = nullptr);
 
+// Copies a Gouraud record's depth plane, float attribute planes and (when both are given) fixed planes,
+// re-anchored from `from`'s box corner to pixel (x0, y0); the planes themselves are unchanged. `to`'s
+// other fields are left as they are.
+void move_plane_anchor(const TriangleGeometry& from, const float* attr, const FixedPlanes* fixed, int x0, int y0,
+                       TriangleGeometry& to, float* attr_to, FixedPlanes* fixed_to);
+
 // A plane value or increment in levels into setup's PLANE_FRAC format, rounded to nearest. Magnitudes
 // beyond kPlaneLimit levels saturate there: only slivers thinner than ~2^-14 pixel reach it, and
 // 16 * kPlaneLimit still fits the 64-bit register (interleave:16:own forms 16*dI from it).
