@@ -53,7 +53,8 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
                   __constant float4* lights, __constant float4* materials, float4 viewer, float4 background,
                   int tiles_x, int num_tiles, int width, int height, __global uint* out_rgba,
                   __global float* out_float, __global const FixedPlanes* fixed, __global ulong* tile_clocks,
-                  __global const SierpinskiLeaf* leaves) {
+                  __global const SierpinskiLeaf* leaves, __global const uint* dda_first,
+                  __global const int* dda_rows) {
   for (int tile = get_global_id(0); tile < num_tiles; tile += get_global_size(0)) {
   const int tile_x = (tile % tiles_x) * TILE, tile_y = (tile / tiles_x) * TILE;
 
@@ -90,11 +91,20 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
     /* Every triangle by whole spans: a unit's registers depend on where its span starts and ends. A span
      * is counted (modeled clocks) by the tile that holds its left pixel, so each is counted once. */
     for (int block = row_first; block <= row_last; block += VEC) {
+      const int rows = min(VEC, row_last - block + 1);
+#if DDA_COVERAGE
+      /* The sources' edge walk: the spans come from the host's row table. */
+      for (int j = 0; j < rows; ++j) {
+        const int at = 2 * (int)(dda_first[ti] + (uint)(block + j - y0));
+        span_lo[j] = dda_rows[at];
+        span_hi[j] = dda_rows[at + 1];
+      }
+#else
       intV lo_v, hi_v;
       row_spans(t, lane + (block - y0), &lo_v, &hi_v, 0, t->x1 - x0);
       vstoreV(lo_v, 0, span_lo);
       vstoreV(hi_v, 0, span_hi);
-      const int rows = min(VEC, row_last - block + 1);
+#endif
       for (int j = 0; j < rows; ++j) {
         const int xl = span_lo[j], xr = span_hi[j];
         if (xl > xr) continue;

@@ -68,7 +68,7 @@ std::string kernel_options(const Scene& s, const RenderOptions& o) {
     opt << " -D UNIT_KIND=" << int(u.kind) << " -D UNIT_LANES=" << u.lanes << " -D UNIT_OWN_STEP=" << (u.own_step ? 1 : 0)
         << " -D FIXED=" << (o.arith.fixed ? 1 : 0) << " -D FRAC_BITS=" << o.arith.frac_bits
         << " -D REG_BITS=" << o.arith.width() << " -D SPAN_DIV=" << o.division.mode << " -D DIV_BITS=" << o.division.bits
-        << " -D DIV_NEAREST=" << (o.division.nearest ? 1 : 0);
+        << " -D DIV_NEAREST=" << (o.division.nearest ? 1 : 0) << " -D DDA_COVERAGE=" << (o.dda_coverage ? 1 : 0);
   }
   return opt.str();
 }
@@ -87,6 +87,11 @@ Renderer::Renderer(Device& device, RenderOptions options) : device_(device), opt
   if (options_.unit_path() && options_.method != Method::gouraud)
     throw UsageError(std::string("the shading units (--units, --arith fixed) model Gouraud's code interpolators; method '") +
                      method_name(options_.method) + "' has no unit model yet");
+  if (options_.dda_coverage && options_.unit().kind == UnitKind::sierpinski)
+    throw UsageError("--coverage dda does not combine with --units " + unit_name(options_.unit()) +
+                     " (its copies need pixel-centre coverage)");
+  if (options_.dda_coverage && options_.method != Method::gouraud)
+    throw UsageError("--coverage dda is modeled for Gouraud's units only");
   if (options_.division.mode != DIV_CONSTANT) {
     const UnitConfig u = options_.unit();
     if (!options_.arith.fixed)
@@ -169,6 +174,16 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
     q.enqueueUnmapMemObject(leaves_, leaf_ptr);
   } else {
     s.triangles_without_pixels = setup_triangles(geometry_, method, tri_ptr, attr_ptr, fixed_ptr).without_pixels;
+    if (options_.dda_coverage) {
+      q.finish();  // the previous frame's row table may still be in flight
+      dda_ = apply_dda_coverage(geometry_, tri_ptr, attr_ptr, fixed_ptr);
+      const std::size_t first_bytes = dda_.first.size() * sizeof(std::uint32_t);
+      const std::size_t rows_bytes = dda_.rows.size() * sizeof(std::int32_t);
+      ensure(dda_first_, dda_first_cap_, first_bytes, CL_MEM_READ_ONLY);
+      ensure(dda_rows_, dda_rows_cap_, rows_bytes, CL_MEM_READ_ONLY);
+      if (first_bytes) q.enqueueWriteBuffer(dda_first_, CL_FALSE, 0, first_bytes, dda_.first.data());
+      if (rows_bytes) q.enqueueWriteBuffer(dda_rows_, CL_FALSE, 0, rows_bytes, dda_.rows.data());
+    }
   }
   if (fixed_ptr) q.enqueueUnmapMemObject(fixed_, fixed_ptr);
   q.enqueueUnmapMemObject(attrs_, attr_ptr);
@@ -276,6 +291,12 @@ const Frame& Renderer::render(const Scene& scene) {
     kernel.setArg(14, fixed_);
     kernel.setArg(15, tile_clocks_);
     kernel.setArg(16, leaves_);
+    if (!options_.dda_coverage) {
+      ensure(dda_first_, dda_first_cap_, 64, CL_MEM_READ_ONLY);
+      ensure(dda_rows_, dda_rows_cap_, 64, CL_MEM_READ_ONLY);
+    }
+    kernel.setArg(17, dda_first_);
+    kernel.setArg(18, dda_rows_);
     // The kernel, then the map that makes the frame valid in the image's memory (on a CPU device the
     // kernel wrote it there already): one wait for both. The frame stays mapped until the next render.
     auto t0 = Clock::now();

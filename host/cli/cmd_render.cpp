@@ -22,7 +22,8 @@ namespace parashade::cli {
 namespace {
 
 struct RenderArgs {
-  std::string scene, output, method = "gouraud", device, size, report, units, arith = "float", division = "constant";
+  std::string scene, output, method = "gouraud", device, size, report, units, arith = "float", division = "constant",
+              coverage = "centre";
   int frames = 5, warmup = 1, tile = 16, work_items = 0;
   bool float_output = false, no_error = false, quiet = false;
 };
@@ -83,6 +84,9 @@ int run_render(const RenderArgs& a) {
   if (!a.units.empty()) options.units = parse_units(a.units);
   options.arith = parse_arith(a.arith);
   options.division = parse_division(a.division);
+  if (a.coverage != "centre" && a.coverage != "dda")
+    throw UsageError("unknown coverage '" + a.coverage + "' (valid: centre, dda)");
+  options.dda_coverage = a.coverage == "dda";
   const auto size = parse_size(a.size);
   if (a.frames < 1) throw UsageError("--frames must be at least 1");
   if (a.warmup < 0) throw UsageError("--warmup must not be negative");
@@ -155,6 +159,7 @@ int run_render(const RenderArgs& a) {
     report["units"] = unit_name(options.unit());
     report["arith"] = arith_name(options.arith);
     report["span_division"] = division_name(options.division);
+    report["coverage"] = a.coverage;
     report["modeled_clocks"] = to_json(frame.stats.clocks);
   }
   if (!a.report.empty()) {
@@ -215,6 +220,10 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("--div", a->division,
                   "Span increment: constant (dI_G once per triangle), or a division per span: exact, shiftadd:N "
                   "(n digits of 1/k, rounded as the sources' Table 1), shiftadd:N:trunc; needs --arith fixed")
+      ->capture_default_str();
+  cmd->add_option("--coverage", a->coverage,
+                  "Coverage: centre (pixel centres, top-left rule) or dda (the sources' edge walk; Gouraud units; "
+                  "differences show as coverage mismatches against the reference)")
       ->capture_default_str();
   cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
   cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <map>
+#include <climits>
+#include <cstdint>
 
 namespace parashade {
 
@@ -33,17 +34,25 @@ std::vector<glm::ivec2> dda_segment(glm::ivec2 a, glm::ivec2 b) {
   return out;
 }
 
-std::vector<glm::ivec2> dda_fill(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
-  std::map<int, std::pair<int, int>> rows;  // y -> [leftmost, rightmost] edge pixel
+DdaSpans dda_spans(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
+  DdaSpans s;
+  s.y0 = std::min({a.y, b.y, c.y});
+  const int y1 = std::max({a.y, b.y, c.y});
+  s.rows.assign(std::size_t(y1 - s.y0) + 1, glm::ivec2(INT32_MAX, INT32_MIN));
   for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}}) {
     for (const glm::ivec2 px : dda_segment(p, q)) {
-      auto [it, fresh] = rows.try_emplace(px.y, px.x, px.x);
-      if (!fresh) it->second = {std::min(it->second.first, px.x), std::max(it->second.second, px.x)};
+      glm::ivec2& row = s.rows[std::size_t(px.y - s.y0)];
+      row = {std::min(row.x, px.x), std::max(row.y, px.x)};
     }
   }
+  return s;  // every row between the top and bottom vertex holds an edge pixel: the edges are 8-connected
+}
+
+std::vector<glm::ivec2> dda_fill(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
+  const DdaSpans s = dda_spans(a, b, c);
   std::vector<glm::ivec2> out;
-  for (const auto& [y, span] : rows)
-    for (int x = span.first; x <= span.second; ++x) out.push_back({x, y});
+  for (std::size_t i = 0; i < s.rows.size(); ++i)
+    for (int x = s.rows[i].x; x <= s.rows[i].y; ++x) out.push_back({x, s.y0 + int(i)});
   return out;
 }
 

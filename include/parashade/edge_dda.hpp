@@ -16,8 +16,15 @@ namespace parashade {
 // The pixels of the segment a -> b, a first and b last (BP + 1 of them), with each one's clock index.
 std::vector<glm::ivec2> dda_segment(glm::ivec2 a, glm::ivec2 b);
 
-// The triangle's pixels filled the sources' way: every pixel of its three edges, and on each row the
-// pixels between the leftmost and the rightmost edge pixel of that row. Row-major, each pixel once.
+// The triangle's spans filled the sources' way: every pixel of its three edges, and on each row the
+// pixels between the leftmost and the rightmost edge pixel of that row: rows[i] = (xl, xr) of row y0 + i.
+struct DdaSpans {
+  int y0 = 0;
+  std::vector<glm::ivec2> rows;
+};
+DdaSpans dda_spans(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c);
+
+// The same as pixels, row-major, each pixel once.
 std::vector<glm::ivec2> dda_fill(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c);
 
 // delta_E along one edge a -> b of the triangle (a, b, c) with vertex intensities ia, ib, ic: the largest

@@ -8,6 +8,7 @@
 #include <CL/opencl.hpp>
 
 #include "parashade/binning.hpp"
+#include "parashade/dda_coverage.hpp"
 #include "parashade/device.hpp"
 #include "parashade/image.hpp"
 #include "parashade/method.hpp"
@@ -27,7 +28,8 @@ struct RenderOptions {
   std::optional<UnitConfig> units;
   Arithmetic arith;
   SpanDivision division;  // fixed point: the span increment by a division per span (--div)
-  bool unit_path() const { return units.has_value() || arith.fixed; }
+  bool dda_coverage = false;  // the sources' edge-walking coverage instead of pixel centres (--coverage dda)
+  bool unit_path() const { return units.has_value() || arith.fixed || dda_coverage; }
   UnitConfig unit() const { return units.value_or(UnitConfig{}); }
 };
 
@@ -85,12 +87,14 @@ class Renderer {
   Frame frame_;
   Binner binner_;
   cl::Buffer tris_, attrs_, tile_start_, tile_tris_, lights_, materials_, out_rgba_, out_float_, counts_, fixed_,
-      tile_clocks_, leaves_;
+      tile_clocks_, leaves_, dda_first_, dda_rows_;
+  DdaRowTable dda_;  // the last frame's row table (uploaded without waiting: it must outlive the copy)
   void* mapped_rgba_ = nullptr;   // the last frame's image, mapped for the host until the next render
   void* rgba_host_ = nullptr;       // the memory out_rgba_ was created on (frame_.image.rgba)
   std::size_t tris_cap_ = 0, attrs_cap_ = 0, start_cap_ = 0, list_cap_ = 0, lights_cap_ = 0, materials_cap_ = 0,
               float_cap_ = 0, counts_cap_ = 0, fixed_cap_ = 0,
-              tile_clocks_cap_ = 0, leaves_cap_ = 0;
+              tile_clocks_cap_ = 0, leaves_cap_ = 0,
+              dda_first_cap_ = 0, dda_rows_cap_ = 0;
 };
 
 }  // namespace parashade

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "cl_fixture.hpp"
+#include "parashade/dda_coverage.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/golden_units.hpp"
 #include "parashade/reference.hpp"
@@ -69,15 +70,22 @@ struct Records {
   std::vector<TriangleGeometry> geometry;
   std::vector<FixedPlanes> planes;
   std::vector<SierpinskiLeaf> leaves;
+  DdaRowTable dda;  // --coverage dda: the spans
+  Span span(std::size_t t, int dy) const {
+    if (dda.first.empty()) return record_span(geometry[t], dy);
+    const std::size_t at = 2 * (dda.first[t] + std::size_t(dy));
+    return {dda.rows[at], dda.rows[at + 1]};
+  }
 };
 
-Records frame_records(const ScreenGeometry& g, const UnitConfig& unit) {
+Records frame_records(const ScreenGeometry& g, const UnitConfig& unit, bool dda_coverage = false) {
   const std::size_t n = g.triangles.size();
   Records r;
   r.geometry.resize(n);
   r.planes.resize(n);
   std::vector<float> attrs(n * attribute_floats(Method::gouraud));
   setup_triangles(g, Method::gouraud, r.geometry.data(), attrs.data(), r.planes.data());
+  if (dda_coverage) r.dda = apply_dda_coverage(g, r.geometry.data(), attrs.data(), r.planes.data());
   if (unit.kind != UnitKind::sierpinski) return r;
   const std::size_t m = n << (2 * unit.depth);
   Records split;
@@ -91,16 +99,17 @@ Records frame_records(const ScreenGeometry& g, const UnitConfig& unit) {
 }
 
 Check compare_with_golden(const Scene& scene, const UnitConfig& unit, const Arithmetic& arith,
-                          const SpanDivision& division = {}) {
+                          const SpanDivision& division = {}, bool dda_coverage = false) {
   RenderOptions o;
   o.method = Method::gouraud;
   o.float_output = true;
   o.units = unit;
   o.arith = arith;
   o.division = division;
+  o.dda_coverage = dda_coverage;
   Renderer renderer(test_device(), o);
   const Frame& frame = renderer.render(scene);
-  const Records records = frame_records(renderer.geometry(), unit);
+  const Records records = frame_records(renderer.geometry(), unit, dda_coverage);
 
   // Golden values per pixel and channel: normally one; a pixel that two sub-triangles of the
   // sierpinski unit both cover may take either (equal depths: whichever the kernel kept).
@@ -114,7 +123,7 @@ Check compare_with_golden(const Scene& scene, const UnitConfig& unit, const Arit
     if (r.x0 > r.x1) continue;
     const SierpinskiLeaf* leaf = records.leaves.empty() ? nullptr : &records.leaves[t];
     for (int dy = 0; dy <= r.y1 - r.y0; ++dy) {
-      const Span s = record_span(r, dy);
+      const Span s = records.span(t, dy);
       if (s.xl > s.xr) continue;
       const bool costs = !leaf || leaf->shaded;
       c.spans += costs;
@@ -188,6 +197,18 @@ TEST(UnitGoldenDivision, KernelEqualsGoldenModelWithADivisionPerSpan) {
     const Check c = compare_with_golden(scene, parse_units(unit), parse_arith("fixed:12.10"), parse_division(division));
     EXPECT_GT(c.pixels, 3u * 5000u);
     EXPECT_EQ(c.mismatches, 0u) << unit << " --div " << division;
+  }
+}
+
+// --coverage dda: the spans of the sources' edge walk (host row table) through the same units.
+TEST(UnitGoldenDda, KernelEqualsGoldenModelOnEdgeWalkedSpans) {
+  std::mt19937 rng(17);
+  Scene scene = pixel_scene(525, 301);
+  add_object(scene, grid_triangles(525, 301, 29, rng));
+  for (const char* unit : {"classic", "counter", "interleave:3:own", "segment:16"}) {
+    const Check c = compare_with_golden(scene, parse_units(unit), parse_arith("fixed:12.12"), {}, true);
+    EXPECT_GT(c.pixels, 3u * 5000u);
+    EXPECT_EQ(c.mismatches, 0u) << unit << " --coverage dda";
   }
 }
 
