@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
       "Exit codes: 0 ok, 2 usage error, 3 bad input (scene, mesh, values), 4 OpenCL or device failure.\n"
       "Run 'parashade COMMAND --help' for a command's options.");
   const std::vector<cli::Command> commands = {cli::add_devices_command(app), cli::add_render_command(app),
+                                              cli::add_scaling_command(app),
                                               cli::add_unit_error_command(app)};
   try {
     app.parse(argc, argv);

@@ -1,0 +1,369 @@
+// parashade scaling: Gouraud through each modeled shading unit in turn (units.hpp), per unit and span
+// arithmetic the modeled clocks of a frame and the measured frame time on the device, each against the
+// classic one-intensity-per-clock unit in the same arithmetic, and the error against the ideal Gouraud.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <iterator>
+#include <memory>
+#include <optional>
+#include <regex>
+#include <set>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "parashade/errors.hpp"
+#include "parashade/geometry_stage.hpp"
+#include "parashade/metrics.hpp"
+#include "parashade/reference.hpp"
+#include "parashade/renderer.hpp"
+#include "parashade/report.hpp"
+#include "parashade/scene.hpp"
+#include "parashade/statistics.hpp"
+#include "parashade/units.hpp"
+
+namespace parashade::cli {
+namespace {
+
+const char* const kDefaultUnits =
+    "classic,counter,interleave:1,interleave:2,interleave:3,interleave:4,interleave:8,interleave:16,"
+    "interleave:2:own,interleave:4:own,segment:2,segment:4,segment:8,segment:16,segment:32,segment:64";
+const char* const kDefaultArith = "fixed:12.12";
+
+struct ScalingArgs {
+  std::string scene, units = kDefaultUnits, arith = kDefaultArith, size, device, report;
+  int frames = 5, warmup = 1;
+  bool float_output = false, markdown = false, quiet = false;
+};
+
+// "a,b,c" -> {"a", "b", "c"}; an empty entry is a usage error naming the option.
+std::vector<std::string> split_list(const std::string& list, const std::string& option) {
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = list.find(',', start);
+    const std::string item = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (item.empty()) throw UsageError(option + " '" + list + "' has an empty entry (a comma-separated list)");
+    items.push_back(item);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return items;
+}
+
+std::optional<std::pair<int, int>> parse_size(const std::string& size) {
+  if (size.empty()) return std::nullopt;
+  std::smatch m;
+  if (!std::regex_match(size, m, std::regex(R"((\d{1,9})x(\d{1,9}))")))
+    throw UsageError("--size '" + size + "' is not of the form WIDTHxHEIGHT, e.g. 1920x1080");
+  return std::make_pair(std::stoi(m[1]), std::stoi(m[2]));
+}
+
+void check_report_destination(const std::filesystem::path& report) {
+  const std::filesystem::path dir = report.parent_path().empty() ? "." : report.parent_path();
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec))
+    throw InputError("cannot write '" + report.string() + "': directory '" + dir.string() + "' does not exist");
+  if (std::filesystem::is_directory(report, ec))
+    throw InputError("cannot write '" + report.string() + "': it is a directory");
+}
+
+// One configuration: its renderer (kept for the whole run, so that programs and buffers are warm when
+// the timed frames go round), what the warm-up frame showed, and the timed frames.
+struct Config {
+  UnitConfig unit;
+  Arithmetic arith;
+  std::unique_ptr<Renderer> renderer;
+  ModeledClocks clocks;
+  GeometryStats geometry;
+  ErrorMetrics ideal, exact;
+  std::vector<double> total_ms, kernel_ms;
+  double frame_ms = 0, kernel_med_ms = 0, frame_min_ms = 0, kernel_min_ms = 0;
+  const Config* classic = nullptr;  // classic in the same arithmetic, when it is in the list
+  std::string name() const { return unit_name(unit); }
+};
+
+double ratio(double baseline, double value) { return value > 0 ? baseline / value : 0.0; }
+
+double pixels_per_clock(const ModeledClocks& c) { return c.clocks ? double(c.pixels) / double(c.clocks) : 0.0; }
+
+std::optional<double> modeled_speedup(const Config& c) {
+  if (!c.classic) return std::nullopt;
+  return ratio(double(c.classic->clocks.clocks), double(c.clocks.clocks));
+}
+std::optional<double> measured_speedup(const Config& c) {
+  if (!c.classic) return std::nullopt;
+  return ratio(c.classic->frame_ms, c.frame_ms);
+}
+std::optional<double> kernel_speedup(const Config& c) {
+  if (!c.classic) return std::nullopt;
+  return ratio(c.classic->kernel_med_ms, c.kernel_med_ms);
+}
+
+nlohmann::json optional_number(const std::optional<double>& v) { return v ? number_or_null(*v) : nlohmann::json(); }
+
+std::string fixed_or_dash(const std::optional<double>& v, const char* format) {
+  if (!v) return "-";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, *v);
+  return buf;
+}
+
+// 1234567 -> "1 234 567"
+std::string grouped(std::uint64_t v) {
+  std::string digits = std::to_string(v), out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i && (digits.size() - i) % 3 == 0) out += ' ';
+    out += digits[i];
+  }
+  return out;
+}
+
+void print_table(const std::vector<Config>& configs, bool markdown) {
+  const char* head[] = {"unit", "arith", "clocks/frame", "modeled x", "px/clock", "frame ms", "measured x",
+                        "kernel ms", "kernel min", "max abs", "NMSE"};
+  std::vector<std::vector<std::string>> rows;
+  for (const Config& c : configs) {
+    char ppc[32], frame[32], kernel[32], kernel_min[32], max_abs[32], nmse[32];
+    std::snprintf(ppc, sizeof ppc, "%.3f", pixels_per_clock(c.clocks));
+    std::snprintf(frame, sizeof frame, "%.2f", c.frame_ms);
+    std::snprintf(kernel, sizeof kernel, "%.2f", c.kernel_med_ms);
+    std::snprintf(kernel_min, sizeof kernel_min, "%.2f", c.kernel_min_ms);
+    std::snprintf(max_abs, sizeof max_abs, "%.3g", c.ideal.max_abs);
+    std::snprintf(nmse, sizeof nmse, "%.3g", c.ideal.nmse);
+    rows.push_back({c.name(), arith_name(c.arith), grouped(c.clocks.clocks), fixed_or_dash(modeled_speedup(c), "%.2f"),
+                    ppc, frame, fixed_or_dash(measured_speedup(c), "%.2f"), kernel, kernel_min, max_abs, nmse});
+  }
+  const std::size_t n = std::size(head);
+  if (markdown) {
+    std::string line = "|", rule = "|";
+    for (std::size_t i = 0; i < n; ++i) {
+      line += std::string(" ") + head[i] + " |";
+      rule += i < 2 ? "---|" : "---:|";
+    }
+    std::printf("%s\n%s\n", line.c_str(), rule.c_str());
+    for (const auto& r : rows) {
+      std::string l = "|";
+      for (const auto& cell : r) l += " " + cell + " |";
+      std::printf("%s\n", l.c_str());
+    }
+    return;
+  }
+  std::vector<std::size_t> width(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    width[i] = std::string(head[i]).size();
+    for (const auto& r : rows) width[i] = std::max(width[i], r[i].size());
+  }
+  const auto print_row = [&](const std::vector<std::string>& r) {
+    std::string l;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::string pad(width[i] - r[i].size(), ' ');
+      l += (i ? "  " : "") + (i < 2 ? r[i] + pad : pad + r[i]);  // names left, numbers right
+    }
+    while (!l.empty() && l.back() == ' ') l.pop_back();
+    std::printf("%s\n", l.c_str());
+  };
+  print_row(std::vector<std::string>(head, head + n));
+  for (const auto& r : rows) print_row(r);
+}
+
+int run_scaling(const ScalingArgs& a) {
+  // The command line first (usage errors, exit 2), then the scene and the destination (exit 3), then the device.
+  std::vector<UnitConfig> units;
+  {
+    std::set<std::string> seen;
+    for (const std::string& spec : split_list(a.units, "--units")) {
+      const UnitConfig u = parse_units(spec);
+      if (!seen.insert(unit_name(u)).second)
+        throw UsageError("--units lists '" + spec + "' twice (as " + unit_name(u) + ")");
+      units.push_back(u);
+    }
+  }
+  std::vector<Arithmetic> ariths;
+  {
+    std::set<std::string> seen;
+    for (const std::string& spec : split_list(a.arith, "--arith")) {
+      const Arithmetic ar = parse_arith(spec);
+      if (!seen.insert(arith_name(ar)).second)
+        throw UsageError("--arith lists '" + spec + "' twice (as " + arith_name(ar) + ")");
+      ariths.push_back(ar);
+    }
+  }
+  const auto size = parse_size(a.size);
+  if (a.frames < 1) throw UsageError("--frames must be at least 1");
+  if (a.warmup < 1) throw UsageError("--warmup must be at least 1 (the warm-up frame gives the error figures)");
+
+  Scene scene = load_scene(a.scene);
+  if (size) {
+    std::tie(scene.width, scene.height) = *size;
+    check_resolution(scene.width, scene.height, "--size " + a.size);
+  }
+  check_resolution(scene.width, scene.height, "scene '" + a.scene + "'");
+  if (!a.report.empty()) check_report_destination(a.report);
+
+  auto device = open_device(a.device);
+  const DeviceInfo& dev = device->info();
+
+  // The exact reference, once for the scene: every configuration shades the same screen triangles.
+  if (!a.quiet)
+    std::cerr << "scaling " << scene.name << " (" << scene.width << "x" << scene.height << ", "
+              << scene.triangle_count() << " triangles) on " << dev.name << ": exact reference ...\n";
+  ScreenGeometry g;
+  build_screen_geometry(scene, {Method::gouraud, true}, g);
+  const ReferenceImage ref = render_reference(scene, g, Method::gouraud);
+
+  std::vector<Config> configs;
+  for (const Arithmetic& ar : ariths)
+    for (const UnitConfig& u : units) {
+      Config c;
+      c.unit = u;
+      c.arith = ar;
+      configs.push_back(std::move(c));
+    }
+  for (Config& c : configs)
+    for (const Config& other : configs)
+      if (other.unit.kind == UnitKind::classic && arith_name(other.arith) == arith_name(c.arith)) c.classic = &other;
+
+  // Warm-up: every configuration's program is built and its buffers allocated before any timed frame;
+  // the last warm-up frame gives the modeled clocks and the error (the units are deterministic).
+  const std::size_t total = configs.size();
+  for (std::size_t i = 0; i < total; ++i) {
+    Config& c = configs[i];
+    if (!a.quiet)
+      std::cerr << "[" << i + 1 << "/" << total << "] " << c.name() << " " << arith_name(c.arith)
+                << ": warm-up, modeled clocks, error ...\n";
+    RenderOptions options;
+    options.method = Method::gouraud;
+    options.float_output = a.float_output;
+    options.units = c.unit;
+    options.arith = c.arith;
+    c.renderer = std::make_unique<Renderer>(*device, options);
+    const Frame* f = nullptr;
+    for (int w = 0; w < a.warmup; ++w) f = &c.renderer->render(scene);
+    c.clocks = f->stats.clocks;
+    c.geometry = f->stats.geometry;
+    c.ideal = compare_to_reference(f->image, ref.covered, ref.ideal, "ideal gouraud");
+    c.exact = compare_to_reference(f->image, ref.covered, ref.exact, "exact phong");
+  }
+
+  // Timed frames round-robin, each round starting one configuration later: on a noisy shared machine a
+  // slow spell then falls on every configuration alike instead of on whichever ran during it.
+  for (int round = 0; round < a.frames; ++round) {
+    if (!a.quiet)
+      std::cerr << "timing round " << round + 1 << "/" << a.frames << " (" << total << " configurations) ...\n";
+    for (std::size_t k = 0; k < total; ++k) {
+      Config& c = configs[(k + std::size_t(round)) % total];
+      const Frame& f = c.renderer->render(scene);
+      c.total_ms.push_back(f.timings.total_ms);
+      c.kernel_ms.push_back(f.timings.kernel_ms);
+    }
+  }
+  for (Config& c : configs) {
+    c.frame_ms = median(c.total_ms);
+    c.kernel_med_ms = median(c.kernel_ms);
+    c.frame_min_ms = *std::min_element(c.total_ms.begin(), c.total_ms.end());
+    c.kernel_min_ms = *std::min_element(c.kernel_ms.begin(), c.kernel_ms.end());
+  }
+
+  nlohmann::json rows = nlohmann::json::array();
+  for (const Config& c : configs) {
+    rows.push_back({{"unit", c.name()},
+                    {"arith", arith_name(c.arith)},
+                    {"modeled_clocks", to_json(c.clocks)},
+                    {"pixels_per_clock", pixels_per_clock(c.clocks)},
+                    {"modeled_speedup", optional_number(modeled_speedup(c))},
+                    {"frame_ms", c.frame_ms},
+                    {"frame_ms_min", c.frame_min_ms},
+                    {"frame_ms_samples", c.total_ms},
+                    {"measured_speedup", optional_number(measured_speedup(c))},
+                    {"kernel_ms", c.kernel_med_ms},
+                    {"kernel_ms_min", c.kernel_min_ms},
+                    {"kernel_ms_samples", c.kernel_ms},
+                    {"kernel_speedup", optional_number(kernel_speedup(c))},
+                    {"error", {{"implementation", to_json(c.ideal)}, {"method", to_json(c.exact)}}}});
+  }
+  const GeometryStats& geo = configs.front().geometry;
+  const nlohmann::json report = {
+      {"scene", scene.name},
+      {"scene_file", a.scene},
+      {"device", to_json(dev)},
+      {"method", "gouraud"},
+      {"width", scene.width},
+      {"height", scene.height},
+      {"triangles", {{"in", geo.triangles_in}, {"after_culling", geo.triangles_out}}},
+      {"frames", a.frames},
+      {"warmup", a.warmup},
+      {"float_output", a.float_output},
+      {"frame_ms_note", "median of " + std::to_string(a.frames) + " frames per configuration after " +
+                            std::to_string(a.warmup) +
+                            " warm-up frame(s) each, round-robin across configurations; whole frame: geometry, "
+                            "setup, binning, kernel, read-back"},
+      {"speedup_note", "classic in the same arithmetic divided by the configuration (modeled clocks, frame_ms, "
+                       "kernel_ms); null when classic is not in the list"},
+      {"rows", rows}};
+  if (!a.report.empty()) write_text_atomically(a.report, report.dump(2) + "\n");
+
+  std::printf("%s: %dx%d, %llu triangles (%llu after culling and clipping), Gouraud through modeled shading units\n",
+              scene.name.c_str(), scene.width, scene.height, (unsigned long long)geo.triangles_in,
+              (unsigned long long)geo.triangles_out);
+  std::printf("device: %s (%s), %d compute units\n", dev.name.c_str(), dev.platform.c_str(), dev.compute_units);
+  bool same_spans = true;
+  for (const Config& c : configs)
+    same_spans = same_spans && c.clocks.spans == configs.front().clocks.spans &&
+                 c.clocks.pixels == configs.front().clocks.pixels;
+  if (same_spans)
+    std::printf("modeled: %llu spans, %llu span pixels per frame; clocks = spans x %d + the unit's clocks per span\n",
+                (unsigned long long)configs.front().clocks.spans, (unsigned long long)configs.front().clocks.pixels,
+                SPAN_LOAD_CLOCKS);
+  else
+    std::printf("modeled: spans and span pixels differ between the units (the report has them per row)\n");
+  std::printf("measured: median of %d frame(s) per configuration after %d warm-up, round-robin; whole frame "
+              "(geometry, setup, binning, kernel, read-back); x = classic (same arith) / this; kernel min = fastest "
+              "kernel of the %d\n",
+              a.frames, a.warmup, a.frames);
+  std::printf("error: against the ideal Gouraud (exact reference, double precision), %s, in levels\n",
+              a.float_output ? "unclamped float output" : "8-bit output");
+  print_table(configs, a.markdown);
+  if (!a.report.empty()) std::printf("wrote %s\n", a.report.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Command add_scaling_command(CLI::App& app) {
+  auto a = std::make_shared<ScalingArgs>();
+  auto* cmd = app.add_subcommand(
+      "scaling",
+      "Sweep the modeled shading units (Gouraud): per unit and arithmetic the modeled clocks per frame, the "
+      "measured frame and kernel time, both as speed-up over classic in the same arithmetic, and the error "
+      "against the ideal Gouraud");
+  cmd->add_option("scene", a->scene, "Scene file (.json) or mesh (.obj .off .ply .stl)")->required();
+  cmd->add_option("--units", a->units,
+                  "Comma-separated units, each as render --units takes it: classic, counter, interleave:M[:own] "
+                  "(M = 1..16), segment:P (P = 2..64, power of two), sierpinski[:D]...; include classic for the "
+                  "speed-ups")
+      ->capture_default_str();
+  cmd->add_option("--arith", a->arith,
+                  "Comma-separated span arithmetics: float, fixed (= fixed:12.12), fixed:I.F (I >= 9, I + F <= 32)")
+      ->capture_default_str();
+  cmd->add_option("--size", a->size, "Resolution WIDTHxHEIGHT (at most 4096x4096), overriding the scene's");
+  cmd->add_option("--frames", a->frames, "Timed frames per configuration (round-robin); the median is reported")
+      ->capture_default_str();
+  cmd->add_option("--warmup", a->warmup,
+                  "Untimed frames per configuration first (program build; the last gives clocks and error)")
+      ->capture_default_str();
+  cmd->add_option("--device", a->device, "OpenCL device: index or name substring (see 'parashade devices')");
+  cmd->add_option("--report", a->report, "Write a JSON report: every row, the device");
+  cmd->add_flag("--float", a->float_output, "Error of the unclamped float values instead of the 8-bit image");
+  cmd->add_flag("--markdown", a->markdown, "Print the table as Markdown");
+  cmd->add_flag("-q,--quiet", a->quiet, "No progress lines");
+  return {cmd, [a]() { return run_scaling(*a); }};
+}
+
+}  // namespace parashade::cli
