@@ -1,7 +1,8 @@
 // Whole frames on an OpenCL device (Google Benchmark): frame time from the renderer's own clock
 // (manual time: vertex stage, setup, binning, kernel, read-back), the stage breakdown, Mpixel/s and
 // Mtriangle/s, for the procedural sphere at three tessellations, the teapot, the robot and the Stanford
-// bunny (PARASHADE_MESH_DIR) at 1920x1080, each method; and the device's fill limit as the ceiling.
+// bunny (PARASHADE_MESH_DIR) at 1920x1080, each method; Gouraud on the teapot through the modeled shading
+// units (units/teapot/UNIT/ARITH, with the modeled clocks); and the device's fill limit as the ceiling.
 //   PARASHADE_DEVICE  device index or name substring (default: the first device)
 //   PARASHADE_MESH_DIR  the shared meshes; the bunny is skipped (with a message) without it
 // Write results with --benchmark_out=FILE --benchmark_out_format=json (PoCL may print to stdout).
@@ -10,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include <benchmark/benchmark.h>
 
@@ -17,6 +19,7 @@
 #include "parashade/renderer.hpp"
 #include "parashade/scene.hpp"
 #include "parashade/shapes.hpp"
+#include "parashade/units.hpp"
 
 namespace parashade {
 namespace {
@@ -51,7 +54,14 @@ const Scene& scene_named(const std::string& name) {
   return cache.emplace(name, std::move(s)).first->second;
 }
 
-void frame_benchmark(benchmark::State& state, const std::string& scene_name, Method method) {
+// 8-bit output, 16x16 tiles, 16 work-items per compute unit (the defaults), plain method path.
+RenderOptions method_options(Method method) {
+  RenderOptions o;
+  o.method = method;
+  return o;
+}
+
+void frame_benchmark(benchmark::State& state, const std::string& scene_name, const RenderOptions& options) {
   const Scene* scene = nullptr;
   try {
     scene = &scene_named(scene_name);
@@ -59,12 +69,14 @@ void frame_benchmark(benchmark::State& state, const std::string& scene_name, Met
     state.SkipWithError(e.what());
     return;
   }
-  Renderer renderer(bench_device(), {method, false, 16, 0});
+  Renderer renderer(bench_device(), options);
   for (int i = 0; i < 2; ++i) renderer.render(*scene);  // program build, work-group compilation, allocations
   FrameTimings sum;
   std::uint64_t triangles_out = 0;
+  ModeledClocks clocks;
   for (auto _ : state) {
     const Frame& f = renderer.render(*scene);
+    clocks = f.stats.clocks;  // the same every frame
     state.SetIterationTime(f.timings.total_ms * 1e-3);
     sum.total_ms += f.timings.total_ms;
     sum.geometry_ms += f.timings.geometry_ms;
@@ -88,6 +100,10 @@ void frame_benchmark(benchmark::State& state, const std::string& scene_name, Met
   state.counters["mtriangle_per_s"] = double(scene->triangle_count()) / (frame_ms * 1e3);
   state.counters["triangles_in"] = double(scene->triangle_count());
   state.counters["triangles_after_culling"] = double(triangles_out);
+  if (options.unit_path()) {  // the modeled hardware's cost of the same frame
+    state.counters["modeled_clocks"] = double(clocks.clocks);
+    state.counters["pixels_per_clock"] = clocks.clocks ? double(clocks.pixels) / double(clocks.clocks) : 0.0;
+  }
 }
 
 // The ceiling: a kernel that only writes every pixel of a 1920x1080 RGBA8 frame.
@@ -126,9 +142,26 @@ void register_all() {
   for (const std::string& scene : scenes)
     for (Method method : {Method::flat, Method::gouraud, Method::phong})
       benchmark::RegisterBenchmark(("frame/" + scene + "/" + method_name(method)).c_str(),
-                                   [scene, method](benchmark::State& st) { frame_benchmark(st, scene, method); })
+                                   [scene, method](benchmark::State& st) {
+                                     frame_benchmark(st, scene, method_options(method));
+                                   })
           ->UseManualTime()
           ->Unit(benchmark::kMillisecond);
+  // Gouraud through the modeled shading units on the teapot (1920x1080): the same frame, a different unit
+  // or span arithmetic; modeled_clocks and pixels_per_clock beside the measured time.
+  const std::pair<const char*, const char*> unit_cases[] = {
+      {"classic", "fixed:12.12"},      {"counter", "fixed:12.12"},          {"interleave:2", "fixed:12.12"},
+      {"interleave:4", "fixed:12.12"}, {"interleave:4:own", "fixed:12.12"}, {"segment:8", "fixed:12.12"},
+      {"segment:64", "fixed:12.12"},   {"classic", "float"}};
+  for (const auto& [unit, arith] : unit_cases) {
+    RenderOptions options = method_options(Method::gouraud);
+    options.units = parse_units(unit);
+    options.arith = parse_arith(arith);
+    benchmark::RegisterBenchmark(("units/teapot/" + std::string(unit) + "/" + arith).c_str(),
+                                 [options](benchmark::State& st) { frame_benchmark(st, "teapot", options); })
+        ->UseManualTime()
+        ->Unit(benchmark::kMillisecond);
+  }
   benchmark::RegisterBenchmark("fill_limit/1920x1080", fill_limit)->UseManualTime()->Unit(benchmark::kMillisecond);
 }
 
