@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_args.hpp"
 #include "commands.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/geometry_stage.hpp"
@@ -27,26 +28,6 @@ struct RenderArgs {
   int frames = 5, warmup = 1, tile = 16, work_items = 0;
   bool float_output = false, no_error = false, quiet = false;
 };
-
-// --size WIDTHxHEIGHT (nullopt when absent). Only the syntax, so that a usage error is reported before
-// the scene is read; the limit is checked with the scene's own resolution.
-std::optional<std::pair<int, int>> parse_size(const std::string& size) {
-  if (size.empty()) return std::nullopt;
-  std::smatch m;
-  if (!std::regex_match(size, m, std::regex(R"((\d{1,9})x(\d{1,9}))")))
-    throw UsageError("--size '" + size + "' is not of the form WIDTHxHEIGHT, e.g. 1920x1080");
-  return std::make_pair(std::stoi(m[1]), std::stoi(m[2]));
-}
-
-// The report is written after the image; a folder that is not there must stop the run before either.
-void check_report_destination(const std::filesystem::path& report) {
-  const std::filesystem::path dir = report.parent_path().empty() ? "." : report.parent_path();
-  std::error_code ec;
-  if (!std::filesystem::is_directory(dir, ec))
-    throw InputError("cannot write '" + report.string() + "': directory '" + dir.string() + "' does not exist");
-  if (std::filesystem::is_directory(report, ec))
-    throw InputError("cannot write '" + report.string() + "': it is a directory");
-}
 
 // Median of each stage over the timed frames.
 FrameTimings median_timings(const std::vector<FrameTimings>& f) {
@@ -90,12 +71,7 @@ int run_render(const RenderArgs& a) {
   const auto size = parse_size(a.size);
   if (a.frames < 1) throw UsageError("--frames must be at least 1");
   if (a.warmup < 0) throw UsageError("--warmup must not be negative");
-  Scene scene = load_scene(a.scene);
-  if (size) {
-    std::tie(scene.width, scene.height) = *size;
-    check_resolution(scene.width, scene.height, "--size " + a.size);
-  }
-  check_resolution(scene.width, scene.height, "scene '" + a.scene + "'");
+  Scene scene = load_scene_at(a.scene, size, a.size);
   // Fail on an unwritable output before the work, not after it.
   const std::filesystem::path out_path(a.output);
   check_image_destination(out_path);

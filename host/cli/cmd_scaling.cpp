@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_args.hpp"
 #include "commands.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/geometry_stage.hpp"
@@ -33,7 +34,8 @@ namespace {
 
 const char* const kDefaultUnits =
     "classic,counter,interleave:1,interleave:2,interleave:3,interleave:4,interleave:8,interleave:16,"
-    "interleave:2:own,interleave:4:own,segment:2,segment:4,segment:8,segment:16,segment:32,segment:64";
+    "interleave:2:own,interleave:4:own,segment:2,segment:4,segment:8,segment:16,segment:32,segment:64,"
+    "sierpinski:1:seal,sierpinski:2:seal";
 const char* const kDefaultArith = "fixed:12.12";
 
 struct ScalingArgs {
@@ -41,38 +43,6 @@ struct ScalingArgs {
   int frames = 5, warmup = 1;
   bool float_output = false, markdown = false, quiet = false;
 };
-
-// "a,b,c" -> {"a", "b", "c"}; an empty entry is a usage error naming the option.
-std::vector<std::string> split_list(const std::string& list, const std::string& option) {
-  std::vector<std::string> items;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = list.find(',', start);
-    const std::string item = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    if (item.empty()) throw UsageError(option + " '" + list + "' has an empty entry (a comma-separated list)");
-    items.push_back(item);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return items;
-}
-
-std::optional<std::pair<int, int>> parse_size(const std::string& size) {
-  if (size.empty()) return std::nullopt;
-  std::smatch m;
-  if (!std::regex_match(size, m, std::regex(R"((\d{1,9})x(\d{1,9}))")))
-    throw UsageError("--size '" + size + "' is not of the form WIDTHxHEIGHT, e.g. 1920x1080");
-  return std::make_pair(std::stoi(m[1]), std::stoi(m[2]));
-}
-
-void check_report_destination(const std::filesystem::path& report) {
-  const std::filesystem::path dir = report.parent_path().empty() ? "." : report.parent_path();
-  std::error_code ec;
-  if (!std::filesystem::is_directory(dir, ec))
-    throw InputError("cannot write '" + report.string() + "': directory '" + dir.string() + "' does not exist");
-  if (std::filesystem::is_directory(report, ec))
-    throw InputError("cannot write '" + report.string() + "': it is a directory");
-}
 
 // One configuration: its renderer (kept for the whole run, so that programs and buffers are warm when
 // the timed frames go round), what the warm-up frame showed, and the timed frames.
@@ -199,12 +169,7 @@ int run_scaling(const ScalingArgs& a) {
   if (a.frames < 1) throw UsageError("--frames must be at least 1");
   if (a.warmup < 1) throw UsageError("--warmup must be at least 1 (the warm-up frame gives the error figures)");
 
-  Scene scene = load_scene(a.scene);
-  if (size) {
-    std::tie(scene.width, scene.height) = *size;
-    check_resolution(scene.width, scene.height, "--size " + a.size);
-  }
-  check_resolution(scene.width, scene.height, "scene '" + a.scene + "'");
+  Scene scene = load_scene_at(a.scene, size, a.size);
   if (!a.report.empty()) check_report_destination(a.report);
 
   auto device = open_device(a.device);

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_args.hpp"
 #include "commands.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/report.hpp"
@@ -32,20 +33,9 @@ struct UnitErrorArgs {
 
 constexpr int kMaxLength = 65536;
 
-std::vector<std::string> split_list(const std::string& option, const std::string& list) {
-  std::vector<std::string> items;
-  std::string item;
-  std::istringstream in(list);
-  while (std::getline(in, item, ','))
-    if (item.empty()) throw UsageError(option + " '" + list + "' has an empty item");
-    else items.push_back(item);
-  if (items.empty() || list.back() == ',') throw UsageError(option + " '" + list + "' has an empty item");
-  return items;
-}
-
 std::vector<int> parse_lengths(const std::string& list) {
   std::vector<int> lengths;
-  for (const std::string& item : split_list("--lengths", list)) {
+  for (const std::string& item : split_list(list, "--lengths")) {
     if (!std::regex_match(item, std::regex(R"(\d{1,6})")) || std::stoi(item) < 1 || std::stoi(item) > kMaxLength)
       throw UsageError("--lengths: '" + item + "' is not a span length in 1.." + std::to_string(kMaxLength));
     lengths.push_back(std::stoi(item));
@@ -195,7 +185,7 @@ int run(const UnitErrorArgs& args) {
   const Arithmetic a = parse_arith(args.arith);
   if (!a.fixed) throw UsageError("--arith '" + args.arith + "': the unit error study needs fixed point, fixed:I.F");
   std::vector<UnitConfig> units;
-  for (const std::string& u : split_list("--units", args.units)) {
+  for (const std::string& u : split_list(args.units, "--units")) {
     units.push_back(parse_units(u));
     if (!is_span_unit(units.back()))
       throw UsageError("--units '" + u + "': the study covers the span units classic, counter, interleave:M[:own], segment:P");

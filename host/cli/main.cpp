@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
   try {
     for (const cli::Command& c : commands)
       if (c.app->parsed()) return c.run();
-    std::cerr << "parashade: error: a command is required: devices or render\n"
+    std::cerr << "parashade: error: a command is required: devices, render, scaling or unit-error\n"
                  "Run with --help for more information.\n";
     return int(ExitCode::usage);
   } catch (const Error& e) {

@@ -1,0 +1,27 @@
+#pragma once
+// Command-line values the commands share: lists, sizes, output destinations.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "parashade/scene.hpp"
+
+namespace parashade::cli {
+
+// "a,b,c" -> {"a", "b", "c"}; an empty entry is a usage error naming the option.
+std::vector<std::string> split_list(const std::string& list, const std::string& option);
+
+// --size WIDTHxHEIGHT (nullopt when absent). Only the syntax, so that a usage error is reported before
+// the scene is read; the limit is checked with the scene's own resolution.
+std::optional<std::pair<int, int>> parse_size(const std::string& size);
+
+// The scene file, at `size` when given (--size overrides the scene's resolution); both resolutions are
+// checked against the 12-bit address limit, naming the culprit.
+Scene load_scene_at(const std::string& file, const std::optional<std::pair<int, int>>& size, const std::string& size_text);
+
+// A report is written after the work; a folder that is not there must stop the run before it.
+void check_report_destination(const std::filesystem::path& report);
+
+}  // namespace parashade::cli
