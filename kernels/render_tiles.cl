@@ -101,7 +101,8 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
       }
 #else
       intV lo_v, hi_v;
-      row_spans(t, lane + (block - y0), &lo_v, &hi_v, 0, t->x1 - x0);
+      if (t->flags & TRIANGLE_SMALL) row_spans_small(t, lane + (block - y0), &lo_v, &hi_v, 0, t->x1 - x0);
+      else row_spans(t, lane + (block - y0), &lo_v, &hi_v, 0, t->x1 - x0);
       vstoreV(lo_v, 0, span_lo);
       vstoreV(hi_v, 0, span_hi);
 #endif

@@ -11,6 +11,30 @@
 typedef long16 longV;
 #define convert_longV convert_long16
 
+/* The span search of row_spans for one edge, in vector type T (long or int lanes): r holds E at x = x0 on
+ * each row, a the x increment; narrows [lo_v, hi_v]. */
+#define SETTLE_SPAN_EDGE(T, convert_T, r, a, inv_a, lo_v, hi_v)                                      \
+  do {                                                                                               \
+    if ((a) == 0) {                                                                                  \
+      hi_v = select(hi_v, lo_v - 1, convert_intV((r) < 0));                                          \
+      break;                                                                                         \
+    }                                                                                                \
+    const floatV q = -convert_floatV(r) * (inv_a);                                                   \
+    if ((a) > 0) { /* covered for x >= boundary */                                                   \
+      intV c = convert_intV(ceil(clamp(q, convert_floatV(lo_v), convert_floatV(hi_v + 1))));         \
+      const T cl = convert_T(c);                                                                     \
+      c = select(c, c - 1, (c > lo_v) & convert_intV((r) + (a) * (cl - 1) >= 0));                    \
+      c = select(c, c + 1, (c <= hi_v) & convert_intV((r) + (a) * cl < 0));                          \
+      lo_v = max(lo_v, c);                                                                           \
+    } else { /* covered for x <= boundary */                                                         \
+      intV c = convert_intV(floor(clamp(q, convert_floatV(lo_v - 1), convert_floatV(hi_v))));        \
+      const T cl = convert_T(c);                                                                     \
+      c = select(c, c + 1, (c < hi_v) & convert_intV((r) + (a) * (cl + 1) >= 0));                    \
+      c = select(c, c - 1, (c >= lo_v) & convert_intV((r) + (a) * cl < 0));                          \
+      hi_v = min(hi_v, c);                                                                           \
+    }                                                                                                \
+  } while (0)
+
 /* Row dy (per lane, relative to the record's y0): covered pixels [*lo, *hi] (relative to x0) within
  * the window [lo, hi] given on entry; empty where *lo > *hi. */
 INLINE void row_spans(__global const TriangleGeometry* t, intV dy, intV* lo_out, intV* hi_out, int lo, int hi) {
@@ -19,24 +43,20 @@ INLINE void row_spans(__global const TriangleGeometry* t, intV dy, intV* lo_out,
   for (int e = 0; e < 3; ++e) {
     const long a = t->edge_a[e];
     const longV r = (longV)t->edge_c[e] + dyl * (long)t->edge_b[e]; /* E at x = x0 on each row */
-    if (a == 0) {
-      hi_v = select(hi_v, lo_v - 1, convert_intV(r < 0));
-      continue;
-    }
-    const floatV q = -convert_floatV(r) * t->edge_inv_a[e];
-    if (a > 0) { /* covered for x >= boundary */
-      intV c = convert_intV(ceil(clamp(q, convert_floatV(lo_v), convert_floatV(hi_v + 1))));
-      const longV cl = convert_longV(c);
-      c = select(c, c - 1, (c > lo_v) & convert_intV(r + a * (cl - 1) >= 0));
-      c = select(c, c + 1, (c <= hi_v) & convert_intV(r + a * cl < 0));
-      lo_v = max(lo_v, c);
-    } else { /* covered for x <= boundary */
-      intV c = convert_intV(floor(clamp(q, convert_floatV(lo_v - 1), convert_floatV(hi_v))));
-      const longV cl = convert_longV(c);
-      c = select(c, c + 1, (c < hi_v) & convert_intV(r + a * (cl + 1) >= 0));
-      c = select(c, c - 1, (c >= lo_v) & convert_intV(r + a * cl < 0));
-      hi_v = min(hi_v, c);
-    }
+    SETTLE_SPAN_EDGE(longV, convert_longV, r, a, t->edge_inv_a[e], lo_v, hi_v);
+  }
+  *lo_out = lo_v;
+  *hi_out = hi_v;
+}
+
+/* The same for a small triangle (TRIANGLE_SMALL) in 32-bit lanes: its edge values stay below 2^30 over
+ * its box and 16 pixels beyond, which is all the search evaluates, so the spans are identical. */
+INLINE void row_spans_small(__global const TriangleGeometry* t, intV dy, intV* lo_out, intV* hi_out, int lo, int hi) {
+  intV lo_v = (intV)lo, hi_v = (intV)hi;
+  for (int e = 0; e < 3; ++e) {
+    const int a = t->edge_a[e];
+    const intV r = (intV)(int)t->edge_c[e] + dy * t->edge_b[e];
+    SETTLE_SPAN_EDGE(intV, convert_intV, r, a, t->edge_inv_a[e], lo_v, hi_v);
   }
   *lo_out = lo_v;
   *hi_out = hi_v;
