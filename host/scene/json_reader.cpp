@@ -152,7 +152,8 @@ nlohmann::json parse_json_file(const std::filesystem::path& path) {
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(text.str(), watch_keys);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {
+    // parse_error, and out_of_range for a number beyond double ("number overflow parsing '1e999'").
     std::string what = e.what();  // "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
     if (const auto bracket = what.find("] "); what.rfind("[json.exception", 0) == 0 && bracket != std::string::npos)
       what = what.substr(bracket + 2);

@@ -109,6 +109,14 @@ TEST_F(CliScene, NumberBeyondFloatRangeIsNamed) {
   EXPECT_TRUE(nothing_written());
 }
 
+// A number beyond double range fails in the JSON parser itself (found by fuzzing: it escaped as an
+// internal error, exit 1).
+TEST_F(CliScene, NumberBeyondDoubleRangeIsBadInput) {
+  const auto scene = input("overflow.json", R"({"objects": [{"shape": "sphere", "transform": {"scale": 4e999}}]})");
+  EXPECT_TRUE(fails_with(render(scene), kBadInput, {"overflow.json", "invalid JSON", "4e999"}));
+  EXPECT_TRUE(nothing_written());
+}
+
 // One wrong type per case: the key (and where it is) must be in the message.
 struct WrongType {
   const char* key;
