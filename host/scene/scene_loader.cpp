@@ -40,10 +40,12 @@ double non_negative(const JsonValue& v) {
   return x;
 }
 
-glm::vec3 nonzero_vec3(const JsonValue& v) {
+// A direction, normalized in double precision: any non-zero float vector has a unit direction (in float a
+// component of 1e-30 squares to 0 and one of 1e30 to inf, and normalize() gave NaN).
+glm::vec3 unit_vec3(const JsonValue& v) {
   const glm::vec3 x = v.vec3();
   if (x == glm::vec3(0.0f)) v.fail("must not be the zero vector");
-  return x;
+  return glm::vec3(glm::normalize(glm::dvec3(x)));
 }
 
 // ${NAME} and $NAME from the environment; an unset variable is an error that names it.
@@ -202,10 +204,13 @@ Camera read_camera(const JsonValue& v) {
   if (const auto x = c.optional("position")) cam.position = x->vec3();
   if (const auto x = c.optional("target")) cam.target = x->vec3();
   const auto up = c.optional("up");
-  if (up) cam.up = nonzero_vec3(*up);
+  if (up) cam.up = unit_vec3(*up);
   if (cam.position == cam.target) v.fail("position and target are the same point");
-  const glm::vec3 forward = glm::normalize(cam.target - cam.position);
-  if (glm::length(glm::cross(forward, glm::normalize(cam.up))) < 1e-4f)
+  const glm::vec3 view = cam.target - cam.position;
+  if (!std::isfinite(view.x) || !std::isfinite(view.y) || !std::isfinite(view.z))
+    v.fail("position and target are too far apart for single precision");
+  const glm::dvec3 forward = glm::normalize(glm::dvec3(view));
+  if (!(glm::length(glm::cross(forward, glm::normalize(glm::dvec3(cam.up)))) >= 1e-4))
     (up ? *up : v).fail("up is parallel to the view direction");
   // Only the parameters of the chosen projection are accepted, so a forgotten "type" is noticed.
   if (cam.projection == Projection::perspective) {
@@ -232,7 +237,7 @@ Light read_light(const JsonValue& v) {
   Light light;
   light.type = l.required("type").choice({"directional", "point"}) == "point" ? LightType::point : LightType::directional;
   if (light.type == LightType::directional)
-    light.direction = glm::normalize(nonzero_vec3(l.required("direction")));
+    light.direction = unit_vec3(l.required("direction"));
   else
     light.position = l.required("position").vec3();
   glm::vec3 color(1.0f);

@@ -33,6 +33,25 @@ TEST(SceneLoader, MinimalSceneTakesTheDefaults) {
   EXPECT_EQ(s.objects[0].model, glm::mat4(1.0f));
 }
 
+// Found by fuzzing (docs/robustness.md F9, F10): directions of extreme magnitude normalized to NaN in
+// single precision and were accepted; a camera spanning more than float range gave a NaN view.
+TEST(SceneLoader, DirectionsOfExtremeMagnitudeAreUnitVectors) {
+  TempDir dir;
+  const Scene s = load_scene(dir.write(
+      "tiny.json", with_objects(R"([{"shape": "sphere"}])",
+                                R"("lights": [{"type": "directional", "direction": [1e-30, 0, 0]}],
+                                   "camera": {"position": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1e-30, 0]})")));
+  EXPECT_EQ(s.lights[0].direction, glm::vec3(1.0f, 0.0f, 0.0f));
+  EXPECT_NEAR(glm::length(s.camera.up), 1.0f, 1e-6f);
+  const Scene big = load_scene(dir.write(
+      "big.json", with_objects(R"([{"shape": "sphere"}])",
+                               R"("lights": [{"type": "directional", "direction": [3e38, 3e38, 0]}])")));
+  EXPECT_NEAR(big.lights[0].direction.x, 0.70710678f, 1e-6f);
+  EXPECT_THROW(load_scene(dir.write("far.json", with_objects(R"([{"shape": "sphere"}])",
+                                                             R"("camera": {"position": [3e38, 0, 0], "target": [-3e38, 0, 0]})"))),
+               InputError);
+}
+
 TEST(SceneLoader, ReadsEverySetting) {
   TempDir dir;
   const std::string json = R"({
