@@ -91,8 +91,8 @@ class ObjChecker {
     const long value = std::strtol(s.c_str(), &end, 10);
     if (end == s.c_str() || *end != '\0') fail(line_number_, "cannot read '" + s + "' as a " + what + " index");
     if (value == 0) fail(line_number_, std::string(what) + " index 0 (OBJ indices start at 1)");
-    if (value < 0) {  // relative to the records read so far
-      if (static_cast<std::size_t>(-value) > defined)
+    if (value < 0) {  // relative to the records read so far; 0 - unsigned: -LONG_MIN would overflow
+      if (std::size_t(0) - static_cast<std::size_t>(value) > defined)
         fail(line_number_, std::string(what) + " index " + s + " reaches before the first " + what);
     } else if (value > max.value) {
       max = {value, line_number_};

@@ -228,6 +228,9 @@ INSTANTIATE_TEST_SUITE_P(
     Files, MalformedFile,
     ::testing::Values(BadFile{"bad_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", ":4: vertex index 9 out of range"},
                       BadFile{"negative_index.obj", "v 0 0 0\nv 1 0 0\nf 1 2 -3\n", ":3: vertex index -3"},
+                      // Fuzzing finding F7: negating the most negative index was undefined behaviour.
+                      BadFile{"min_index.obj", "v 0 0 0\nv 1 0 0\nf 1 2 -9223372036854775808\n",
+                              ":3: vertex index -9223372036854775808 reaches before"},
                       BadFile{"zero_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", ":4: vertex index 0"},
                       BadFile{"bad_normal_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//2\n",
                               ":5: normal index 2 out of range"},
