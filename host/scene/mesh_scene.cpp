@@ -3,6 +3,7 @@
 #include <cmath>
 #include <memory>
 
+#include "parashade/errors.hpp"
 #include "parashade/scene.hpp"
 
 namespace parashade {
@@ -10,13 +11,14 @@ namespace parashade {
 Scene scene_for_mesh(const std::filesystem::path& mesh_path) {
   auto mesh = std::make_shared<const Mesh>(load_mesh(mesh_path));
 
-  // Bounding sphere: the box centre and the farthest vertex from it.
-  glm::vec3 lo = mesh->positions.front(), hi = lo;
-  for (const glm::vec3& p : mesh->positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  const glm::vec3 centre = 0.5f * (lo + hi);
-  float radius = 0.0f;
-  for (const glm::vec3& p : mesh->positions) radius = std::max(radius, glm::distance(p, centre));
-  if (!(radius > 0.0f)) radius = 1.0f;  // a single point: any distance will do
+  // Bounding sphere: the box centre and the farthest vertex from it, in double (squared float distances
+  // overflow from ~1.8e19 on: fuzzing finding F8).
+  glm::dvec3 lo = mesh->positions.front(), hi = lo;
+  for (const glm::vec3& p : mesh->positions) lo = glm::min(lo, glm::dvec3(p)), hi = glm::max(hi, glm::dvec3(p));
+  const glm::dvec3 centre = 0.5 * (lo + hi);
+  double radius = 0.0;
+  for (const glm::vec3& p : mesh->positions) radius = std::max(radius, glm::distance(glm::dvec3(p), centre));
+  if (!(radius > 0.0)) radius = 1.0;  // a single point: any distance will do
 
   Scene scene;
   scene.name = mesh_path.stem().string();
@@ -32,12 +34,20 @@ Scene scene_for_mesh(const std::filesystem::path& mesh_path) {
   Camera& cam = scene.camera;
   cam.projection = Projection::perspective;
   cam.fov_y_degrees = 40.0f;
-  const float distance = 1.15f * radius / std::sin(glm::radians(0.5f * cam.fov_y_degrees));
-  cam.target = centre;
-  cam.position = centre + distance * glm::normalize(glm::vec3(0.0f, 0.25f, 1.0f));
+  // Shading squares distances in single precision (lengths, normalization): beyond ~1.8e19 they overflow
+  // and the image would be NaN, so such a mesh is refused rather than rendered wrong.
+  constexpr double kLargest = 1e18;
+  if (!(radius < kLargest && glm::length(centre) < kLargest))
+    throw InputError("'" + mesh_path.string() + "': coordinates reach " + std::to_string(glm::length(centre) + radius) +
+                     ", beyond the 1e18 that single-precision shading can take");
+  const double distance = 1.15 * radius / std::sin(glm::radians(0.5 * double(cam.fov_y_degrees)));
+  const glm::dvec3 position = centre + distance * glm::normalize(glm::dvec3(0.0, 0.25, 1.0));
+  const double far_plane = 2.0 * (distance + radius);
+  cam.target = glm::vec3(centre);
+  cam.position = glm::vec3(position);
   cam.up = glm::vec3(0.0f, 1.0f, 0.0f);
-  cam.near_plane = 0.5f * (distance - radius);
-  cam.far_plane = 2.0f * (distance + radius);
+  cam.near_plane = float(0.5 * (distance - radius));
+  cam.far_plane = float(far_plane);
 
   // White, from the upper left behind the camera.
   Light light;

@@ -1,6 +1,7 @@
 // load_scene on JSON written for the test: values, defaults, sharing, paths, and every kind of refusal.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <string>
 
@@ -50,6 +51,20 @@ TEST(SceneLoader, DirectionsOfExtremeMagnitudeAreUnitVectors) {
   EXPECT_THROW(load_scene(dir.write("far.json", with_objects(R"([{"shape": "sphere"}])",
                                                              R"("camera": {"position": [3e38, 0, 0], "target": [-3e38, 0, 0]})"))),
                InputError);
+}
+
+// Fuzzing finding F8: a bare mesh with coordinates near 1e20 got a NaN camera and rendered NaN. Up to
+// 1e18 it is framed with a finite camera; beyond, it is refused.
+TEST(SceneLoader, BareMeshesOfHugeCoordinatesAreFramedOrRefused) {
+  TempDir dir;
+  const Scene s = load_scene(dir.write("large.obj", "v 0 0 0\nv 1e17 0 0\nv 0 1e17 0\nf 1 2 3\n"));
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_TRUE(std::isfinite(s.camera.position[k]));
+    EXPECT_TRUE(std::isfinite(s.camera.target[k]));
+  }
+  EXPECT_TRUE(std::isfinite(s.camera.far_plane));
+  EXPECT_GT(s.camera.near_plane, 0.0f);
+  EXPECT_THROW(load_scene(dir.write("huge.obj", "v 0 0 0\nv 1e20 0 0\nv 0 1e20 0\nf 1 2 3\n")), InputError);
 }
 
 TEST(SceneLoader, ReadsEverySetting) {
