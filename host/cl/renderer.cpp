@@ -164,13 +164,14 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
   cl::Event::waitForEvents(mapped);
   if (split) {
     // Setup per triangle, then each record split into its sub-triangles' records.
-    std::vector<TriangleGeometry> whole(triangles);
-    std::vector<float> whole_attr(triangles * GOURAUD_ATTR_FLOATS);
-    std::vector<FixedPlanes> whole_fixed(fixed_ptr ? triangles : 0);
-    s.triangles_without_pixels = setup_triangles(geometry_, method, whole.data(), whole_attr.data(),
-                                                 fixed_ptr ? whole_fixed.data() : nullptr).without_pixels;
-    split_sierpinski(geometry_, unit.depth, unit.seal, whole.data(), whole_attr.data(), fixed_ptr ? whole_fixed.data() : nullptr,
-                     tri_ptr, attr_ptr, fixed_ptr, leaf_ptr);
+    whole_.resize(triangles);
+    whole_attr_.resize(triangles * GOURAUD_ATTR_FLOATS);
+    whole_fixed_.resize(fixed_ptr ? triangles : 0);
+    FixedPlanes* whole_fixed = fixed_ptr ? whole_fixed_.data() : nullptr;
+    s.triangles_without_pixels =
+        setup_triangles(geometry_, method, whole_.data(), whole_attr_.data(), whole_fixed).without_pixels;
+    split_sierpinski(geometry_, unit.depth, unit.seal, whole_.data(), whole_attr_.data(), whole_fixed, tri_ptr, attr_ptr,
+                     fixed_ptr, leaf_ptr);
     q.enqueueUnmapMemObject(leaves_, leaf_ptr);
   } else {
     s.triangles_without_pixels = setup_triangles(geometry_, method, tri_ptr, attr_ptr, fixed_ptr).without_pixels;

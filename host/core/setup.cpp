@@ -90,7 +90,8 @@ void move_plane_anchor(const TriangleGeometry& from, const float* attr, const Fi
 
 std::int64_t to_plane_register(double levels) {
   const double v = std::isnan(levels) ? 0.0 : std::clamp(levels, -kPlaneLimit, kPlaneLimit);
-  return std::llround(std::ldexp(v, PLANE_FRAC));
+  // Times 2^PLANE_FRAC: a power of two, so the product is exact (ldexp gives the same, as a call).
+  return std::llround(v * double(std::uint64_t(1) << PLANE_FRAC));
 }
 
 SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeometry* geometry, float* attributes,

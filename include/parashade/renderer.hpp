@@ -89,6 +89,10 @@ class Renderer {
   cl::Buffer tris_, attrs_, tile_start_, tile_tris_, lights_, materials_, out_rgba_, out_float_, counts_, fixed_,
       tile_clocks_, leaves_, dda_first_, dda_rows_;
   DdaRowTable dda_;  // the last frame's row table (uploaded without waiting: it must outlive the copy)
+  // sierpinski: setup's whole-triangle records before the split (kept to reuse their memory)
+  std::vector<TriangleGeometry> whole_;
+  std::vector<float> whole_attr_;
+  std::vector<FixedPlanes> whole_fixed_;
   void* mapped_rgba_ = nullptr;   // the last frame's image, mapped for the host until the next render
   void* rgba_host_ = nullptr;       // the memory out_rgba_ was created on (frame_.image.rgba)
   std::size_t tris_cap_ = 0, attrs_cap_ = 0, start_cap_ = 0, list_cap_ = 0, lights_cap_ = 0, materials_cap_ = 0,
