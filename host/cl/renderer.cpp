@@ -125,7 +125,7 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
   // The extra-triangulation unit needs its midpoints on pixel corners: vertex parity normalization.
   const UnitConfig unit = options_.unit();
   const bool split = options_.unit_path() && unit.kind == UnitKind::sierpinski;
-  if (split) s.parity_dropped = normalize_vertex_parity(geometry_, unit.depth, unit.odd_parity);
+  if (split) s.parity_dropped = snap_sierpinski_vertices(geometry_, unit);
   t.geometry_ms = ms_since(t0);
   s.geometry = geometry_.stats;
 
@@ -170,8 +170,8 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
     FixedPlanes* whole_fixed = fixed_ptr ? whole_fixed_.data() : nullptr;
     s.triangles_without_pixels =
         setup_triangles(geometry_, method, whole_.data(), whole_attr_.data(), whole_fixed).without_pixels;
-    split_sierpinski(geometry_, unit.depth, unit.seal, whole_.data(), whole_attr_.data(), whole_fixed, tri_ptr, attr_ptr,
-                     fixed_ptr, leaf_ptr);
+    s.sierpinski_whole = split_sierpinski(geometry_, unit, whole_.data(), whole_attr_.data(), whole_fixed, tri_ptr,
+                                         attr_ptr, fixed_ptr, leaf_ptr);
     q.enqueueUnmapMemObject(leaves_, leaf_ptr);
   } else {
     s.triangles_without_pixels = setup_triangles(geometry_, method, tri_ptr, attr_ptr, fixed_ptr).without_pixels;

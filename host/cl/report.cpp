@@ -46,7 +46,7 @@ nlohmann::json to_json(const FrameStats& s) {
           {"triangles_without_pixels", s.triangles_without_pixels},
           {"bin_entries", s.bin_entries},
           {"tiles", s.tiles},
-          {"parity_dropped", s.parity_dropped}};
+          {"parity_dropped", s.parity_dropped}, {"sierpinski_whole", s.sierpinski_whole}};
 }
 
 nlohmann::json to_json(const ModeledClocks& c) {

@@ -1,6 +1,8 @@
 #include "parashade/sierpinski.hpp"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <stdexcept>
 #include <vector>
 
@@ -13,30 +15,46 @@ namespace {
 using i64 = std::int64_t;
 using v2 = glm::i64vec2;
 
-// A sub-triangle of ABC at depth D, in the slot order of A, B, C: sign * (ABC) / 2^D + t. Corner children
-// keep the sign, the middle child flips it (SEEDS §4: AKM, KBL, MLC translated, LMK rotated by 180°).
+// A sub-triangle of ABC at depth D, in the slot order of A, B, C: sign * S_D + t + T, where T is the top
+// vertex and S_D the shaded sub-triangle's shape relative to it. Corner children keep the sign, the middle
+// child flips it (SEEDS §4: AKM, KBL, MLC translated, LMK rotated by 180°).
 struct Leaf {
   int sign;
-  v2 t;  // sub-pixels
+  v2 t;  // sub-pixels, relative to the top vertex
 };
 
-v2 exact_half_power(v2 v, int shift) {
-  const i64 d = i64(1) << shift;
-  if (v.x % d != 0 || v.y % d != 0) throw std::logic_error("sierpinski: geometry not normalized for this depth");
-  return v / d;
+// Half of a whole-pixel offset (sub-pixels), for the unit's grid: exact, or rounded toward zero (touch)
+// or away from it (overlap) to whole pixels.
+i64 half(i64 c, SierpinskiGrid grid) {
+  if (grid == SierpinskiGrid::even || grid == SierpinskiGrid::odd) {
+    if (c % (2 * i64(kSubpixel)) != 0) throw std::logic_error("sierpinski: geometry not normalized for this depth");
+    return c / 2;
+  }
+  const i64 px = c / kSubpixel;
+  const i64 halved = grid == SierpinskiGrid::touch ? px / 2 : (px + (px > 0) - (px < 0)) / 2;  // / truncates
+  return halved * kSubpixel;
 }
 
-// Depth-first, the corner at the top vertex first, so that leaf 0 is the shaded sub-triangle.
-void collect(const v2 v[3], int top, int level, int depth, Leaf node, std::vector<Leaf>& out) {
+// shape[l][s]: the level-l sub-triangle's vertex s relative to the top vertex (shape[0] = ABC - T).
+using Shapes = std::vector<std::array<v2, 3>>;
+
+// Depth-first, the corner at the top vertex first, so that leaf 0 is the shaded sub-triangle. A corner
+// child starts at the rounded midpoint (exact, touch) or ends at its own vertex (overlap); the middle
+// child's corners are the top child's midpoints.
+void collect(const Shapes& shape, int top, int level, int depth, SierpinskiGrid grid, Leaf node, std::vector<Leaf>& out) {
   if (level == depth) {
     out.push_back(node);
     return;
   }
+  const auto& whole = shape[std::size_t(level)];
+  const auto& halves = shape[std::size_t(level) + 1];
   const int order[3] = {top, (top + 1) % 3, (top + 2) % 3};
-  for (int slot : order)
-    collect(v, top, level + 1, depth, {node.sign, node.t + i64(node.sign) * exact_half_power(v[slot], level + 1)}, out);
-  const v2 sum = v[0] + v[1] + v[2];
-  collect(v, top, level + 1, depth, {-node.sign, node.t + i64(node.sign) * exact_half_power(sum, level + 1)}, out);
+  for (int slot : order) {
+    const v2 corner = grid == SierpinskiGrid::overlap ? whole[slot] - halves[slot] : halves[slot];
+    collect(shape, top, level + 1, depth, grid, {node.sign, node.t + i64(node.sign) * corner}, out);
+  }
+  const v2 sum = halves[0] + halves[1] + halves[2];
+  collect(shape, top, level + 1, depth, grid, {-node.sign, node.t + i64(node.sign) * sum}, out);
 }
 
 // The shaded sub-triangle's edge e: E(q) = dx (qy - yi) - dy (qx - xi), q in sub-pixels, and its
@@ -72,29 +90,69 @@ std::uint64_t normalize_vertex_parity(ScreenGeometry& g, int depth, bool odd) {
   return dropped;
 }
 
-void split_sierpinski(const ScreenGeometry& g, int depth, bool seal, const TriangleGeometry* in, const float* attr_in,
-                      const FixedPlanes* fixed_in, TriangleGeometry* out, float* attr_out, FixedPlanes* fixed_out,
-                      SierpinskiLeaf* leaf_out) {
+std::uint64_t snap_sierpinski_vertices(ScreenGeometry& g, const UnitConfig& unit) {
+  switch (unit.grid) {
+    case SierpinskiGrid::even: return normalize_vertex_parity(g, unit.depth, false);
+    case SierpinskiGrid::odd: return normalize_vertex_parity(g, unit.depth, true);
+    case SierpinskiGrid::touch:
+    case SierpinskiGrid::overlap: return normalize_vertex_parity(g, 0, false);
+  }
+  return 0;
+}
+
+std::uint64_t split_sierpinski(const ScreenGeometry& g, const UnitConfig& unit, const TriangleGeometry* in,
+                               const float* attr_in, const FixedPlanes* fixed_in, TriangleGeometry* out,
+                               float* attr_out, FixedPlanes* fixed_out, SierpinskiLeaf* leaf_out) {
+  const int depth = unit.depth;
+  const bool seal = unit.seal;
   const std::size_t leaves = std::size_t(1) << (2 * depth);
+  std::atomic<std::uint64_t> degenerate{0};
   parallel_for_ranges(g.triangles.size(), 1024, [&](std::size_t first, std::size_t last) {
     std::vector<Leaf> sub;
+    Shapes shape(std::size_t(depth) + 1);
     for (std::size_t t = first; t < last; ++t) {
       const glm::uvec3 tri = g.triangles[t];
       const v2 v[3] = {v2(g.xy[tri.x]), v2(g.xy[tri.y]), v2(g.xy[tri.z])};
       const TriangleGeometry& r = in[t];
       const float* a = attr_in + t * GOURAUD_ATTR_FLOATS;
       const int top = int(std::min_element(v, v + 3, [](v2 p, v2 q) { return p.y < q.y || (p.y == q.y && p.x < q.x); }) - v);
+      const v2 apex = v[top];
+      for (int k = 0; k < 3; ++k) shape[0][k] = v[k] - apex;
+      for (int l = 1; l <= depth; ++l)
+        for (int k = 0; k < 3; ++k)
+          shape[std::size_t(l)][k] = v2(half(shape[std::size_t(l) - 1][k].x, unit.grid), half(shape[std::size_t(l) - 1][k].y, unit.grid));
+      const auto& s_d = shape[std::size_t(depth)];
+      const i64 area2 = (s_d[1].x - s_d[0].x) * (s_d[2].y - s_d[0].y) - (s_d[1].y - s_d[0].y) * (s_d[2].x - s_d[0].x);
       sub.clear();
-      collect(v, top, 0, depth, {1, v2(0)}, sub);
-      const v2 t0 = sub[0].t;
+      collect(shape, top, 0, depth, unit.grid, {1, v2(0)}, sub);
       Edge edge[3];
       v2 q[3];
-      for (int k = 0; k < 3; ++k) q[k] = exact_half_power(v[k], depth) + t0;  // the shaded sub-triangle
+      for (int k = 0; k < 3; ++k) q[k] = s_d[k] + apex;  // the shaded sub-triangle (leaf 0: t = 0)
       for (int e = 0; e < 3; ++e) {
         const v2 qi = q[e], qj = q[(e + 1) % 3];
         edge[e] = {qj.x - qi.x, qj.y - qi.y, qi.x, qi.y, edge_bias(glm::ivec2(qi), glm::ivec2(qj))};
       }
 
+      if (area2 <= 0 && r.x0 <= r.x1) {
+        // Too small to halve (remedy (b) rounds a short edge's half to nothing): the unit shades it whole,
+        // as one record with a zero adder constant; the other records stay empty.
+        degenerate.fetch_add(1, std::memory_order_relaxed);
+        const std::size_t o = t * leaves;
+        out[o] = r;
+        std::copy(a, a + GOURAUD_ATTR_FLOATS, attr_out + o * GOURAUD_ATTR_FLOATS);
+        if (fixed_out) fixed_out[o] = fixed_in[t];
+        leaf_out[o] = SierpinskiLeaf{};
+        leaf_out[o].sign = 1;
+        leaf_out[o].shaded = 1;
+        for (std::size_t k = 1; k < leaves; ++k) {
+          out[o + k] = TriangleGeometry{};
+          out[o + k].x0 = 1;  // empty box
+          out[o + k].x1 = 0;
+          if (fixed_out) fixed_out[o + k] = FixedPlanes{};
+          leaf_out[o + k] = SierpinskiLeaf{};
+        }
+        continue;
+      }
       for (std::size_t k = 0; k < leaves; ++k) {
         const std::size_t o = t * leaves + k;
         TriangleGeometry& lr = out[o];
@@ -104,13 +162,13 @@ void split_sierpinski(const ScreenGeometry& g, int depth, bool seal, const Trian
         info.sign = leaf.sign;
         info.shaded = k == 0;
         // The map from this sub-triangle's pixels to the shaded one's: P - D, or C - P (pixel indices).
-        const v2 shift = leaf.sign > 0 ? leaf.t - t0 : leaf.t + t0;  // D, or C + (1, 1), in sub-pixels
+        const v2 shift = leaf.sign > 0 ? leaf.t : leaf.t + i64(2) * apex;  // D, or C + (1, 1), in sub-pixels
         if (shift.x % kSubpixel != 0 || shift.y % kSubpixel != 0)
           throw std::logic_error("sierpinski: a sub-triangle is not a whole-pixel copy");
         const v2 shift_px = shift / i64(kSubpixel);
         i64 xmin = INT64_MAX, xmax = INT64_MIN, ymin = INT64_MAX, ymax = INT64_MIN;
         for (int s = 0; s < 3; ++s) {
-          const v2 n = i64(leaf.sign) * exact_half_power(v[s], depth) + leaf.t;
+          const v2 n = i64(leaf.sign) * s_d[s] + leaf.t + apex;
           xmin = std::min(xmin, n.x), xmax = std::max(xmax, n.x), ymin = std::min(ymin, n.y), ymax = std::max(ymax, n.y);
         }
         const auto [x0, y0, x1, y1] = centre_box(xmin, xmax, ymin, ymax, g.width, g.height);
@@ -155,6 +213,7 @@ void split_sierpinski(const ScreenGeometry& g, int depth, bool seal, const Trian
       }
     }
   });
+  return degenerate.load();
 }
 
 }  // namespace parashade

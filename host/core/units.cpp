@@ -9,7 +9,7 @@ namespace parashade {
 UnitConfig parse_units(const std::string& spec) {
   const std::string valid =
       " (valid: classic, counter, interleave:M[:own] with M = 1..16, segment:P with P = 2, 4, ..., 64, "
-      "sierpinski[:D][:even|:odd][:seal] with D = 1..3)";
+      "sierpinski[:D][:even|:odd|:touch|:overlap][:seal] with D = 1..3)";
   if (spec == "classic") return {UnitKind::classic, 1, false};
   if (spec == "counter") return {UnitKind::counter, 2, false};
   std::smatch m;
@@ -24,12 +24,27 @@ UnitConfig parse_units(const std::string& spec) {
       throw UsageError("--units '" + spec + "': P = " + m[1].str() + " is not a power of two in 2..64");
     return {UnitKind::segment, lanes, false};
   }
-  if (std::regex_match(spec, m, std::regex(R"(sierpinski(:(\d{1,2}))?(:(even|odd))?(:seal)?)"))) {
+  if (std::regex_match(spec, m, std::regex(R"(sierpinski(:(\d{1,2}))?(:(even|odd|touch|overlap))?(:seal)?)"))) {
     const int depth = m[2].matched ? std::stoi(m[2]) : 1;
     if (depth < 1 || depth > 3) throw UsageError("--units '" + spec + "': depth D = " + m[2].str() + " is not in 1..3");
-    return {UnitKind::sierpinski, 1 << (2 * depth), false, depth, m[4].matched && m[4].str() == "odd", m[5].matched};
+    const std::string grid = m[4].matched ? m[4].str() : "even";
+    const SierpinskiGrid g = grid == "odd"     ? SierpinskiGrid::odd
+                             : grid == "touch" ? SierpinskiGrid::touch
+                             : grid == "overlap" ? SierpinskiGrid::overlap
+                                                 : SierpinskiGrid::even;
+    return {UnitKind::sierpinski, 1 << (2 * depth), false, depth, g, m[5].matched};
   }
   throw UsageError("unknown unit '" + spec + "'" + valid);
+}
+
+const char* sierpinski_grid_name(SierpinskiGrid g) {
+  switch (g) {
+    case SierpinskiGrid::even: return "even";
+    case SierpinskiGrid::odd: return "odd";
+    case SierpinskiGrid::touch: return "touch";
+    case SierpinskiGrid::overlap: return "overlap";
+  }
+  return "?";
 }
 
 std::string unit_name(const UnitConfig& u) {
@@ -39,7 +54,7 @@ std::string unit_name(const UnitConfig& u) {
     case UnitKind::interleave: return "interleave:" + std::to_string(u.lanes) + (u.own_step ? ":own" : "");
     case UnitKind::segment: return "segment:" + std::to_string(u.lanes);
     case UnitKind::sierpinski:
-      return "sierpinski:" + std::to_string(u.depth) + (u.odd_parity ? ":odd" : ":even") + (u.seal ? ":seal" : "");
+      return "sierpinski:" + std::to_string(u.depth) + ":" + sierpinski_grid_name(u.grid) + (u.seal ? ":seal" : "");
   }
   return "?";
 }

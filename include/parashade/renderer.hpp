@@ -51,6 +51,7 @@ struct FrameStats {
   int tiles = 0;
   ModeledClocks clocks;  // on the unit path only (RenderOptions::unit_path)
   std::uint64_t parity_dropped = 0;  // sierpinski: triangles degenerate after vertex parity normalization
+  std::uint64_t sierpinski_whole = 0;  // sierpinski :touch/:overlap: too small to halve, shaded whole
 };
 
 struct Frame {

@@ -18,20 +18,30 @@ enum class UnitKind {
   sierpinski = UNIT_SIERPINSKI,  // extra triangulation (SEEDS §4): one of 4^D sub-triangles shaded, the rest copied
 };
 
+// How the extra triangulation gets its midpoints onto pixel corners (SEEDS §4, the sources' two remedies).
+enum class SierpinskiGrid {
+  even,     // (a) every vertex to the nearest pixel corner = 0 (mod 2^D): exact midpoints
+  odd,      // (a) the same with corners = 1 (mod 2^D)
+  touch,    // (b) vertices to the nearest pixel corner; each edge from two equal halves of floor(d/2) pixels
+  overlap,  // (b) the same with halves of ceil(d/2) pixels, overlapping by one where d is odd
+};
+
 struct UnitConfig {
   UnitKind kind = UnitKind::classic;
   int lanes = 1;          // intensities per clock: classic 1, counter 2, interleave M (1..16), segment P (2..64), sierpinski 4^D
   bool own_step = false;  // interleave: M*dI quantized from setup's plane on its own (else M times the quantized dI)
   int depth = 0;          // sierpinski: subdivision depth D (1..3)
-  bool odd_parity = false;// sierpinski: vertices normalized to pixel corners = 1 (mod 2^D) instead of 0
+  SierpinskiGrid grid = SierpinskiGrid::even;  // sierpinski: the parity remedy
   bool seal = false;      // sierpinski: reflected copies take pixel centres on their edges by their own
                           // top-left rule instead of mirroring the shaded sub-triangle's (no holes)
 };
 
-// "classic", "counter", "interleave:M[:own]", "segment:P", "sierpinski[:D][:even|:odd][:seal]" (D = 1 by default).
+// "classic", "counter", "interleave:M[:own]", "segment:P", "sierpinski[:D][:even|:odd|:touch|:overlap][:seal]"
+// (D = 1, even by default).
 // Throws UsageError naming the value.
 UnitConfig parse_units(const std::string& spec);
 std::string unit_name(const UnitConfig& u);
+const char* sierpinski_grid_name(SierpinskiGrid g);
 
 // Span register format I.F (kernels/fixed_point.h), or float.
 struct Arithmetic {
