@@ -11,7 +11,11 @@
  * F >= 1. Loading a register from a plane value (span start S, span end E, the span increment dI,
  * an own-quantized multiple M*dI) rounds to nearest, ties up, and saturates to W bits. Adders wrap
  * modulo 2^W like hardware adders. The output level rounds to nearest, ties up, then saturates to
- * [0, 255]. */
+ * [0, 255].
+ *
+ * Phong through a unit: the registers hold the interpolated normal's components scaled by
+ * NORMAL_REGISTER_LEVELS, so a unit normal spans the same +-255 range as an intensity and one I.F
+ * format describes both; the shading after the registers is float. */
 #ifndef PARASHADE_FIXED_POINT_H
 #define PARASHADE_FIXED_POINT_H
 
@@ -28,6 +32,7 @@ typedef std::uint32_t ps_uint;
 #endif
 
 #define PLANE_FRAC 32
+#define NORMAL_REGISTER_LEVELS 255
 
 /* Gouraud planes of one triangle in setup's format, indexed like TriangleGeometry. */
 typedef struct {

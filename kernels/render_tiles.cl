@@ -6,7 +6,7 @@
  * pixels as vector lanes. Depth and colour of the tile stay in private memory and are written once,
  * so there is no read-modify-write of the frame and the result is deterministic.
  * The method (method_*.h, chosen by the host) supplies shade_pixels().
- * UNIT_PATH = 1 (Gouraud through a modeled unit, method_gouraud_units.h): every triangle is walked by
+ * UNIT_PATH = 1 (Gouraud or Phong through a modeled unit, unit_registers.h): every triangle is walked by
  * whole spans, each span's registers come from its full extent, and the tile that holds a span's
  * left pixel counts its modeled clocks into tile_clocks (spans, pixels, clocks per tile). */
 #include "common.h"
@@ -15,8 +15,13 @@
 #include "fixed_point.h"
 #include "sierpinski_leaf.h"
 #if UNIT_PATH
-#include "method_gouraud_units.h"
+#include "unit_registers.h"
+#if FIXED && !UNIT_REGISTER_COLOUR
+#include "method_phong_units.h"
 #endif
+#endif
+/* Gouraud's fixed-point unit keeps its registers' bits as the colour until the output rounds them. */
+#define REGISTER_COLOUR (UNIT_PATH && FIXED && UNIT_REGISTER_COLOUR)
 
 #define TILE_VECTORS (TILE * SEGMENTS)
 
@@ -61,7 +66,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
   floatV depth[TILE_VECTORS], cr[TILE_VECTORS], cg[TILE_VECTORS], cb[TILE_VECTORS];
   for (int i = 0; i < TILE_VECTORS; ++i) {
     depth[i] = (floatV)INFINITY;
-#if UNIT_PATH && FIXED
+#if REGISTER_COLOUR
     /* Colour holds span registers (their bits): the background as a register value. */
     cr[i] = as_floatV((intV)(int)(background.x * (1 << FRAC_BITS)));
     cg[i] = as_floatV((intV)(int)(background.y * (1 << FRAC_BITS)));
@@ -133,10 +138,14 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
           const int slot = (py - tile_y) * SEGMENTS + s;
           const intV pass = depth_test(t, dy, frel, (rel >= sl) & (rel <= sr), &depth[slot]);
           if (!any(pass)) continue;
-#if FIXED
+#if REGISTER_COLOUR
           const intV i = rel - xl;
           keep(pass, as_floatV(unit_register(&regs, 0, i, length)), as_floatV(unit_register(&regs, 1, i, length)),
                as_floatV(unit_register(&regs, 2, i, length)), &cr[slot], &cg[slot], &cb[slot]);
+#elif FIXED
+          floatV sr_, sg_, sb_;
+          shade_unit_normals(&regs, rel - xl, length, attr, dy, frel, &sr_, &sg_, &sb_, lights, materials, viewer);
+          keep(pass, sr_, sg_, sb_, &cr[slot], &cg[slot], &cb[slot]);
 #else
           floatV sr_, sg_, sb_;
           shade_pixels(attr, dy, frel, &sr_, &sg_, &sb_, lights, materials, viewer);
@@ -186,7 +195,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
     if (y >= height || x >= width) continue;
     const size_t at = (size_t)y * width + x;
     const uintV covered = convert_uintV(isless(depth[i], (floatV)INFINITY)) & 0xFF000000u;
-#if UNIT_PATH && FIXED
+#if REGISTER_COLOUR
     const uintV rgba = register_levels(as_intV(cr[i])) | (register_levels(as_intV(cg[i])) << 8) |
                        (register_levels(as_intV(cb[i])) << 16) | covered;
     /* The float image holds the register values in levels (exact while REG_BITS <= 24). */

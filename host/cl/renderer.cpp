@@ -68,7 +68,8 @@ std::string kernel_options(const Scene& s, const RenderOptions& o) {
     opt << " -D UNIT_KIND=" << int(u.kind) << " -D UNIT_LANES=" << u.lanes << " -D UNIT_OWN_STEP=" << (u.own_step ? 1 : 0)
         << " -D FIXED=" << (o.arith.fixed ? 1 : 0) << " -D FRAC_BITS=" << o.arith.frac_bits
         << " -D REG_BITS=" << o.arith.width() << " -D SPAN_DIV=" << o.division.mode << " -D DIV_BITS=" << o.division.bits
-        << " -D DIV_NEAREST=" << (o.division.nearest ? 1 : 0) << " -D DDA_COVERAGE=" << (o.dda_coverage ? 1 : 0);
+        << " -D DIV_NEAREST=" << (o.division.nearest ? 1 : 0) << " -D DDA_COVERAGE=" << (o.dda_coverage ? 1 : 0)
+        << " -D UNIT_REGISTER_COLOUR=" << (o.method == Method::gouraud ? 1 : 0);
   }
   return opt.str();
 }
@@ -84,9 +85,11 @@ double event_ms(const cl::Event& e) {
 Renderer::Renderer(Device& device, RenderOptions options) : device_(device), options_(options) {
   if (options_.tile_size != 16 && options_.tile_size != 32 && options_.tile_size != 64)
     throw InputError("tile size " + std::to_string(options_.tile_size) + " is not supported (16, 32 or 64)");
-  if (options_.unit_path() && options_.method != Method::gouraud)
-    throw UsageError(std::string("the shading units (--units, --arith fixed) model Gouraud's code interpolators; method '") +
-                     method_name(options_.method) + "' has no unit model yet");
+  if (options_.unit_path() && options_.method == Method::flat)
+    throw UsageError("the shading units (--units, --arith fixed) interpolate along spans; method 'flat' has nothing to interpolate");
+  if (options_.unit_path() && options_.method == Method::phong && options_.unit().kind == UnitKind::sierpinski)
+    throw UsageError("--units " + unit_name(options_.unit()) +
+                     " copies Gouraud intensities; Phong shades every pixel of every copy, so it is modeled for Gouraud only");
   if (options_.dda_coverage && options_.unit().kind == UnitKind::sierpinski)
     throw UsageError("--coverage dda does not combine with --units " + unit_name(options_.unit()) +
                      " (its copies need pixel-centre coverage)");

@@ -184,6 +184,13 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
         }
         store(attr, 0, n[0], n[1], n[2]);
         store(attr, 9, q[0], q[1], q[2]);
+        if (fixed) {  // the normal's components for a unit's registers (fixed_point.h)
+          for (int k = 0; k < 3; ++k) {
+            fixed[t].ref[k] = to_plane_register(NORMAL_REGISTER_LEVELS * n[k].ref);
+            fixed[t].ddx[k] = to_plane_register(NORMAL_REGISTER_LEVELS * n[k].ddx);
+            fixed[t].ddy[k] = to_plane_register(NORMAL_REGISTER_LEVELS * n[k].ddy);
+          }
+        }
         attr[PHONG_MATERIAL_SLOT] = float(g.material[t]);
         attr[19] = attr[20] = attr[21] = 0.0f;
         break;

@@ -23,7 +23,7 @@ struct SetupStats {
 
 // Fills geometry[i] and attributes[i * attribute_floats(method) ...] for every screen triangle i.
 // Triangles that cannot cover a pixel centre get an empty box (x0 > x1) and are skipped by binning.
-// With `fixed` (Gouraud only), also fills fixed[i] with the planes in setup's fixed-point format
+// With `fixed` (Gouraud: the intensities; Phong: the normal components x NORMAL_REGISTER_LEVELS), also fills fixed[i] with the planes in setup's fixed-point format
 // (kernels/fixed_point.h) for the fixed-point units.
 SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeometry* geometry, float* attributes,
                            FixedPlanes* fixed = nullptr);

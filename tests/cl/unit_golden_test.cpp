@@ -12,8 +12,10 @@
 
 #include "cl_fixture.hpp"
 #include "parashade/dda_coverage.hpp"
+#include "parashade/errors.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/golden_units.hpp"
+#include "parashade/lighting.hpp"
 #include "parashade/reference.hpp"
 #include "parashade/renderer.hpp"
 #include "parashade/setup.hpp"
@@ -80,13 +82,15 @@ struct Records {
   }
 };
 
-Records frame_records(const ScreenGeometry& g, const UnitConfig& unit, bool dda_coverage = false) {
+Records frame_records(const ScreenGeometry& g, const UnitConfig& unit, bool dda_coverage = false,
+                      Method method = Method::gouraud, std::vector<float>* attrs_out = nullptr) {
   const std::size_t n = g.triangles.size();
   Records r;
   r.geometry.resize(n);
   r.planes.resize(n);
-  std::vector<float> attrs(n * attribute_floats(Method::gouraud));
-  setup_triangles(g, Method::gouraud, r.geometry.data(), attrs.data(), r.planes.data());
+  std::vector<float> attrs(n * attribute_floats(method));
+  setup_triangles(g, method, r.geometry.data(), attrs.data(), r.planes.data());
+  if (attrs_out) *attrs_out = attrs;
   if (dda_coverage) r.dda = apply_dda_coverage(g, r.geometry.data(), attrs.data(), r.planes.data());
   if (unit.kind != UnitKind::sierpinski) return r;
   const std::size_t m = n << (2 * unit.depth);
@@ -158,6 +162,85 @@ Check compare_with_golden(const Scene& scene, const UnitConfig& unit, const Arit
   EXPECT_EQ(frame.stats.clocks.clocks, c.golden_clocks) << unit_name(unit);
   EXPECT_EQ(frame.stats.clocks.spans, c.spans) << unit_name(unit);
   return c;
+}
+
+// Phong through a unit: the registers carry the normal's components (x NORMAL_REGISTER_LEVELS). The golden
+// model steps them clock by clock; the host shades its normals in double (lighting.hpp, written apart from
+// the kernels) and the kernel's unclamped float output must agree within float rounding. Coarse formats
+// must visibly differ from plain Phong, or the registers would not be what shades the pixels.
+TEST(PhongUnitGolden, KernelShadesTheGoldenModelsNormals) {
+  std::mt19937 rng(17);
+  Scene scene = pixel_scene(401, 233);
+  add_object(scene, grid_triangles(401, 233, 29, rng));
+  RenderOptions plain_options;
+  plain_options.method = Method::phong;
+  plain_options.float_output = true;
+  Renderer plain(test_device(), plain_options);
+  const std::vector<float> phong = plain.render(scene).image.rgb_float;
+  const struct {
+    const char *unit, *arith, *division;
+    int expect;  // +1: 1-2 fraction bits must show against float Phong; -1: 12 bits must not; 0: not asserted
+  } cases[] = {{"classic", "fixed:12.12", "constant", -1}, {"counter", "fixed:9.2", "constant", 1},
+               {"interleave:3", "fixed:9.1", "constant", 1}, {"interleave:2:own", "fixed:9.3", "constant", 0},
+               {"segment:16", "fixed:10.4", "constant", 0}, {"classic", "fixed:10.6", "shiftadd:6", 0}};
+  for (const auto& k : cases) {
+    RenderOptions o;
+    o.method = Method::phong;
+    o.float_output = true;
+    o.units = parse_units(k.unit);
+    o.arith = parse_arith(k.arith);
+    o.division = parse_division(k.division);
+    Renderer renderer(test_device(), o);
+    const Frame& frame = renderer.render(scene);
+    std::vector<float> attrs;
+    const Records records = frame_records(renderer.geometry(), *o.units, false, Method::phong, &attrs);
+    const double scale = NORMAL_REGISTER_LEVELS * double(1 << o.arith.frac_bits);
+    double worst = 0, from_phong = 0;
+    std::uint64_t pixels = 0;
+    for (std::size_t t = 0; t < records.geometry.size(); ++t) {
+      const TriangleGeometry& r = records.geometry[t];
+      if (r.x0 > r.x1) continue;
+      const float* a = &attrs[t * PHONG_ATTR_FLOATS];
+      const Material& m = scene.materials[std::size_t(a[PHONG_MATERIAL_SLOT])];
+      for (int dy = 0; dy <= r.y1 - r.y0; ++dy) {
+        const Span s = record_span(r, dy);
+        if (s.xl > s.xr) continue;
+        SpanTrace n[3];
+        for (int c = 0; c < 3; ++c)
+          n[c] = run_unit(*o.units, o.arith, load_span(records.planes[t], c, s.xl, s.xr, dy, *o.units, o.arith, nullptr, o.division));
+        for (int i = 0; i <= s.xr - s.xl; ++i) {
+          const glm::dvec3 normal(n[0].values[i] / scale, n[1].values[i] / scale, n[2].values[i] / scale);
+          if (glm::length(normal) < 1e-3) continue;  // the kernel's zero-normal fallback is tested elsewhere
+          const double rel = s.xl + i;
+          const auto plane = [&](int slot) { return double(a[slot]) + double(a[slot + 6]) * dy + double(a[slot + 3]) * rel; };
+          const glm::dvec3 golden = blinn_phong(scene, m, {plane(9), plane(10), plane(11)}, glm::normalize(normal));
+          const std::size_t p = std::size_t(r.y0 + dy) * scene.width + std::size_t(r.x0 + s.xl + i);
+          for (int c = 0; c < 3; ++c) {
+            worst = std::max(worst, std::abs(double(frame.image.rgb_float[3 * p + c]) - golden[c]));
+            from_phong = std::max(from_phong, std::abs(double(frame.image.rgb_float[3 * p + c]) - double(phong[3 * p + c])));
+          }
+          ++pixels;
+        }
+      }
+    }
+    RecordProperty(std::string(k.unit) + "_" + k.arith + "_max_vs_phong", std::to_string(from_phong));
+    EXPECT_GT(pixels, 5000u) << k.unit << " " << k.arith;
+    EXPECT_LT(worst, 0.02) << k.unit << " " << k.arith << " " << k.division << ": kernel vs golden normals, levels";
+    std::printf("phong %s %s %s: max %.3f levels from float Phong, %.4f from the golden normals\n", k.unit, k.arith,
+                k.division, from_phong, worst);
+    if (k.expect > 0) EXPECT_GT(from_phong, 1.0) << k.unit << " " << k.arith << ": registers seem not to shade the pixels";
+    if (k.expect < 0) EXPECT_LT(from_phong, 1.0) << k.unit << " " << k.arith << ": fine registers should stay near float Phong";
+  }
+}
+
+TEST(PhongUnits, SierpinskiAndFlatAreRefused) {
+  RenderOptions o;
+  o.method = Method::phong;
+  o.units = parse_units("sierpinski:1");
+  EXPECT_THROW(Renderer renderer(test_device(), o), UsageError);
+  o.method = Method::flat;
+  o.units = parse_units("classic");
+  EXPECT_THROW(Renderer renderer(test_device(), o), UsageError);
 }
 
 const char* kUnits[] = {"classic",          "counter",          "interleave:1",      "interleave:2",

@@ -1,4 +1,5 @@
-/* Gouraud through a modeled shading unit (UNIT_KIND, UNIT_LANES, UNIT_OWN_STEP from the host).
+/* The span registers of a modeled shading unit (UNIT_KIND, UNIT_LANES, UNIT_OWN_STEP from the host):
+ * Gouraud's intensities, or Phong's normal components (method_phong_units.h).
  *
  * FIXED = 1: span registers in I.F fixed point (REG_BITS = I + F, FRAC_BITS = F; kernels/fixed_point.h).
  * Each span's registers are loaded from setup's planes (S at the left pixel, E at the right one, dI,
@@ -11,9 +12,8 @@
  *   counter                            S + i*dI for i < ceil(L/2), else E - (L-1-i)*dI
  *   sierpinski:D (sierpinski_leaf.h)   offset + (S0 + i*dI), or offset - (S0 + (L-1-i)*dI) for a reflected copy,
  *                                      S0 the shaded sub-triangle's span start
- * FIXED = 0: the float plane of method_gouraud.h (the units' ideal, identical for every unit); the
- * units then differ only in modeled clocks. */
-#include "method_gouraud.h"
+ * FIXED = 0: the method's float planes (the units' ideal, identical for every unit); the units then
+ * differ only in modeled clocks. */
 #include "fixed_point.h"
 #include "unit_cost.h"
 #include "sierpinski_leaf.h"
