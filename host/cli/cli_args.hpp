@@ -6,12 +6,30 @@
 #include <utility>
 #include <vector>
 
+#include "parashade/errors.hpp"
 #include "parashade/scene.hpp"
 
 namespace parashade::cli {
 
 // "a,b,c" -> {"a", "b", "c"}; an empty entry is a usage error naming the option.
 std::vector<std::string> split_list(const std::string& list, const std::string& option);
+
+// A comma-separated list of values, each parsed; two entries naming the same value (by `name`) are a
+// usage error naming the option.
+template <typename Parse, typename Name>
+auto parse_unique_list(const std::string& list, const std::string& option, Parse parse, Name name) {
+  std::vector<decltype(parse(list))> out;
+  std::vector<std::string> names;
+  for (const std::string& spec : split_list(list, option)) {
+    auto value = parse(spec);
+    const std::string n = name(value);
+    for (const std::string& seen : names)
+      if (seen == n) throw UsageError(option + " lists '" + spec + "' twice (as " + n + ")");
+    names.push_back(n);
+    out.push_back(std::move(value));
+  }
+  return out;
+}
 
 // --size WIDTHxHEIGHT (nullopt when absent). Only the syntax, so that a usage error is reported before
 // the scene is read; the limit is checked with the scene's own resolution.

@@ -39,7 +39,7 @@ const char* const kDefaultUnits =
 const char* const kDefaultArith = "fixed:12.12";
 
 struct ScalingArgs {
-  std::string scene, units = kDefaultUnits, arith = kDefaultArith, size, device, report;
+  std::string scene, units = kDefaultUnits, arith = kDefaultArith, method = "gouraud", size, device, report;
   int frames = 5, warmup = 1;
   bool float_output = false, markdown = false, quiet = false;
 };
@@ -145,25 +145,16 @@ void print_table(const std::vector<Config>& configs, bool markdown) {
 
 int run_scaling(const ScalingArgs& a) {
   // The command line first (usage errors, exit 2), then the scene and the destination (exit 3), then the device.
-  std::vector<UnitConfig> units;
-  {
-    std::set<std::string> seen;
-    for (const std::string& spec : split_list(a.units, "--units")) {
-      const UnitConfig u = parse_units(spec);
-      if (!seen.insert(unit_name(u)).second)
-        throw UsageError("--units lists '" + spec + "' twice (as " + unit_name(u) + ")");
-      units.push_back(u);
-    }
-  }
-  std::vector<Arithmetic> ariths;
-  {
-    std::set<std::string> seen;
-    for (const std::string& spec : split_list(a.arith, "--arith")) {
-      const Arithmetic ar = parse_arith(spec);
-      if (!seen.insert(arith_name(ar)).second)
-        throw UsageError("--arith lists '" + spec + "' twice (as " + arith_name(ar) + ")");
-      ariths.push_back(ar);
-    }
+  std::vector<UnitConfig> units = parse_unique_list(a.units, "--units", parse_units, unit_name);
+  const std::vector<Arithmetic> ariths = parse_unique_list(a.arith, "--arith", parse_arith, arith_name);
+  const Method method = parse_method(a.method);
+  if (method == Method::flat) throw UsageError("--method flat has nothing for a unit to interpolate (gouraud or phong)");
+  if (method == Method::phong) {
+    // The extra triangulation copies Gouraud intensities only: left out of the default list, refused when asked for.
+    const auto is_sierpinski = [](const UnitConfig& u) { return u.kind == UnitKind::sierpinski; };
+    if (a.units == kDefaultUnits) units.erase(std::remove_if(units.begin(), units.end(), is_sierpinski), units.end());
+    for (const UnitConfig& u : units)
+      if (is_sierpinski(u)) throw UsageError("--units " + unit_name(u) + " is modeled for --method gouraud only");
   }
   const auto size = parse_size(a.size);
   if (a.frames < 1) throw UsageError("--frames must be at least 1");
@@ -180,8 +171,8 @@ int run_scaling(const ScalingArgs& a) {
     std::cerr << "scaling " << scene.name << " (" << scene.width << "x" << scene.height << ", "
               << scene.triangle_count() << " triangles) on " << dev.name << ": exact reference ...\n";
   ScreenGeometry g;
-  build_screen_geometry(scene, {Method::gouraud, true}, g);
-  const ReferenceImage ref = render_reference(scene, g, Method::gouraud);
+  build_screen_geometry(scene, {method, true}, g);
+  const ReferenceImage ref = render_reference(scene, g, method);
 
   std::vector<Config> configs;
   for (const Arithmetic& ar : ariths)
@@ -204,7 +195,7 @@ int run_scaling(const ScalingArgs& a) {
       std::cerr << "[" << i + 1 << "/" << total << "] " << c.name() << " " << arith_name(c.arith)
                 << ": warm-up, modeled clocks, error ...\n";
     RenderOptions options;
-    options.method = Method::gouraud;
+    options.method = method;
     options.float_output = a.float_output;
     options.units = c.unit;
     options.arith = c.arith;
@@ -213,7 +204,7 @@ int run_scaling(const ScalingArgs& a) {
     for (int w = 0; w < a.warmup; ++w) f = &c.renderer->render(scene);
     c.clocks = f->stats.clocks;
     c.geometry = f->stats.geometry;
-    c.ideal = compare_to_reference(f->image, ref.covered, ref.ideal, "ideal gouraud");
+    c.ideal = compare_to_reference(f->image, ref.covered, ref.ideal, std::string("ideal ") + method_name(method));
     c.exact = compare_to_reference(f->image, ref.covered, ref.exact, "exact phong");
   }
 
@@ -258,7 +249,7 @@ int run_scaling(const ScalingArgs& a) {
       {"scene", scene.name},
       {"scene_file", a.scene},
       {"device", to_json(dev)},
-      {"method", "gouraud"},
+      {"method", method_name(method)},
       {"width", scene.width},
       {"height", scene.height},
       {"triangles", {{"in", geo.triangles_in}, {"after_culling", geo.triangles_out}}},
@@ -274,9 +265,9 @@ int run_scaling(const ScalingArgs& a) {
       {"rows", rows}};
   if (!a.report.empty()) write_text_atomically(a.report, report.dump(2) + "\n");
 
-  std::printf("%s: %dx%d, %llu triangles (%llu after culling and clipping), Gouraud through modeled shading units\n",
+  std::printf("%s: %dx%d, %llu triangles (%llu after culling and clipping), %s through modeled shading units\n",
               scene.name.c_str(), scene.width, scene.height, (unsigned long long)geo.triangles_in,
-              (unsigned long long)geo.triangles_out);
+              (unsigned long long)geo.triangles_out, method == Method::phong ? "Phong (normal components)" : "Gouraud");
   std::printf("device: %s (%s), %d compute units\n", dev.name.c_str(), dev.platform.c_str(), dev.compute_units);
   bool same_spans = true;
   for (const Config& c : configs)
@@ -292,7 +283,7 @@ int run_scaling(const ScalingArgs& a) {
               "(geometry, setup, binning, kernel, read-back); x = classic (same arith) / this; kernel min = fastest "
               "kernel of the %d\n",
               a.frames, a.warmup, a.frames);
-  std::printf("error: against the ideal Gouraud (exact reference, double precision), %s, in levels\n",
+  std::printf("error: against the ideal %s (exact reference, double precision), %s, in levels\n", method_name(method),
               a.float_output ? "unclamped float output" : "8-bit output");
   print_table(configs, a.markdown);
   if (!a.report.empty()) std::printf("wrote %s\n", a.report.c_str());
@@ -305,14 +296,16 @@ Command add_scaling_command(CLI::App& app) {
   auto a = std::make_shared<ScalingArgs>();
   auto* cmd = app.add_subcommand(
       "scaling",
-      "Sweep the modeled shading units (Gouraud): per unit and arithmetic the modeled clocks per frame, the "
-      "measured frame and kernel time, both as speed-up over classic in the same arithmetic, and the error "
-      "against the ideal Gouraud");
+      "Sweep the modeled shading units (Gouraud intensities, or Phong's normal components with --method phong): "
+      "per unit and arithmetic the modeled clocks per frame, the measured frame and kernel time, both as speed-up "
+      "over classic in the same arithmetic, and the error against the method's ideal");
   cmd->add_option("scene", a->scene, "Scene file (.json) or mesh (.obj .off .ply .stl)")->required();
   cmd->add_option("--units", a->units,
                   "Comma-separated units, each as render --units takes it: classic, counter, interleave:M[:own] "
                   "(M = 1..16), segment:P (P = 2..64, power of two), sierpinski[:D]...; include classic for the "
                   "speed-ups")
+      ->capture_default_str();
+  cmd->add_option("--method", a->method, "gouraud (intensities through the units) or phong (normal components)")
       ->capture_default_str();
   cmd->add_option("--arith", a->arith,
                   "Comma-separated span arithmetics: float, fixed (= fixed:12.12), fixed:I.F (I >= 9, I + F <= 32)")

@@ -93,6 +93,34 @@ TEST_F(CliScaling, SeveralArithmeticsGiveEveryPair) {
                                              "interleave:2 fixed:10.4"}));
 }
 
+// Phong through the units: the normal's components in the registers; the clocks are the same spans'
+// (one unit per span, whatever it interpolates), the error is against the ideal Phong, and a coarse
+// register format costs error that the fine one does not.
+TEST_F(CliScaling, PhongSweepsNormalsThroughTheUnits) {
+  const RunResult r = scaling(sphere_, {"--size", "160x120", "--units", "classic,counter", "--arith", "fixed:12.12,fixed:9.1",
+                                        "--method", "phong"});
+  ASSERT_TRUE(succeeds(r));
+  const nlohmann::json rep = read_report();
+  EXPECT_EQ(field(rep, "/method"), "phong");
+  const nlohmann::json rows = field(rep, "/rows");
+  ASSERT_EQ(rows.size(), 4u) << rows.dump(2);
+  for (const auto& row : rows) {
+    SCOPED_TRACE(row.dump(2));
+    EXPECT_EQ(field(row, "/error/implementation/reference"), "ideal phong");
+    EXPECT_EQ(field(row, "/modeled_clocks/span_pixels"), field(rows[0], "/modeled_clocks/span_pixels"));
+  }
+  EXPECT_LT(field(rows[0], "/error/implementation/max_abs").get<double>(), 1.0);   // classic fixed:12.12
+  EXPECT_GT(field(rows[2], "/error/implementation/max_abs").get<double>(), 1.0);   // classic fixed:9.1
+}
+
+TEST_F(CliScaling, PhongRefusesSierpinskiAndFlatIsNoUnitMethod) {
+  EXPECT_TRUE(fails_with(scaling(sphere_, {"--method", "phong", "--units", "classic,sierpinski:1"}), kUsage,
+                         {"sierpinski:1"}));
+  EXPECT_TRUE(fails_with(scaling(sphere_, {"--method", "flat"}), kUsage, {"flat"}));
+  EXPECT_TRUE(fails_with(scaling(sphere_, {"--units", "classic,classic"}), kUsage, {"twice"}));
+  EXPECT_TRUE(nothing_written());
+}
+
 TEST_F(CliScaling, BadUnitIsAUsageErrorNamingIt) {
   EXPECT_TRUE(fails_with(scaling(sphere_, {"--units", "classic,zigzag:3"}), kUsage, {"zigzag:3"}));
   EXPECT_TRUE(nothing_written());
