@@ -34,11 +34,12 @@ def point_label(r):
     return f"{r['peer']} {r['method']}"
 
 
-def pareto(points):
-    """Points (time, nmse, row) not dominated by another (faster and at most as wrong, or vice versa)."""
+def pareto(points, rel=0.01):
+    """Points (time, nmse, row) not dominated by another: each on the front is more than `rel` less wrong
+    than every faster point (so equal errors up to rounding do not all count as improvements)."""
     front = []
     for p in sorted(points, key=lambda q: (q[0], q[1])):
-        if not front or p[1] < front[-1][1]:
+        if not front or p[1] < front[-1][1] * (1.0 - rel):
             front.append(p)
     return front
 
@@ -49,15 +50,21 @@ def speed_error_plot(rows, scene, size, out_dir):
            and isinstance(r.get("nmse"), (int, float)) and math.isfinite(r["nmse"])]
     if len(pts) < 2:
         return None
-    fig, ax = plt.subplots(figsize=(8, 5.5))
+    fig, ax = plt.subplots(figsize=(13, 5.5))
     front = pareto(pts)
     front_ids = {id(p[2]) for p in front}
-    for t, e, r in pts:
+    # Numbered points and a key beside the plot: many points share an error (the units) and their
+    # labels would overlap.
+    key = []
+    for k, (t, e, r) in enumerate(sorted(pts, key=lambda q: (q[0], q[1])), start=1):
         peer = r["peer"]
         ax.scatter(t, e, marker="s" if peer == "llvmpipe" else "o", s=60,
                    color="tab:red" if peer == "llvmpipe" else "tab:blue",
                    edgecolor="black" if id(r) in front_ids else "none", linewidth=1.5, zorder=3)
-        ax.annotate(point_label(r), (t, e), textcoords="offset points", xytext=(6, 4), fontsize=8)
+        ax.annotate(str(k), (t, e), textcoords="offset points", xytext=(5, 5 + 8 * (k % 2)), fontsize=8)
+        key.append(f"{k:2d} {'*' if id(r) in front_ids else ' '} {point_label(r)}: {t:.1f} ms, NMSE {r['nmse']:.2e}")
+    fig.text(0.57, 0.92, "\n".join(key) + "\n\n* on the Pareto front", fontsize=7.5, va="top", family="monospace")
+    fig.subplots_adjust(left=0.07, right=0.55)
     ax.step([p[0] for p in front], [p[1] for p in front], where="post", color="black", linestyle="--",
             linewidth=1, label="Pareto front (outlined points)", zorder=2)
     ax.set_xscale("log")
@@ -73,9 +80,8 @@ def speed_error_plot(rows, scene, size, out_dir):
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(loc="upper right", fontsize=8)
     xs = [p[0] for p in pts]
-    ax.set_xlim(min(xs) / 1.3, max(xs) * 2.0)  # room for the labels on the right
+    ax.set_xlim(min(xs) / 1.3, max(xs) * 1.3)
     name = f"speed_error_{scene}_{size}.png"
-    fig.tight_layout()
     fig.savefig(os.path.join(out_dir, name), dpi=110)
     plt.close(fig)
     return name
