@@ -70,6 +70,7 @@ def load_results(paths):
             out["scaling"].append(doc)
         elif k == "memory":
             out["memory"] += doc["rows"]
+            out["memory_baseline"] = doc.get("baseline_mib")
     return out
 
 

@@ -8,6 +8,7 @@ Registry entry: {"id", "section", "statement", "source_figure", "measure", "rule
   measure: {"file": F, "bench": NAME, "field": K}   a Google Benchmark case (median when aggregated)
            {"file": F, "path": "rows[unit=counter,arith=fixed:12.12].modeled_speedup"}   any JSON value
            {"ratio": [MEASURE, MEASURE]}             the first divided by the second
+           {"difference": [MEASURE, MEASURE]}        the first minus the second
            null                                      not measured yet (the method is not built)
   rule:    {"op": ">=" | "<=" | "==" | "approx", "value": X (or "value_of": MEASURE), "rel": tolerance}
 
@@ -71,6 +72,9 @@ class Results:
         if "ratio" in measure:
             a, b = (self.value(m) for m in measure["ratio"])
             return a / b
+        if "difference" in measure:
+            a, b = (self.value(m) for m in measure["difference"])
+            return a - b
         doc = self.doc(measure["file"])
         if "bench" in measure:
             rows = {r["name"]: r for r in benchmark_rows(doc)}
@@ -130,7 +134,9 @@ def main():
     for c in registry["claims"]:
         try:
             value = results.value(c["measure"])
-            v, by, _ = verdict(value, c["rule"], results)
+            v, by, target = verdict(value, c["rule"], results)
+            if "value_of" in c["rule"]:  # the figure is itself measured: show it
+                by = f"against {fmt(target)}; {by}"
             measured = fmt(value) + (f" ({by})" if by else "")
         except NotMeasured as e:
             v, measured = "not measured", str(e)
@@ -138,7 +144,9 @@ def main():
             v, measured = "not measured", f"unusable result ({e})"
         counts[v] = counts.get(v, 0) + 1
         src = c["measure"]
-        files = sorted({m["file"] for m in (src.get("ratio", [src]) if src else []) if "file" in m})
+        parts = (src.get("ratio") or src.get("difference") or [src]) if src else []
+        files = sorted({m["file"] for m in parts + ([c["rule"]["value_of"]] if "value_of" in c["rule"] else [])
+                        if "file" in m})
         note = f" — {c['note']}" if c.get("note") else ""
         lines.append(f"| {c['id']} | {c['section']} | {c['statement']}{note} | {c['source_figure']} | {measured} | "
                      f"**{v}** | {', '.join(files) or '-'} |")

@@ -2,7 +2,8 @@
 """Peak resident memory of whole `parashade render` processes (Gouraud, --no-error, 1920x1080 unless
 --size), one process per scene, measured by GNU time (%M, KiB). The process includes PoCL and its LLVM,
 the OpenCL buffers and the host's geometry. Writes JSON: {"rows": [{"scene", "width", "height",
-"triangles", "peak_rss_mib", "frame_ms"}], "command": ...}. The memory budget of the targets
+"triangles", "peak_rss_mib", "over_baseline_mib", "frame_ms"}], "baseline_mib", "command"}; the
+baseline is the peak of `parashade devices` (the OpenCL runtime alone). The memory budget of the targets
 (2 x (frame buffers + mesh) + 64 MiB) is computed by bench_llvmpipe (memory_budget_mib) for the same scene.
 
     scripts/peak_memory.py --binary build/parashade -o memory.json
@@ -62,7 +63,14 @@ def main():
                          "triangles": r["triangles"]["in"], "peak_rss_mib": kib / 1024.0,
                          "frame_ms": r["frame_ms"], "device": r["device"]})
             print(f"{name}: peak {kib / 1024.0:.1f} MiB", file=sys.stderr)
-    out = {"command": " ".join(sys.argv), "rows": rows}
+        # The fixed cost of the process: the OpenCL runtime (PoCL and its LLVM) listing the devices.
+        p = subprocess.run(["/usr/bin/time", "-f", "%M", args.binary, "devices"], stdout=subprocess.DEVNULL,
+                           stderr=subprocess.PIPE, text=True)
+        baseline = int(p.stderr.strip().splitlines()[-1]) / 1024.0 if p.returncode == 0 else None
+    for r in rows:
+        r["over_baseline_mib"] = r["peak_rss_mib"] - baseline if baseline is not None else None
+    out = {"command": " ".join(sys.argv), "baseline_mib": baseline,
+           "baseline_note": "peak RSS of 'parashade devices' (OpenCL runtime, no frame)", "rows": rows}
     tmp_out = args.output + ".tmp"
     with open(tmp_out, "w") as f:
         json.dump(out, f, indent=2)

@@ -103,32 +103,46 @@ def interpolators(unit):
 
 
 def scaling_plot(doc, out_dir):
-    rows = doc["rows"]
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.8))
-    for arith, colour in zip(sorted({r["arith"] for r in rows}), ["tab:blue", "tab:orange", "tab:green"]):
-        sel = sorted([r for r in rows if r["arith"] == arith and interpolators(r["unit"])],
-                     key=lambda r: interpolators(r["unit"]))
-        x = [interpolators(r["unit"]) for r in sel]
-        mod = [r["modeled_speedup"] for r in sel]
-        meas = [r["measured_speedup"] for r in sel]
-        ax1.plot(x, mod, "o-", color=colour, label=f"modeled clocks, {arith}")
-        ax1.plot(x, meas, "s--", color=colour, alpha=0.7, label=f"measured frame, {arith}")
-        for xi, yi, r in zip(x, mod, sel):
-            ax1.annotate(r["unit"], (xi, yi), textcoords="offset points", xytext=(4, -10), fontsize=7)
-        err = [r["error"]["implementation"].get("max_abs") for r in sel]
-        ax2.plot(x, err, "o-", color=colour, label=f"max error vs ideal Gouraud, {arith}")
+    """Three panels, one line per unit family (classic, then counter / interleave:M / segment:P /
+    sierpinski): modeled speed-up (the same in every arithmetic), measured frame speed-up per
+    arithmetic, and the max error against the ideal Gouraud."""
+    rows = [r for r in doc["rows"] if interpolators(r["unit"])]
+    families = {"counter": ("tab:green", "^"), "interleave": ("tab:blue", "o"), "segment": ("tab:orange", "s"),
+                "sierpinski": ("tab:purple", "D")}
+    ariths = sorted({r["arith"] for r in rows})
+    styles = dict(zip(ariths, ["-", "--", ":"]))
+    fig, (ax1, ax2, ax3) = plt.subplots(1, 3, figsize=(15, 4.8))
+    for fam, (colour, marker) in families.items():
+        for arith in ariths:
+            sel = sorted([r for r in rows if r["arith"] == arith and
+                          (r["unit"] == "classic" or (r["unit"].startswith(fam) and not r["unit"].endswith(":own")))],
+                         key=lambda r: interpolators(r["unit"]))
+            if len(sel) < 2:
+                continue
+            x = [interpolators(r["unit"]) for r in sel]
+            if arith == ariths[0]:  # modeled clocks do not depend on the arithmetic
+                ax1.plot(x, [r["modeled_speedup"] for r in sel], marker=marker, color=colour, label=fam)
+            ax2.plot(x, [r["measured_speedup"] for r in sel], marker=marker, color=colour, linestyle=styles[arith],
+                     label=f"{fam}, {arith}")
+            ax3.plot(x, [r["error"]["implementation"].get("max_abs") for r in sel], marker=marker, color=colour,
+                     linestyle=styles[arith], label=f"{fam}, {arith}")
     ax1.plot([1, 64], [1, 64], color="grey", linewidth=0.8, linestyle=":", label="ideal (= interpolators)")
-    for ax in (ax1, ax2):
+    ax1.set_title("modeled clocks: classic / unit", fontsize=9)
+    ax2.set_title("measured whole frame: classic / unit (emulation)", fontsize=9)
+    ax3.set_title("max abs error vs ideal Gouraud", fontsize=9)
+    for ax in (ax1, ax2, ax3):
         ax.set_xscale("log", base=2)
         ax.set_xlabel("interpolators (intensities per clock; log2)")
         ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
     ax1.set_yscale("log", base=2)
-    ax1.set_ylabel("speed-up over classic (same arithmetic; log2)")
-    ax1.legend(fontsize=7)
-    ax2.set_ylabel("max abs error, 8-bit levels")
-    ax2.legend(fontsize=7)
+    ax1.set_ylabel("speed-up over classic (log2)")
+    ax2.set_ylabel("speed-up over classic, same arithmetic")
+    ax3.set_yscale("log")
+    ax3.set_ylabel("8-bit levels (log)")
     fig.suptitle(f"{doc['scene']} {doc['width']}x{doc['height']}: modeled shading units "
-                 f"({doc['device']['name']}, {doc['device'].get('compute_units', '?')} CU)", fontsize=10)
+                 f"({doc['device']['name']}, {doc['device'].get('compute_units', '?')} CU; "
+                 f"medians of {doc.get('frames', '?')} frames)", fontsize=10)
     fig.tight_layout()
     name = f"scaling_{doc['scene']}.png"
     fig.savefig(os.path.join(out_dir, name), dpi=110)
@@ -219,11 +233,42 @@ def fill_table(rows):
     return "\n".join(lines)
 
 
+def throughput_table(rows):
+    """Large triangles (fullscreen_quad): pixel throughput; small triangles (sphere_2m): triangle throughput."""
+    lines = ["| size | method | quad Mpixel/s parashade / llvmpipe | sphere_2m Mtriangle/s parashade / llvmpipe |",
+             "|---|---|---|---|"]
+    sizes = sorted({r["size"] for r in rows if r["peer"] == "llvmpipe"}, key=lambda s: int(s.split("x")[0]))
+    for size in sizes:
+        for method in ("gouraud", "phong"):
+            cells = []
+            for scene, field in (("fullscreen_quad", "mpixel_per_s"), ("sphere_2m", "mtriangle_per_s")):
+                p = find(rows, peer="parashade", scene=scene, size=size, method=method)
+                l = find(rows, peer="llvmpipe", scene=scene, size=size, method=method)
+                cells.append(f"{p[field]:.1f} / {l[field]:.1f}" if p and l else "-")
+            lines.append(f"| {size} | {method} | {cells[0]} | {cells[1]} |")
+    return "\n".join(lines)
+
+
+def memory_table(memory, rows, baseline):
+    lines = ["| scene | size | peak RSS MiB (whole `parashade render`) | above the OpenCL runtime's MiB | budget MiB |",
+             "|---|---|---|---|---|"]
+    for m in memory:
+        size = f"{m['width']}x{m['height']}"
+        b = find(rows, peer="parashade", scene=m["scene"], size=size, method="gouraud")
+        over = m.get("over_baseline_mib")
+        lines.append(f"| {m['scene']} | {size} | {m['peak_rss_mib']:.1f} | {over:.1f} | "
+                     f"{b['memory_budget_mib']:.1f} |" if b and over is not None else
+                     f"| {m['scene']} | {size} | {m['peak_rss_mib']:.1f} | - | - |")
+    return "\n".join(lines) + (f"\n\nThe OpenCL runtime alone (`parashade devices`): {baseline:.1f} MiB. "
+                                "Budget = 2 x (RGBA8 + 32-bit depth frame + mesh) + 64 MiB." if baseline else "")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("results", nargs="+", help="result JSON files or directories")
     ap.add_argument("--images", help="bench_llvmpipe --images directory (image strips)")
     ap.add_argument("-o", "--output", required=True, help="report directory")
+    ap.add_argument("--note", default="", help="a line about the machine or the run, printed under the title")
     args = ap.parse_args()
     res = load_results(args.results)
     rows = res["benchmark"]
@@ -237,12 +282,18 @@ def main():
                f"{ctx.get('compute_units', '?')} compute units; peer `{ctx.get('gl_renderer', '-')}` "
                f"({ctx.get('gl_version', '-')}), LP_NUM_THREADS={ctx.get('lp_num_threads', '-')}; "
                f"{ctx.get('num_cpus', '?')} CPUs, load average {ctx.get('load_avg', '?')}.", ""]
+    if args.note:
+        md += [args.note, ""]
     if rows:
         md += ["## Frame time against llvmpipe (x = llvmpipe ms / parashade ms; > 1: parashade faster)", "",
                "Whole frame on both sides (parashade: vertex stage, clip/cull, setup, binning, upload, kernel, "
                "read-back; llvmpipe: clear, draw, glReadPixels, meshes resident in vertex buffers). Back faces "
                "culled by both exactly when the scene says so.", "", ratio_table(rows), "",
-               "## Large triangles against the fill limit", "", fill_table(rows), ""]
+               "## Large triangles against the fill limit", "", fill_table(rows), "",
+               "## Pixel throughput (large triangles) and triangle throughput (small triangles)", "",
+               throughput_table(rows), ""]
+    if res["memory"]:
+        md += ["## Peak memory (Gouraud)", "", memory_table(res["memory"], rows, res.get("memory_baseline")), ""]
     sizes = sorted({r["size"] for r in rows if r["peer"] == "llvmpipe"}, key=lambda s: int(s.split("x")[0]))
     scenes = sorted({r["scene"] for r in rows if r["peer"] == "llvmpipe"})
     plots = []
