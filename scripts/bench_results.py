@@ -21,20 +21,21 @@ def kind(doc):
     return "unknown"
 
 
-def benchmark_rows(doc):
-    """Rows of a Google Benchmark JSON; medians when aggregated."""
+def benchmark_rows(doc, aggregate="median"):
+    """Rows of a Google Benchmark JSON; the given aggregate ("median", "mean" or, for bench_llvmpipe,
+    "min") when the run has repetitions; the median where that aggregate is missing."""
     rows = {}
     for b in doc["benchmarks"]:
         if b.get("error_occurred"):
             continue
         aggregated = b.get("run_type") == "aggregate"
-        if aggregated and b.get("aggregate_name") != "median":
+        if aggregated and b.get("aggregate_name") not in (aggregate, "median"):
             continue
         name = b.get("run_name", b["name"])
         if name.endswith("/manual_time"):
             name = name[: -len("/manual_time")]
-        if not aggregated and name in rows:
-            continue  # repetitions without aggregates: keep the first
+        if name in rows and (not aggregated or b.get("aggregate_name") != aggregate):
+            continue  # repetitions without aggregates: keep the first; the wanted aggregate beats the median
         parts = name.split("/")
         row = dict(b)
         row["name"] = name
@@ -46,7 +47,7 @@ def benchmark_rows(doc):
     return list(rows.values())
 
 
-def load_results(paths):
+def load_results(paths, aggregate="median"):
     """{"benchmark": [rows], "contexts": [context], "scaling": [docs], "memory": [rows]} from files or
     directories (every *.json in a directory)."""
     files = []
@@ -63,7 +64,7 @@ def load_results(paths):
             continue
         k = kind(doc)
         if k == "benchmark":
-            out["benchmark"] += benchmark_rows(doc)
+            out["benchmark"] += benchmark_rows(doc, aggregate)
             out["contexts"].append(doc["context"])
         elif k == "scaling":
             doc["_file"] = path

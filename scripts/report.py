@@ -268,9 +268,11 @@ def main():
     ap.add_argument("results", nargs="+", help="result JSON files or directories")
     ap.add_argument("--images", help="bench_llvmpipe --images directory (image strips)")
     ap.add_argument("-o", "--output", required=True, help="report directory")
+    ap.add_argument("--aggregate", default="median", choices=["median", "mean", "min"],
+                    help="which statistic of repeated runs (min: the fastest repetition)")
     ap.add_argument("--note", default="", help="a line about the machine or the run, printed under the title")
     args = ap.parse_args()
-    res = load_results(args.results)
+    res = load_results(args.results, args.aggregate)
     rows = res["benchmark"]
     if not rows and not res["scaling"]:
         sys.exit("report: no benchmark or scaling results in " + " ".join(args.results))
@@ -284,6 +286,7 @@ def main():
                f"{ctx.get('num_cpus', '?')} CPUs, load average {ctx.get('load_avg', '?')}.", ""]
     if args.note:
         md += [args.note, ""]
+    md += [f"Times: the {args.aggregate} over repetitions (where the run had repetitions).", ""]
     if rows:
         md += ["## Frame time against llvmpipe (x = llvmpipe ms / parashade ms; > 1: parashade faster)", "",
                "Whole frame on both sides (parashade: vertex stage, clip/cull, setup, binning, upload, kernel, "
