@@ -59,6 +59,8 @@ if [ -x "$BUILD/bench/bench_span_setup" ]; then
   "$BUILD/bench/bench_span_setup" --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true \
       --benchmark_report_aggregates_only=true --benchmark_min_time=0.1 \
       --benchmark_out="$OUT/span.json" --benchmark_out_format=json >/dev/null
+  "$BUILD/bench/bench_span_setup" --print-table >"$OUT/span-table.txt"  # source 003's Table 1 recomputed
+  "$BUILD/bench/bench_span_setup" --print-ops >"$OUT/span-ops.txt"      # operation counts, example triangle
 fi
 
 "$PYTHON" scripts/peak_memory.py --binary "$BUILD/parashade" -o "$OUT/memory.json"

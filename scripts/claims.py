@@ -7,6 +7,7 @@ missing is printed as "not measured" — nothing is typed in by hand.
 Registry entry: {"id", "section", "statement", "source_figure", "measure", "rule", "note"?}
   measure: {"file": F, "bench": NAME, "field": K}   a Google Benchmark case (median when aggregated)
            {"file": F, "path": "rows[unit=counter,arith=fixed:12.12].modeled_speedup"}   any JSON value
+           {"file": F, "regex": R}                   the first group of R in a text result, as a number
            {"ratio": [MEASURE, MEASURE]}             the first divided by the second
            {"difference": [MEASURE, MEASURE]}        the first minus the second
            null                                      not measured yet (the method is not built)
@@ -76,6 +77,15 @@ class Results:
         if "difference" in measure:
             a, b = (self.value(m) for m in measure["difference"])
             return a - b
+        if "regex" in measure:
+            path = os.path.join(self.directory, measure["file"])
+            if not os.path.exists(path):
+                raise NotMeasured(f"no result file {measure['file']}")
+            with open(path) as f:
+                m = re.search(measure["regex"], f.read(), re.MULTILINE)
+            if not m:
+                raise NotMeasured(f"no match for the pattern in {measure['file']}")
+            return float(m.group(1))
         doc = self.doc(measure["file"])
         if "bench" in measure:
             rows = {r["name"]: r for r in benchmark_rows(doc, self.aggregate)}
