@@ -79,8 +79,9 @@ def speed_error_plot(rows, scene, size, out_dir):
     ax.set_title(f"{scene} {size}: speed against error (blue parashade, red llvmpipe)")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(loc="upper right", fontsize=8)
-    xs = [p[0] for p in pts]
+    xs, es = [p[0] for p in pts], [p[1] for p in pts]
     ax.set_xlim(min(xs) / 1.3, max(xs) * 1.3)
+    ax.set_ylim(min(es) * (min(es) / max(es)) ** 0.1 / 1.2, max(es) * (max(es) / min(es)) ** 0.1 * 1.2)  # room for the numbers
     name = f"speed_error_{scene}_{size}.png"
     fig.savefig(os.path.join(out_dir, name), dpi=110)
     plt.close(fig)
