@@ -1,6 +1,7 @@
 #!/bin/sh
 # Installs the Debian (bookworm) packages parashade builds, tests and benchmarks with.
-# Runs as root or through sudo; safe to run again.
+# Runs as root or through sudo; safe to run again. scripts/report.py (plots) also needs python3-matplotlib,
+# which CI does not install.
 set -eu
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
@@ -11,4 +12,5 @@ $SUDO apt-get install -y -q --no-install-recommends \
     pocl-opencl-icd ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers clinfo \
     libglm-dev libopenmesh-dev libopenimageio-dev openimageio-tools \
     nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev \
+    libegl-dev libgl-dev libgl1-mesa-dri python3 \
     ca-certificates

@@ -1,0 +1,351 @@
+// parashade against the peer a user would pick, Mesa llvmpipe (EGL surfaceless, OpenGL 3.3 core), in one
+// run (Google Benchmark; use --benchmark_enable_random_interleaving=true so a noisy spell on this shared
+// machine does not fall on one side only). Cases, each at every --sizes resolution:
+//   llvmpipe/SCENE/WxH/gouraud|phong   the peer (bench/peer/llvmpipe_peer.hpp)
+//   parashade/SCENE/WxH/flat|gouraud|phong, parashade/teapot/WxH/gouraud:UNIT:ARITH (modeled units)
+//   fill_limit/WxH                     a kernel that only writes every pixel: the device's ceiling
+// Frame time: llvmpipe — clear, draw, glReadPixels (the meshes stay in vertex buffers uploaded once
+// before timing, as an application keeps them); parashade — the renderer's whole frame (host vertex
+// stage, clip and cull, setup, binning with the upload of the frame's triangles, kernel, read-back).
+// Two untimed frames first on both sides. Counters (plain values): frame_ms, mpixel_per_s,
+// mtriangle_per_s (scene triangles per second), triangles_in; error of the frame against parashade's
+// exact Phong reference (nmse, psnr_db, max_abs, coverage_mismatch: pixels covered in one only);
+// peak_rss_mib (process peak resident memory during the case, reset before it through
+// /proc/self/clear_refs; it includes everything the process holds) with memory_budget_mib =
+// 2 x (frame buffers + mesh) + 64 MiB; modeled_clocks on the unit path.
+// LP_NUM_THREADS is set to the OpenCL device's compute units unless already set (context: lp_num_threads).
+//   --scenes=a,b,...  (default sphere_8k,sphere_131k,sphere_2m,teapot,robot,bunny,fandisk,fullscreen_quad)
+//   --sizes=WxH,...   (default 1920x1080)
+//   --no-error        skip the error figures (no reference rendering)
+//   --images=DIR      write each case's frame (DIR/CASE.png, '/' as '_') and the exact reference
+//                     (DIR/SCENE_WxH_exact.png) when its error is computed: the report's image strip
+//   PARASHADE_DEVICE, PARASHADE_MESH_DIR as for bench_frame.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "parashade/device.hpp"
+#include "parashade/geometry_stage.hpp"
+#include "parashade/image.hpp"
+#include "parashade/metrics.hpp"
+#include "parashade/reference.hpp"
+#include "parashade/renderer.hpp"
+#include "parashade/units.hpp"
+#include "peer/bench_scenes.hpp"
+#include "peer/llvmpipe_peer.hpp"
+
+namespace parashade {
+namespace {
+
+Device& bench_device() {
+  static std::unique_ptr<Device> device = [] {
+    const char* sel = std::getenv("PARASHADE_DEVICE");
+    return open_device(sel ? sel : "");
+  }();
+  return *device;
+}
+
+peer::LlvmpipePeer& llvmpipe() {
+  static peer::LlvmpipePeer p;
+  return p;
+}
+
+bool g_errors = true;
+std::string g_image_dir;
+
+std::string file_name(std::string name) {
+  for (char& c : name)
+    if (c == '/' || c == ':') c = '_';
+  return name;
+}
+
+// The exact reference as an 8-bit image (rounded, alpha 255 where covered).
+RenderedImage exact_image(const ReferenceImage& ref) {
+  RenderedImage img;
+  img.width = ref.width;
+  img.height = ref.height;
+  img.rgba.resize(std::size_t(ref.width) * ref.height * 4);
+  for (std::size_t i = 0; i < ref.exact.size(); ++i) {
+    for (int c = 0; c < 3; ++c)
+      img.rgba[4 * i + c] = std::uint8_t(std::lround(std::clamp(ref.exact[i][c], 0.0, 255.0)));
+    img.rgba[4 * i + 3] = ref.covered[i] ? 255 : 0;
+  }
+  return img;
+}
+
+// Resident memory of this process in MiB, from /proc/self/status ("VmHWM" peak, "VmRSS" current).
+double status_mib(const char* field) {
+  std::ifstream f("/proc/self/status");
+  std::string line;
+  const std::string key = std::string(field) + ":";
+  while (std::getline(f, line))
+    if (line.compare(0, key.size(), key) == 0) return std::stod(line.substr(key.size())) / 1024.0;  // kB
+  return NAN;
+}
+void reset_peak_rss() { std::ofstream("/proc/self/clear_refs") << "5"; }
+
+double memory_budget_mib(const Scene& s) {
+  double mesh = 0;
+  for (const Object& o : s.objects)
+    mesh += double(o.mesh->positions.size()) * 24.0 + double(o.mesh->triangles.size()) * 12.0;
+  const double frame_buffers = double(s.width) * s.height * 8.0;  // RGBA8 colour + 32-bit depth
+  return 2.0 * (frame_buffers + mesh) / (1024.0 * 1024.0) + 64.0;
+}
+
+// Error against the exact Phong reference, computed once per case (the reference is freed right after,
+// so it does not count in the next case's peak memory).
+std::map<std::string, ErrorMetrics>& error_cache() {
+  static std::map<std::string, ErrorMetrics> m;
+  return m;
+}
+void set_error_counters(benchmark::State& state, const std::string& name, const Scene& scene,
+                        const RenderedImage& image) {
+  if (!g_errors) return;
+  auto it = error_cache().find(name);
+  if (it == error_cache().end()) {
+    ScreenGeometry g;
+    build_screen_geometry(scene, {Method::phong, true}, g);
+    const ReferenceImage ref = render_reference(scene, g, Method::phong);
+    it = error_cache().emplace(name, compare_to_reference(image, ref.covered, ref.exact, "exact phong")).first;
+    if (!g_image_dir.empty()) {
+      const std::string size = std::to_string(scene.width) + "x" + std::to_string(scene.height);
+      write_image(g_image_dir + "/" + file_name(name) + ".png", image);
+      const std::string exact = g_image_dir + "/" + scene.name + "_" + size + "_exact.png";
+      if (!std::filesystem::exists(exact)) write_image(exact, exact_image(ref));
+    }
+  }
+  const ErrorMetrics& e = it->second;
+  state.counters["nmse"] = e.nmse;
+  state.counters["psnr_db"] = e.psnr_db;
+  state.counters["max_abs"] = e.max_abs;
+  state.counters["coverage_mismatch"] = double(e.coverage_mismatch);
+  state.counters["pixels_compared"] = double(e.pixels_compared);
+}
+
+void common_counters(benchmark::State& state, const Scene& scene, double frame_ms, double peak_mib) {
+  state.counters["frame_ms"] = frame_ms;
+  state.counters["mpixel_per_s"] = double(scene.width) * scene.height / (frame_ms * 1e3);
+  state.counters["mtriangle_per_s"] = double(scene.triangle_count()) / (frame_ms * 1e3);
+  state.counters["triangles_in"] = double(scene.triangle_count());
+  state.counters["peak_rss_mib"] = peak_mib;
+  state.counters["memory_budget_mib"] = memory_budget_mib(scene);
+}
+
+const Scene* scene_or_skip(benchmark::State& state, const std::string& name, int w, int h) {
+  try {
+    return &bench::scene_named(name, w, h);
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+    return nullptr;
+  }
+}
+
+void llvmpipe_frame(benchmark::State& state, const std::string& case_name, const std::string& scene_name, int w, int h,
+                    Method method) {
+  const Scene* scene = scene_or_skip(state, scene_name, w, h);
+  if (!scene) return;
+  peer::LlvmpipePeer& gl = llvmpipe();
+  RenderedImage image;
+  reset_peak_rss();
+  gl.load(*scene);
+  for (int i = 0; i < 2; ++i) gl.render(*scene, method, image);  // shader JIT, framebuffer allocation
+  double sum_ms = 0;
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    gl.render(*scene, method, image);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    state.SetIterationTime(ms * 1e-3);
+    sum_ms += ms;
+  }
+  const double peak = status_mib("VmHWM");
+  common_counters(state, *scene, sum_ms / double(state.iterations()), peak);
+  set_error_counters(state, case_name, *scene, image);
+}
+
+void parashade_frame(benchmark::State& state, const std::string& case_name, const std::string& scene_name, int w,
+                     int h, const RenderOptions& options) {
+  const Scene* scene = scene_or_skip(state, scene_name, w, h);
+  if (!scene) return;
+  reset_peak_rss();
+  Renderer renderer(bench_device(), options);
+  for (int i = 0; i < 2; ++i) renderer.render(*scene);  // program build, work-group compilation, allocations
+  double sum_ms = 0, kernel_ms = 0;
+  const Frame* last = nullptr;
+  for (auto _ : state) {
+    last = &renderer.render(*scene);
+    state.SetIterationTime(last->timings.total_ms * 1e-3);
+    sum_ms += last->timings.total_ms;
+    kernel_ms += last->timings.kernel_ms;
+  }
+  const double peak = status_mib("VmHWM");
+  const double n = double(state.iterations());
+  common_counters(state, *scene, sum_ms / n, peak);
+  state.counters["kernel_ms"] = kernel_ms / n;
+  state.counters["triangles_after_culling"] = double(last->stats.geometry.triangles_out);
+  if (options.unit_path()) state.counters["modeled_clocks"] = double(last->stats.clocks.clocks);
+  set_error_counters(state, case_name, *scene, last->image);
+}
+
+// The ceiling: a kernel that only writes every pixel of a w x h RGBA8 frame (profiling event time).
+void fill_limit(benchmark::State& state, int width, int height) {
+  Device& device = bench_device();
+  const int vectors = (width * height + 15) / 16;
+  cl::Buffer out(device.context(), CL_MEM_WRITE_ONLY | CL_MEM_ALLOC_HOST_PTR, std::size_t(vectors) * 16 * 4);
+  cl::Kernel kernel(device.program({"common.h", "fill_limit.cl"}, ""), "fill_limit");
+  kernel.setArg(0, out);
+  kernel.setArg(1, cl_uint(0xFF336699u));
+  kernel.setArg(2, cl_int(vectors));
+  const cl::NDRange global{std::size_t(vectors)};
+  for (int i = 0; i < 2; ++i) device.queue().enqueueNDRangeKernel(kernel, cl::NullRange, global);
+  device.queue().finish();
+  double sum_ms = 0.0;
+  for (auto _ : state) {
+    cl::Event done;
+    device.queue().enqueueNDRangeKernel(kernel, cl::NullRange, global, cl::NullRange, nullptr, &done);
+    done.wait();
+    const double ms = double(done.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
+                             done.getProfilingInfo<CL_PROFILING_COMMAND_START>()) * 1e-6;
+    state.SetIterationTime(ms * 1e-3);
+    sum_ms += ms;
+  }
+  const double frame_ms = sum_ms / double(state.iterations());
+  state.counters["frame_ms"] = frame_ms;
+  state.counters["mpixel_per_s"] = double(width) * height / (frame_ms * 1e3);
+}
+
+// The fastest repetition beside Google Benchmark's median: on a shared machine other processes only add
+// time, so the minimum of interleaved repetitions is the steadier estimate of a frame's own cost.
+double minimum(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); }
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ','))
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+void register_all(const std::vector<std::string>& scenes, const std::vector<std::pair<int, int>>& sizes) {
+  const char* mesh_dir = std::getenv("PARASHADE_MESH_DIR");
+  const bool have_meshes = mesh_dir && *mesh_dir;
+  for (const auto& [w, h] : sizes) {
+    const std::string size = std::to_string(w) + "x" + std::to_string(h);
+    for (const std::string& scene : scenes) {
+      if (bench::needs_mesh_dir(scene) && !have_meshes) {
+        std::fprintf(stderr, "bench_llvmpipe: PARASHADE_MESH_DIR is not set: %s skipped\n", scene.c_str());
+        continue;
+      }
+      for (Method method : {Method::gouraud, Method::phong}) {
+        const std::string name = "llvmpipe/" + scene + "/" + size + "/" + method_name(method);
+        benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& st) {
+          llvmpipe_frame(st, name, scene, w, h, method);
+        })->UseManualTime()->Unit(benchmark::kMillisecond)->ComputeStatistics("min", minimum);
+      }
+      for (Method method : {Method::flat, Method::gouraud, Method::phong}) {
+        RenderOptions o;
+        o.method = method;
+        const std::string name = "parashade/" + scene + "/" + size + "/" + method_name(method);
+        benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& st) { parashade_frame(st, name, scene, w, h, o); })
+            ->UseManualTime()
+            ->Unit(benchmark::kMillisecond)
+            ->ComputeStatistics("min", minimum);
+      }
+    }
+    // The modeled shading units on the teapot (methods x units x arithmetic).
+    const std::pair<const char*, const char*> unit_cases[] = {
+        {"classic", "fixed:12.12"}, {"interleave:4", "fixed:12.12"}, {"segment:64", "fixed:12.12"}, {"classic", "float"}};
+    for (const auto& [unit, arith] : unit_cases) {
+      RenderOptions o;
+      o.method = Method::gouraud;
+      o.units = parse_units(unit);
+      o.arith = parse_arith(arith);
+      const std::string name = "parashade/teapot/" + size + "/gouraud:" + unit + ":" + arith;
+      benchmark::RegisterBenchmark(name.c_str(),
+                                   [=](benchmark::State& st) { parashade_frame(st, name, "teapot", w, h, o); })
+          ->UseManualTime()
+          ->Unit(benchmark::kMillisecond)
+          ->ComputeStatistics("min", minimum);
+    }
+    benchmark::RegisterBenchmark(("fill_limit/" + size).c_str(), [=](benchmark::State& st) { fill_limit(st, w, h); })
+        ->UseManualTime()
+        ->Unit(benchmark::kMillisecond)
+        ->ComputeStatistics("min", minimum);
+  }
+}
+
+}  // namespace
+}  // namespace parashade
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  std::vector<std::string> scenes = {"sphere_8k", "sphere_131k", "sphere_2m", "teapot",
+                                     "robot",     "bunny",       "fandisk",   "fullscreen_quad"};
+  std::vector<std::pair<int, int>> sizes = {{1920, 1080}};
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.rfind("--scenes=", 0) == 0) {
+      scenes = parashade::split(a.substr(9));
+    } else if (a.rfind("--sizes=", 0) == 0) {
+      sizes.clear();
+      for (const std::string& s : parashade::split(a.substr(8))) {
+        int w = 0, h = 0;
+        char x = 0, extra = 0;
+        if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 || h < 1 ||
+            w > parashade::kMaxResolution || h > parashade::kMaxResolution) {
+          std::fprintf(stderr, "bench_llvmpipe: bad size '%s' (WIDTHxHEIGHT, at most %d)\n", s.c_str(),
+                       parashade::kMaxResolution);
+          return 2;
+        }
+        sizes.emplace_back(w, h);
+      }
+    } else if (a.rfind("--images=", 0) == 0) {
+      parashade::g_image_dir = a.substr(9);
+      std::filesystem::create_directories(parashade::g_image_dir);
+    } else if (a == "--no-error") {
+      parashade::g_errors = false;
+    } else {
+      std::fprintf(stderr, "bench_llvmpipe: unknown argument '%s'\n", a.c_str());
+      return 2;
+    }
+  }
+  try {
+    const parashade::DeviceInfo& d = parashade::bench_device().info();
+    // Mesa reads LP_NUM_THREADS when the driver loads: set it before the first EGL call.
+    setenv("LP_NUM_THREADS", std::to_string(d.compute_units).c_str(), 0);
+    const parashade::peer::PeerInfo& gl = parashade::llvmpipe().info();
+    benchmark::AddCustomContext("device", d.name);
+    benchmark::AddCustomContext("platform", d.platform);
+    benchmark::AddCustomContext("driver", d.driver);
+    benchmark::AddCustomContext("compute_units", std::to_string(d.compute_units));
+    benchmark::AddCustomContext("gl_renderer", gl.renderer);
+    benchmark::AddCustomContext("gl_version", gl.version);
+    benchmark::AddCustomContext("lp_num_threads", std::getenv("LP_NUM_THREADS"));
+    std::fprintf(stderr, "bench_llvmpipe: GL_RENDERER %s, GL_VERSION %s, LP_NUM_THREADS %s; OpenCL %s, %d compute units\n",
+                 gl.renderer.c_str(), gl.version.c_str(), std::getenv("LP_NUM_THREADS"), d.name.c_str(),
+                 d.compute_units);
+    if (gl.renderer.find("llvmpipe") == std::string::npos) {
+      std::fprintf(stderr, "bench_llvmpipe: the GL renderer is not llvmpipe; set GALLIUM_DRIVER=llvmpipe\n");
+      return 4;
+    }
+    parashade::register_all(scenes, sizes);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_llvmpipe: %s\n", e.what());
+    return 4;
+  }
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,76 @@
+#!/bin/sh
+# The benchmark suite in one command: parashade against Mesa llvmpipe (bench_llvmpipe), the modeled
+# units' scaling sweep (parashade scaling), standalone peak memory (parashade render under
+# /usr/bin/time), then the report (plots, image strip, claims table) when python3-matplotlib is present.
+#   scripts/bench-suite.sh [OUT_DIR]          whole suite (sizes 1920x1080, 512x512, 3840x2160; ~1 h here)
+#   scripts/bench-suite.sh --quick [OUT_DIR]  CI subset: sphere_8k and fullscreen_quad at 512x512 (< 1 min)
+# Environment: PARASHADE_MESH_DIR (bunny, fandisk; skipped without it), PARASHADE_DEVICE, BUILD (default build).
+set -eu
+cd "$(dirname "$0")/.."
+QUICK=0
+if [ "${1:-}" = "--quick" ]; then QUICK=1; shift; fi
+OUT="${1:-bench-results}"
+BUILD="${BUILD:-build}"
+case "$BUILD" in /*) ;; *) BUILD="$PWD/$BUILD" ;; esac
+mkdir -p "$OUT"
+export POCL_CACHE_DIR="${POCL_CACHE_DIR:-$BUILD/pocl-cache}"
+# The report needs Debian's python3-matplotlib: prefer a python3 that has it (a pyenv shim may not).
+PYTHON="${PYTHON:-python3}"
+if ! "$PYTHON" -c "import matplotlib" 2>/dev/null && /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
+  PYTHON=/usr/bin/python3
+fi
+
+if [ "$QUICK" = 1 ]; then
+  "$BUILD/bench/bench_llvmpipe" --scenes=sphere_8k,fullscreen_quad --sizes=512x512 --images="$OUT/images" \
+      --benchmark_filter='sphere_8k/512x512/(gouraud|phong)/|fullscreen_quad/512x512/gouraud/|fill_limit' \
+      --benchmark_min_time=0.05 \
+      --benchmark_out="$OUT/peer.json" --benchmark_out_format=json >/dev/null
+  "$PYTHON" scripts/check_bench_json.py "$OUT/peer.json"
+  "$PYTHON" scripts/claims.py --results "$OUT" -o "$OUT/claims.md"  # the registry parses, the generator runs
+  exit 0
+fi
+
+# Every case, one run per size (the 1920x1080 run holds the targets' ratios), 3 repetitions in random
+# order (a noisy spell on this shared machine then does not fall on one case only); medians.
+# A size whose result file exists is not run again (resume after an interruption; delete it to rerun).
+for size in 1920x1080 512x512 3840x2160; do
+  if [ -s "$OUT/peer-$size.json" ]; then
+    echo "bench-suite: $OUT/peer-$size.json exists: not run again" >&2
+    continue
+  fi
+  "$BUILD/bench/bench_llvmpipe" --sizes=$size --images="$OUT/images" \
+      --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true \
+      --benchmark_report_aggregates_only=true --benchmark_min_time=0.3 \
+      --benchmark_out="$OUT/peer-$size.json" --benchmark_out_format=json >/dev/null
+  "$PYTHON" scripts/check_bench_json.py "$OUT/peer-$size.json" || echo "bench-suite: check failed: see above" >&2
+done
+
+# Interpolator count -> modeled and measured speed-up and error (Gouraud on the teapot and the sphere).
+for scene in teapot sphere; do
+  "$BUILD/parashade" scaling "scenes/$scene.json" -q \
+      --units classic,counter,interleave:2,interleave:4,interleave:8,segment:8,segment:16,segment:64,sierpinski \
+      --arith float,fixed:12.12 --frames 9 --report "$OUT/scaling-$scene.json" >/dev/null
+done
+
+# Fixed-point error of the units against the source's formulas (SEEDS §4).
+"$BUILD/parashade" unit-error --json "$OUT/unit-error.json" >/dev/null
+
+# Host model of whole-triangle shading: constant increment and shift-add division (SEEDS §2, §5).
+if [ -x "$BUILD/bench/bench_span_setup" ]; then
+  "$BUILD/bench/bench_span_setup" --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true \
+      --benchmark_report_aggregates_only=true --benchmark_min_time=0.1 \
+      --benchmark_out="$OUT/span.json" --benchmark_out_format=json >/dev/null
+  "$BUILD/bench/bench_span_setup" --print-table >"$OUT/span-table.txt"  # source 003's Table 1 recomputed
+  "$BUILD/bench/bench_span_setup" --print-ops >"$OUT/span-ops.txt"      # operation counts, example triangle
+fi
+
+"$PYTHON" scripts/peak_memory.py --binary "$BUILD/parashade" -o "$OUT/memory.json"
+
+if "$PYTHON" -c "import matplotlib" 2>/dev/null; then
+  "$PYTHON" scripts/report.py "$OUT"/peer-*.json "$OUT"/scaling-*.json "$OUT/memory.json" --images "$OUT/images" \
+      -o "$OUT/report"
+else
+  echo "bench-suite: python3-matplotlib is not installed: no plots (apt-get install python3-matplotlib)" >&2
+fi
+"$PYTHON" scripts/claims.py --results "$OUT" -o "$OUT/report/claims.md"
+echo "bench-suite: results in $OUT"

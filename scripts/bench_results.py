@@ -1,0 +1,82 @@
+"""Reading result files for report.py and claims.py: bench_llvmpipe / bench_frame JSON (Google Benchmark),
+`parashade scaling --report` JSON and scripts/peak_memory.py JSON. Each Google Benchmark case becomes one
+row: {"peer", "scene", "size", "method", "name", counters...}, the median aggregate when the run had
+repetitions, else the single run."""
+import json
+import os
+
+
+def load_json(path):
+    with open(path) as f:
+        return json.load(f)
+
+
+def kind(doc):
+    if "benchmarks" in doc and "context" in doc:
+        return "benchmark"
+    if "rows" in doc and "speedup_note" in doc:
+        return "scaling"
+    if "rows" in doc and "command" in doc:
+        return "memory"
+    return "unknown"
+
+
+def benchmark_rows(doc, aggregate="median"):
+    """Rows of a Google Benchmark JSON; the given aggregate ("median", "mean" or, for bench_llvmpipe,
+    "min") when the run has repetitions; the median where that aggregate is missing."""
+    rows = {}
+    for b in doc["benchmarks"]:
+        if b.get("error_occurred"):
+            continue
+        aggregated = b.get("run_type") == "aggregate"
+        if aggregated and b.get("aggregate_name") not in (aggregate, "median"):
+            continue
+        name = b.get("run_name", b["name"])
+        if name.endswith("/manual_time"):
+            name = name[: -len("/manual_time")]
+        if name in rows and (not aggregated or b.get("aggregate_name") != aggregate):
+            continue  # repetitions without aggregates: keep the first; the wanted aggregate beats the median
+        parts = name.split("/")
+        row = dict(b)
+        row["name"] = name
+        row["peer"] = parts[0]
+        row["scene"] = parts[1] if len(parts) > 1 else ""
+        row["size"] = parts[2] if len(parts) > 2 else (parts[1] if parts[0] == "fill_limit" else "")
+        row["method"] = parts[3] if len(parts) > 3 else ""
+        rows[name] = row
+    return list(rows.values())
+
+
+def load_results(paths, aggregate="median"):
+    """{"benchmark": [rows], "contexts": [context], "scaling": [docs], "memory": [rows]} from files or
+    directories (every *.json in a directory)."""
+    files = []
+    for p in paths:
+        if os.path.isdir(p):
+            files += sorted(os.path.join(p, f) for f in os.listdir(p) if f.endswith(".json"))
+        else:
+            files.append(p)
+    out = {"benchmark": [], "contexts": [], "scaling": [], "memory": [], "files": files}
+    for path in files:
+        try:
+            doc = load_json(path)
+        except (OSError, ValueError):
+            continue
+        k = kind(doc)
+        if k == "benchmark":
+            out["benchmark"] += benchmark_rows(doc, aggregate)
+            out["contexts"].append(doc["context"])
+        elif k == "scaling":
+            doc["_file"] = path
+            out["scaling"].append(doc)
+        elif k == "memory":
+            out["memory"] += doc["rows"]
+            out["memory_baseline"] = doc.get("baseline_mib")
+    return out
+
+
+def find(rows, **want):
+    for r in rows:
+        if all(r.get(k) == v for k, v in want.items()):
+            return r
+    return None

@@ -1,0 +1,332 @@
+#!/usr/bin/env python3
+"""Turns benchmark and sweep results into a report directory (needs python3-matplotlib):
+  speed_error_SCENE_SIZE.png  frame time against NMSE vs exact Phong, every parashade method/unit/arith
+                              point and the llvmpipe points, the Pareto front marked;
+  scaling_SCENE.png           interpolators per clock -> modeled and measured speed-up, and error
+                              (`parashade scaling --report` files);
+  strip_SCENE_SIZE.png        exact Phong | parashade Gouraud | llvmpipe Gouraud | parashade Phong, and
+                              their error maps magnified (bench_llvmpipe --images=DIR);
+  index.md                    the device, the ratio table against llvmpipe and the fill limit, links.
+Inputs: result files or directories (bench_llvmpipe JSON, scaling JSON, peak_memory JSON).
+
+    scripts/report.py bench-results/*.json --images bench-results/images -o bench-results/report
+"""
+import argparse
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.image as mpimg  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker as ticker  # noqa: E402
+import numpy as np  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench_results import find, load_results  # noqa: E402
+
+NMSE_FLOOR = 1e-9  # plotted in place of an NMSE of 0 (identical images) on the log axis
+
+
+def point_label(r):
+    return f"{r['peer']} {r['method']}"
+
+
+def pareto(points, rel=0.01):
+    """Points (time, nmse, row) not dominated by another: each on the front is more than `rel` less wrong
+    than every faster point (so equal errors up to rounding do not all count as improvements)."""
+    front = []
+    for p in sorted(points, key=lambda q: (q[0], q[1])):
+        if not front or p[1] < front[-1][1] * (1.0 - rel):
+            front.append(p)
+    return front
+
+
+def speed_error_plot(rows, scene, size, out_dir):
+    pts = [(r["frame_ms"], max(r["nmse"], NMSE_FLOOR), r) for r in rows
+           if r["scene"] == scene and r["size"] == size and r["peer"] in ("llvmpipe", "parashade")
+           and isinstance(r.get("nmse"), (int, float)) and math.isfinite(r["nmse"])]
+    if len(pts) < 2:
+        return None
+    fig, ax = plt.subplots(figsize=(13, 5.5))
+    front = pareto(pts)
+    front_ids = {id(p[2]) for p in front}
+    # Numbered points and a key beside the plot: many points share an error (the units) and their
+    # labels would overlap.
+    key = []
+    for k, (t, e, r) in enumerate(sorted(pts, key=lambda q: (q[0], q[1])), start=1):
+        peer = r["peer"]
+        ax.scatter(t, e, marker="s" if peer == "llvmpipe" else "o", s=60,
+                   color="tab:red" if peer == "llvmpipe" else "tab:blue",
+                   edgecolor="black" if id(r) in front_ids else "none", linewidth=1.5, zorder=3)
+        ax.annotate(str(k), (t, e), textcoords="offset points", xytext=(5, 5 + 8 * (k % 2)), fontsize=8)
+        key.append(f"{k:2d} {'*' if id(r) in front_ids else ' '} {point_label(r)}: {t:.1f} ms, NMSE {r['nmse']:.2e}")
+    fig.text(0.57, 0.92, "\n".join(key) + "\n\n* on the Pareto front", fontsize=7.5, va="top", family="monospace")
+    fig.subplots_adjust(left=0.07, right=0.55)
+    ax.step([p[0] for p in front], [p[1] for p in front], where="post", color="black", linestyle="--",
+            linewidth=1, label="Pareto front (outlined points)", zorder=2)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    # Label the minor ticks too: a decade or less is all most plots span.
+    ax.xaxis.set_major_formatter(ticker.FormatStrFormatter("%g"))
+    ax.xaxis.set_minor_formatter(ticker.FormatStrFormatter("%g"))
+    ax.yaxis.set_minor_formatter(ticker.LogFormatterSciNotation(labelOnlyBase=False, minor_thresholds=(2, 0.5)))
+    ax.tick_params(axis="both", which="minor", labelsize=7)
+    ax.set_xlabel("frame time, ms (median, whole frame; log)")
+    ax.set_ylabel("NMSE against exact Phong (log)")
+    ax.set_title(f"{scene} {size}: speed against error (blue parashade, red llvmpipe)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(loc="upper right", fontsize=8)
+    xs, es = [p[0] for p in pts], [p[1] for p in pts]
+    ax.set_xlim(min(xs) / 1.3, max(xs) * 1.3)
+    ax.set_ylim(min(es) * (min(es) / max(es)) ** 0.1 / 1.2, max(es) * (max(es) / min(es)) ** 0.1 * 1.2)  # room for the numbers
+    name = f"speed_error_{scene}_{size}.png"
+    fig.savefig(os.path.join(out_dir, name), dpi=110)
+    plt.close(fig)
+    return name
+
+
+def interpolators(unit):
+    """Intensities per clock of a unit name as `parashade scaling` writes it."""
+    parts = unit.split(":")
+    if parts[0] == "classic":
+        return 1
+    if parts[0] == "counter":
+        return 2
+    if parts[0] in ("interleave", "segment"):
+        return int(parts[1])
+    if parts[0] == "sierpinski":
+        depth = int(parts[1]) if len(parts) > 1 and parts[1].isdigit() else 1
+        return 4 ** depth
+    return None
+
+
+def scaling_plot(doc, out_dir):
+    """Three panels, one line per unit family (classic, then counter / interleave:M / segment:P /
+    sierpinski): modeled speed-up (the same in every arithmetic), measured frame speed-up per
+    arithmetic, and the max error against the ideal Gouraud."""
+    rows = [r for r in doc["rows"] if interpolators(r["unit"])]
+    families = {"counter": ("tab:green", "^"), "interleave": ("tab:blue", "o"), "segment": ("tab:orange", "s"),
+                "sierpinski": ("tab:purple", "D")}
+    ariths = sorted({r["arith"] for r in rows})
+    styles = dict(zip(ariths, ["-", "--", ":"]))
+    fig, (ax1, ax2, ax3) = plt.subplots(1, 3, figsize=(15, 4.8))
+    for fam, (colour, marker) in families.items():
+        for arith in ariths:
+            sel = sorted([r for r in rows if r["arith"] == arith and
+                          (r["unit"] == "classic" or (r["unit"].startswith(fam) and not r["unit"].endswith(":own")))],
+                         key=lambda r: interpolators(r["unit"]))
+            if len(sel) < 2:
+                continue
+            x = [interpolators(r["unit"]) for r in sel]
+            if arith == ariths[0]:  # modeled clocks do not depend on the arithmetic
+                ax1.plot(x, [r["modeled_speedup"] for r in sel], marker=marker, color=colour, label=fam)
+            ax2.plot(x, [r["measured_speedup"] for r in sel], marker=marker, color=colour, linestyle=styles[arith],
+                     label=f"{fam}, {arith}")
+            ax3.plot(x, [r["error"]["implementation"].get("max_abs") for r in sel], marker=marker, color=colour,
+                     linestyle=styles[arith], label=f"{fam}, {arith}")
+    ax1.plot([1, 64], [1, 64], color="grey", linewidth=0.8, linestyle=":", label="ideal (= interpolators)")
+    ax1.set_title("modeled clocks: classic / unit", fontsize=9)
+    ax2.set_title("measured whole frame: classic / unit (emulation)", fontsize=9)
+    ax3.set_title("max abs error vs ideal Gouraud", fontsize=9)
+    for ax in (ax1, ax2, ax3):
+        ax.set_xscale("log", base=2)
+        ax.set_xlabel("interpolators (intensities per clock; log2)")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+    ax1.set_yscale("log", base=2)
+    ax1.set_ylabel("speed-up over classic (log2)")
+    ax2.set_ylabel("speed-up over classic, same arithmetic")
+    ax3.set_yscale("log")
+    ax3.set_ylabel("8-bit levels (log)")
+    fig.suptitle(f"{doc['scene']} {doc['width']}x{doc['height']}: modeled shading units "
+                 f"({doc['device']['name']}, {doc['device'].get('compute_units', '?')} CU; "
+                 f"medians of {doc.get('frames', '?')} frames)", fontsize=10)
+    fig.tight_layout()
+    name = f"scaling_{doc['scene']}.png"
+    fig.savefig(os.path.join(out_dir, name), dpi=110)
+    plt.close(fig)
+    return name
+
+
+def load_rgb(path):
+    img = mpimg.imread(path)
+    if img.dtype != np.uint8:
+        img = np.round(img * 255.0)
+    return img[..., :3].astype(np.float64)
+
+
+def strip_plot(images, scene, size, out_dir):
+    exact_path = os.path.join(images, f"{scene}_{size}_exact.png")
+    if not os.path.exists(exact_path):
+        return None
+    columns = [("parashade", "gouraud"), ("llvmpipe", "gouraud"), ("parashade", "phong"), ("llvmpipe", "phong")]
+    cols = [(p, m, os.path.join(images, f"{p}_{scene}_{size}_{m}.png")) for p, m in columns]
+    cols = [c for c in cols if os.path.exists(c[2])]
+    if not cols:
+        return None
+    exact = load_rgb(exact_path)
+    diffs = [np.abs(load_rgb(path) - exact).max(axis=2) for _, _, path in cols]
+    # One colour scale for every map: up to the largest error shown (at least 4 levels), so the maps
+    # compare with each other and small errors are still visible.
+    vmax = max(4.0, max(float(np.percentile(d, 99.9)) for d in diffs))
+    fig, axes = plt.subplots(2, len(cols) + 1, figsize=(3.6 * (len(cols) + 1), 5.2))
+    axes[0][0].imshow(exact.astype(np.uint8))
+    axes[0][0].set_title("exact Phong (reference)", fontsize=9)
+    axes[1][0].axis("off")
+    axes[1][0].text(0.0, 0.5, f"error maps:\n|image - exact|, max over RGB,\nin 8-bit levels; colour scale\n"
+                    f"0..{vmax:.0f} levels (magnified {255 / vmax:.0f}x)", fontsize=9, va="center")
+    im = None
+    for k, ((p, m, path), diff) in enumerate(zip(cols, diffs), start=1):
+        axes[0][k].imshow(load_rgb(path).astype(np.uint8))
+        axes[0][k].set_title(f"{p} {m}", fontsize=9)
+        im = axes[1][k].imshow(diff, cmap="inferno", vmin=0, vmax=vmax)
+        axes[1][k].set_title(f"error: max {diff.max():.0f}, mean {diff.mean():.2f} levels", fontsize=8)
+    for row in axes:
+        for ax in row:
+            ax.set_xticks([])
+            ax.set_yticks([])
+    if im is not None:
+        cb = fig.colorbar(im, ax=list(axes[1][1:]), fraction=0.02, pad=0.01)
+        cb.set_label("levels", fontsize=8)
+    fig.suptitle(f"{scene} {size}", fontsize=10)
+    name = f"strip_{scene}_{size}.png"
+    fig.savefig(os.path.join(out_dir, name), dpi=110)
+    plt.close(fig)
+    return name
+
+
+def ratio_table(rows):
+    """Markdown: per scene and size, parashade against llvmpipe (frame time ratio = llvmpipe / parashade)."""
+    lines = ["| scene | size | triangles | parashade Gouraud ms | llvmpipe Gouraud ms | Gouraud x | "
+             "parashade Phong ms | llvmpipe Phong ms | Phong x | coverage mismatch (G, par./llvm.) | "
+             "NMSE Gouraud par. / llvm. |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    keys = sorted({(r["scene"], r["size"]) for r in rows if r["peer"] == "llvmpipe"},
+                  key=lambda k: (int(k[1].split("x")[0]), k[0]))
+    for scene, size in keys:
+        cells = [scene, size]
+        pg = find(rows, peer="parashade", scene=scene, size=size, method="gouraud")
+        lg = find(rows, peer="llvmpipe", scene=scene, size=size, method="gouraud")
+        pp = find(rows, peer="parashade", scene=scene, size=size, method="phong")
+        lp = find(rows, peer="llvmpipe", scene=scene, size=size, method="phong")
+        cells.append(f"{(pg or lg or {}).get('triangles_in', float('nan')):.0f}")
+        for p, l in ((pg, lg), (pp, lp)):
+            cells += [f"{p['frame_ms']:.2f}" if p else "-", f"{l['frame_ms']:.2f}" if l else "-",
+                      f"**{l['frame_ms'] / p['frame_ms']:.2f}**" if p and l else "-"]
+        cells.append(f"{pg.get('coverage_mismatch', float('nan')):.0f} / {lg.get('coverage_mismatch', float('nan')):.0f}"
+                     if pg and lg else "-")
+        cells.append(f"{pg.get('nmse', float('nan')):.2e} / {lg.get('nmse', float('nan')):.2e}" if pg and lg else "-")
+        lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
+def fill_table(rows):
+    lines = ["| size | fill limit ms | fullscreen_quad parashade Gouraud ms | x fill limit | "
+             "fullscreen_quad llvmpipe Gouraud ms |", "|---|---|---|---|---|"]
+    for f in sorted([r for r in rows if r["peer"] == "fill_limit"], key=lambda r: int(r["size"].split("x")[0])):
+        q = find(rows, peer="parashade", scene="fullscreen_quad", size=f["size"], method="gouraud")
+        l = find(rows, peer="llvmpipe", scene="fullscreen_quad", size=f["size"], method="gouraud")
+        lines.append(f"| {f['size']} | {f['frame_ms']:.3f} | {q['frame_ms']:.3f} | **{q['frame_ms'] / f['frame_ms']:.2f}** | "
+                     f"{l['frame_ms']:.3f} |" if q and l else f"| {f['size']} | {f['frame_ms']:.3f} | - | - | - |")
+    return "\n".join(lines)
+
+
+def throughput_table(rows):
+    """Large triangles (fullscreen_quad): pixel throughput; small triangles (sphere_2m): triangle throughput."""
+    lines = ["| size | method | quad Mpixel/s parashade / llvmpipe | sphere_2m Mtriangle/s parashade / llvmpipe |",
+             "|---|---|---|---|"]
+    sizes = sorted({r["size"] for r in rows if r["peer"] == "llvmpipe"}, key=lambda s: int(s.split("x")[0]))
+    for size in sizes:
+        for method in ("gouraud", "phong"):
+            cells = []
+            for scene, field in (("fullscreen_quad", "mpixel_per_s"), ("sphere_2m", "mtriangle_per_s")):
+                p = find(rows, peer="parashade", scene=scene, size=size, method=method)
+                l = find(rows, peer="llvmpipe", scene=scene, size=size, method=method)
+                cells.append(f"{p[field]:.1f} / {l[field]:.1f}" if p and l else "-")
+            lines.append(f"| {size} | {method} | {cells[0]} | {cells[1]} |")
+    return "\n".join(lines)
+
+
+def memory_table(memory, rows, baseline):
+    lines = ["| scene | size | peak RSS MiB (whole `parashade render`) | above the OpenCL runtime's MiB | budget MiB |",
+             "|---|---|---|---|---|"]
+    for m in memory:
+        size = f"{m['width']}x{m['height']}"
+        b = find(rows, peer="parashade", scene=m["scene"], size=size, method="gouraud")
+        over = m.get("over_baseline_mib")
+        lines.append(f"| {m['scene']} | {size} | {m['peak_rss_mib']:.1f} | {over:.1f} | "
+                     f"{b['memory_budget_mib']:.1f} |" if b and over is not None else
+                     f"| {m['scene']} | {size} | {m['peak_rss_mib']:.1f} | - | - |")
+    return "\n".join(lines) + (f"\n\nThe OpenCL runtime alone (`parashade devices`): {baseline:.1f} MiB. "
+                                "Budget = 2 x (RGBA8 + 32-bit depth frame + mesh) + 64 MiB." if baseline else "")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("results", nargs="+", help="result JSON files or directories")
+    ap.add_argument("--images", help="bench_llvmpipe --images directory (image strips)")
+    ap.add_argument("-o", "--output", required=True, help="report directory")
+    ap.add_argument("--aggregate", default="median", choices=["median", "mean", "min"],
+                    help="which statistic of repeated runs (min: the fastest repetition)")
+    ap.add_argument("--note", default="", help="a line about the machine or the run, printed under the title")
+    args = ap.parse_args()
+    res = load_results(args.results, args.aggregate)
+    rows = res["benchmark"]
+    if not rows and not res["scaling"]:
+        sys.exit("report: no benchmark or scaling results in " + " ".join(args.results))
+    os.makedirs(args.output, exist_ok=True)
+    md = ["# parashade benchmark report", ""]
+    for ctx in res["contexts"][:1]:
+        md += [f"Generated from: {', '.join(os.path.basename(f) for f in res['files'])}. Run {ctx.get('date', '?')} "
+               f"on {ctx.get('host_name', '?')}: OpenCL device `{ctx.get('device', '?')}` ({ctx.get('platform', '?')}), "
+               f"{ctx.get('compute_units', '?')} compute units; peer `{ctx.get('gl_renderer', '-')}` "
+               f"({ctx.get('gl_version', '-')}), LP_NUM_THREADS={ctx.get('lp_num_threads', '-')}; "
+               f"{ctx.get('num_cpus', '?')} CPUs, load average {ctx.get('load_avg', '?')}.", ""]
+    if args.note:
+        md += [args.note, ""]
+    md += [f"Times: the {args.aggregate} over repetitions (where the run had repetitions).", ""]
+    if rows:
+        md += ["## Frame time against llvmpipe (x = llvmpipe ms / parashade ms; > 1: parashade faster)", "",
+               "Whole frame on both sides (parashade: vertex stage, clip/cull, setup, binning, upload, kernel, "
+               "read-back; llvmpipe: clear, draw, glReadPixels, meshes resident in vertex buffers). Back faces "
+               "culled by both exactly when the scene says so.", "", ratio_table(rows), "",
+               "## Large triangles against the fill limit", "", fill_table(rows), "",
+               "## Pixel throughput (large triangles) and triangle throughput (small triangles)", "",
+               throughput_table(rows), ""]
+    if res["memory"]:
+        md += ["## Peak memory (Gouraud)", "", memory_table(res["memory"], rows, res.get("memory_baseline")), ""]
+    sizes = sorted({r["size"] for r in rows if r["peer"] == "llvmpipe"}, key=lambda s: int(s.split("x")[0]))
+    scenes = sorted({r["scene"] for r in rows if r["peer"] == "llvmpipe"})
+    plots = []
+    for size in sizes:
+        for scene in scenes:
+            n = speed_error_plot(rows, scene, size, args.output)
+            if n:
+                plots.append(n)
+    if plots:
+        md += ["## Speed against error", ""] + [f"- [{p}]({p})" for p in plots] + [""]
+    scal = [scaling_plot(d, args.output) for d in res["scaling"]]
+    if scal:
+        md += ["## Scaling of the modeled units", ""] + [f"![{p}]({p})" for p in scal] + [""]
+    if args.images and os.path.isdir(args.images):
+        strips = []
+        for size in sizes:
+            for scene in scenes:
+                n = strip_plot(args.images, scene, size, args.output)
+                if n:
+                    strips.append(n)
+        if strips:
+            md += ["## Image strips", ""] + [f"- [{p}]({p})" for p in strips] + [""]
+    md += ["## Claims", "", "[claims.md](claims.md) (scripts/claims.py)", ""]
+    tmp = os.path.join(args.output, "index.md.tmp")
+    with open(tmp, "w") as f:
+        f.write("\n".join(md))
+    os.replace(tmp, os.path.join(args.output, "index.md"))
+    print(f"report: {len(plots)} speed/error plots, {len(scal)} scaling plots -> {args.output}/index.md")
+
+
+if __name__ == "__main__":
+    main()
