@@ -204,6 +204,7 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
         q.enqueueMapBuffer(tile_tris_, CL_TRUE, CL_MAP_WRITE_INVALIDATE_REGION, 0, list_bytes));
   }
   binner_.fill(list_ptr);
+  if (options_.plan) plan_frame(tri_ptr, n, list_ptr, t, s);
   q.enqueueUnmapMemObject(tile_tris_, list_ptr);
   q.enqueueUnmapMemObject(tris_, tri_ptr);
   t.binning_ms = ms_since(t0);
@@ -264,8 +265,9 @@ const Frame& Renderer::render(const Scene& scene) {
     if (options_.float_output) ensure(out_float_, float_cap_, 3 * pixels * sizeof(float), CL_MEM_WRITE_ONLY);
     else ensure(out_float_, float_cap_, 64, CL_MEM_WRITE_ONLY);
 
-    cl::Program& program = device_.program({"common.h", "triangle_record.h", method_header(options_.method), "render_tiles.cl"},
-                                           kernel_options(scene, options_));
+    const std::string options = kernel_options(scene, options_);
+    const std::vector<std::string> files{"common.h", "triangle_record.h", method_header(options_.method), "render_tiles.cl"};
+    cl::Program& program = device_.program(files, options + (options_.plan ? " -D PLAN_PASS=2" : ""));
     cl::Kernel kernel(program, "render_tiles");
     const glm::vec3 viewer = needs_local_viewer(scene)
                                  ? scene.camera.position
@@ -298,6 +300,10 @@ const Frame& Renderer::render(const Scene& scene) {
     }
     kernel.setArg(17, dda_first_);
     kernel.setArg(18, dda_rows_);
+    cl::Event unit_pass;
+    if (options_.plan)
+      enqueue_unit_pass(kernel, files, options, {{viewer.x, viewer.y, viewer.z, 0.0f}}, {{bg.x, bg.y, bg.z, 0.0f}}, scene,
+                        unit_pass);
     // The kernel, then the map that makes the frame valid in the image's memory (on a CPU device the
     // kernel wrote it there already): one wait for both. The frame stays mapped until the next render.
     auto t0 = Clock::now();
@@ -329,6 +335,7 @@ const Frame& Renderer::render(const Scene& scene) {
     }
     t.launch_ms = ms_since(t0);
     t.kernel_ms = event_ms(done);
+    if (options_.plan) t.unit_pass_ms = event_ms(unit_pass);
     t0 = Clock::now();
     if (rgba != rgba_host_)
       std::memcpy(img.rgba.data(), rgba, pixels * 4);  // the spec says it is the host pointer; be safe

@@ -9,6 +9,7 @@
 
 #include "cli_args.hpp"
 #include "commands.hpp"
+#include "plan_cli.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/image.hpp"
@@ -27,6 +28,7 @@ struct RenderArgs {
               coverage = "centre";
   int frames = 5, warmup = 1, tile = 16, work_items = 0;
   bool float_output = false, no_error = false, quiet = false;
+  PlanArgs plan;
 };
 
 // Median of each stage over the timed frames.
@@ -44,6 +46,8 @@ FrameTimings median_timings(const std::vector<FrameTimings>& f) {
   m.launch_ms = med(&FrameTimings::launch_ms);
   m.readback_ms = med(&FrameTimings::readback_ms);
   m.total_ms = med(&FrameTimings::total_ms);
+  m.planning_ms = med(&FrameTimings::planning_ms);
+  m.unit_pass_ms = med(&FrameTimings::unit_pass_ms);
   return m;
 }
 
@@ -68,6 +72,7 @@ int run_render(const RenderArgs& a) {
   if (a.coverage != "centre" && a.coverage != "dda")
     throw UsageError("unknown coverage '" + a.coverage + "' (valid: centre, dda)");
   options.dda_coverage = a.coverage == "dda";
+  options.plan = plan_options(a.plan);
   const auto size = parse_size(a.size);
   if (a.frames < 1) throw UsageError("--frames must be at least 1");
   if (a.warmup < 0) throw UsageError("--warmup must not be negative");
@@ -138,6 +143,10 @@ int run_render(const RenderArgs& a) {
     report["coverage"] = a.coverage;
     report["modeled_clocks"] = to_json(frame.stats.clocks);
   }
+  if (frame.stats.plan) {
+    report["plan"] = to_json(*frame.stats.plan);
+    report["plan"]["measured_frame_ms"] = med.total_ms;
+  }
   if (!a.report.empty()) {
     try {
       write_text_atomically(a.report, report.dump(2) + "\n");
@@ -163,6 +172,11 @@ int run_render(const RenderArgs& a) {
                 unit_name(options.unit()).c_str(), arith_name(options.arith).c_str(),
                 division_name(options.division).c_str(), (unsigned long long)c.clocks,
                 (unsigned long long)c.spans, (unsigned long long)c.pixels, c.clocks ? double(c.pixels) / double(c.clocks) : 0.0);
+  }
+  if (frame.stats.plan) {
+    print_plan(*frame.stats.plan, !a.quiet);
+    std::printf("planned frame: planning %.3f ms, units' depth pass %.3f ms, resolve kernel %.3f ms (medians)\n",
+                med.planning_ms, med.unit_pass_ms, med.kernel_ms);
   }
   for (const auto& l : error_lines) std::printf("%s\n", l.c_str());
   std::printf("wrote %s%s%s\n", a.output.c_str(), a.report.empty() ? "" : " and ", a.report.c_str());
@@ -201,6 +215,7 @@ Command add_render_command(CLI::App& app) {
                   "Coverage: centre (pixel centres, top-left rule) or dda (the sources' edge walk; Gouraud units; "
                   "differences show as coverage mismatches against the reference)")
       ->capture_default_str();
+  add_plan_options(*cmd, a->plan, false);
   cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
   cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");
   cmd->add_flag("-q,--quiet", a->quiet, "No progress line");
