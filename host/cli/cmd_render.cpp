@@ -10,6 +10,7 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "plan_cli.hpp"
+#include "tune_cache.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/image.hpp"
@@ -29,6 +30,8 @@ struct RenderArgs {
   int frames = 5, warmup = 1, tile = 16, work_items = 0;
   bool float_output = false, no_error = false, quiet = false;
   PlanArgs plan;
+  std::string tune_cache;
+  bool no_tuned = false, explicit_config = false;  // explicit: --tile, --work-items, --cu or --partition given
 };
 
 // Median of each stage over the timed frames.
@@ -85,6 +88,21 @@ int run_render(const RenderArgs& a) {
   auto device = open_device(a.device);
   const DeviceInfo& dev = device->info();
   if (a.work_items < 0) throw UsageError("--work-items must not be negative");
+  nlohmann::json tuned = nullptr;
+  if (!a.no_tuned && !a.explicit_config && !options.unit_path()) {
+    const std::filesystem::path path = a.tune_cache.empty() ? default_tune_cache() : std::filesystem::path(a.tune_cache);
+    try {
+      const TuneProblem problem{scene.name, scene.width, scene.height, method_name(method), "float"};
+      if (const auto best = TuneCache(path).best(dev, problem)) {
+        apply_tuned_params(best->at("params"), options);
+        tuned = {{"cache", path.string()}, {"params", best->at("params")}, {"objective_ms", best->at("objective")}};
+        std::cerr << "using the tuned configuration " << best->at("params").dump() << " from " << path.string()
+                  << " (--no-tuned to disable)\n";
+      }
+    } catch (const InputError& e) {
+      std::cerr << "parashade: warning: tune cache not used: " << e.what() << "\n";
+    }
+  }
   Renderer renderer(*device, options);
   if (!a.quiet)
     std::cerr << "rendering " << scene.name << " (" << scene.width << "x" << scene.height << ", "
@@ -124,7 +142,8 @@ int run_render(const RenderArgs& a) {
       {"method", method_name(method)},
       {"width", scene.width},
       {"height", scene.height},
-      {"tile_size", a.tile},
+      {"tile_size", options.tile_size},
+      {"tuned", tuned},
       {"work_items", renderer.work_items(frame.stats.tiles)},
       {"triangles", {{"in", frame.stats.geometry.triangles_in},
                      {"after_culling", frame.stats.geometry.triangles_out}}},
@@ -216,10 +235,16 @@ Command add_render_command(CLI::App& app) {
                   "differences show as coverage mismatches against the reference)")
       ->capture_default_str();
   add_plan_options(*cmd, a->plan, false);
+  cmd->add_option("--tune-cache", a->tune_cache, "Tune cache to take the best configuration from (default: as 'tune')");
+  cmd->add_flag("--no-tuned", a->no_tuned, "Ignore the tune cache: the default configuration");
   cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
   cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");
   cmd->add_flag("-q,--quiet", a->quiet, "No progress line");
-  return {cmd, [a]() { return run_render(*a); }};
+  return {cmd, [a, cmd]() {
+            a->explicit_config = cmd->count("--tile") + cmd->count("--work-items") + cmd->count("--cu") +
+                                     cmd->count("--partition") > 0;
+            return run_render(*a);
+          }};
 }
 
 }  // namespace parashade::cli
