@@ -192,7 +192,17 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
 
   t0 = Clock::now();
   binner_.count(tri_ptr, n, scene.width, scene.height, options_.tile_size);
-  const auto& start = binner_.tile_start();
+  const std::vector<std::uint32_t>* start_list = &binner_.tile_start();
+  if (options_.band_rows >= 0) {  // empty every tile outside the band: tile k holds start[k] .. start[k + 1]
+    band_start_ = binner_.tile_start();
+    const std::size_t tiles = band_start_.size() - 1, tx = std::size_t(binner_.tiles_x());
+    const std::size_t lo = std::min(tiles, tx * std::size_t(options_.band_first));
+    const std::size_t hi = std::min(tiles, tx * std::size_t(options_.band_first + options_.band_rows));
+    for (std::size_t k = 0; k < lo; ++k) band_start_[k] = band_start_[lo];
+    for (std::size_t k = hi + 1; k <= tiles; ++k) band_start_[k] = band_start_[hi];
+    start_list = &band_start_;
+  }
+  const auto& start = *start_list;
   const std::size_t start_bytes = start.size() * sizeof(std::uint32_t);
   const std::size_t list_bytes = binner_.entries() * sizeof(std::uint32_t);
   ensure(tile_start_, start_cap_, start_bytes, CL_MEM_READ_ONLY);

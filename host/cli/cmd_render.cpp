@@ -11,6 +11,8 @@
 #include "commands.hpp"
 #include "plan_cli.hpp"
 #include "tune_cache.hpp"
+#include "split_render_cli.hpp"
+#include "parashade/split_renderer.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/image.hpp"
@@ -31,7 +33,7 @@ struct RenderArgs {
   bool float_output = false, no_error = false, quiet = false;
   PlanArgs plan;
   std::string tune_cache;
-  bool no_tuned = false, explicit_config = false;  // explicit: --tile, --work-items, --cu or --partition given
+  bool no_tuned = false, explicit_config = false, keep_going = false;  // explicit: --tile, --work-items, --cu or --partition given
 };
 
 // Median of each stage over the timed frames.
@@ -85,6 +87,8 @@ int run_render(const RenderArgs& a) {
   check_image_destination(out_path);
   if (!a.report.empty()) check_report_destination(a.report);
 
+  if (is_device_list(a.device))
+    return run_split_render(scene, options, {a.device, a.output, a.report, a.scene, a.frames, a.warmup, a.keep_going, a.quiet});
   auto device = open_device(a.device);
   const DeviceInfo& dev = device->info();
   if (a.work_items < 0) throw UsageError("--work-items must not be negative");
@@ -211,7 +215,10 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("-o,--output", a->output, "Image to write; format from the extension (png, jpg, tif, ppm, exr ...)")
       ->required();
   cmd->add_option("--method", a->method, "Shading method: flat, gouraud, phong")->capture_default_str();
-  cmd->add_option("--device", a->device, "OpenCL device: index or name substring (see 'parashade devices')");
+  cmd->add_option("--device", a->device,
+                  "OpenCL device: index or name substring (see 'parashade devices'); 'all' or a comma list splits the "
+                  "frame across devices by measured speed");
+  cmd->add_flag("--keep-going", a->keep_going, "With a device list: drop a failing device (named) and go on with the others");
   cmd->add_option("--size", a->size, "Resolution WIDTHxHEIGHT (at most 4096x4096), overriding the scene's");
   cmd->add_option("--report", a->report, "Write a JSON report (timings, stages, error figures)");
   cmd->add_option("--frames", a->frames, "Timed frames; the median is reported")->capture_default_str();

@@ -33,6 +33,9 @@ struct RenderOptions {
   // --cu / --partition: the frame by U modeled units from the planner's work lists, then a resolve pass
   // (docs/planner.md); the image is the same bytes as without.
   std::optional<PlanOptions> plan;
+  // Only tile rows [band_first, band_first + band_rows) are shaded, the rest is background (a device's
+  // share of a frame split across devices, split_renderer.hpp); band_rows < 0: the whole frame.
+  int band_first = 0, band_rows = -1;
   bool unit_path() const { return units.has_value() || arith.fixed || dda_coverage; }
   UnitConfig unit() const { return units.value_or(UnitConfig{}); }
 };
@@ -100,6 +103,7 @@ class Renderer {
   cl::Buffer tris_, attrs_, tile_start_, tile_tris_, lights_, materials_, out_rgba_, out_float_, counts_, fixed_,
       tile_clocks_, leaves_, dda_first_, dda_rows_;
   Plan plan_;
+  std::vector<std::uint32_t> band_start_;  // tile_start with the tiles outside the band emptied
   cl::Buffer keys_, plan_packets_, plan_vtiles_, plan_starts_, plan_list_, plan_counter_;
   std::size_t keys_cap_ = 0, plan_packets_cap_ = 0, plan_vtiles_cap_ = 0, plan_starts_cap_ = 0, plan_list_cap_ = 0,
               plan_counter_cap_ = 0;
