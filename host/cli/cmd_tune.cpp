@@ -23,8 +23,8 @@ struct TuneArgs {
   double budget_seconds = 0;
 };
 
-// The default configuration first, then the search space in a fixed shuffled order (so a resumed run
-// continues with the same sequence).
+// The default configuration first, then the search space in a fixed order (so a resumed run continues
+// with the same sequence).
 std::vector<RenderOptions> candidates(const RenderOptions& base, int cus) {
   std::vector<RenderOptions> out;
   out.push_back(base);
@@ -49,8 +49,12 @@ std::vector<RenderOptions> candidates(const RenderOptions& base, int cus) {
           o.plan = plan;
           rest.push_back(o);
         }
+  // The plain configurations first (the planned frame runs two passes: docs/planner.md), each group
+  // in a fixed shuffled order.
+  const auto planned = std::stable_partition(rest.begin(), rest.end(), [](const RenderOptions& o) { return !o.plan; });
   std::mt19937 rng(2026);
-  std::shuffle(rest.begin(), rest.end(), rng);
+  std::shuffle(rest.begin(), planned, rng);
+  std::shuffle(planned, rest.end(), rng);
   out.insert(out.end(), rest.begin(), rest.end());
   return out;
 }
