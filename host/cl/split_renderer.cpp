@@ -13,10 +13,45 @@
 namespace parashade {
 
 bool is_device_list(const std::string& selector) {
-  return selector == "all" || selector.find(',') != std::string::npos;
+  return selector == "all" || selector.find(',') != std::string::npos || selector.rfind("sub:", 0) == 0;
 }
 
+namespace {
+
+// "sub:NAME:N": device NAME partitioned by clCreateSubDevices(CL_DEVICE_PARTITION_EQUALLY, N).
+std::vector<std::unique_ptr<Device>> open_sub_devices(const std::string& selector) {
+  const std::size_t colon = selector.rfind(':');
+  const std::string name = selector.substr(4, colon > 4 ? colon - 4 : 0);
+  int per = 0;
+  try {
+    per = std::stoi(selector.substr(colon + 1));
+  } catch (const std::exception&) {
+  }
+  if (name.empty() || colon <= 4 || per < 1)
+    throw UsageError("--device '" + selector + "': expected sub:NAME:N (N compute units per sub-device)");
+  auto parent = open_device(name);
+  std::vector<cl::Device> subs;
+  try {
+    const cl_device_partition_property props[] = {CL_DEVICE_PARTITION_EQUALLY, cl_device_partition_property(per), 0};
+    parent->device().createSubDevices(props, &subs);
+  } catch (const cl::Error&) {
+    rethrow_cl_error("partitioning '" + parent->info().name + "' into sub-devices of " + std::to_string(per) +
+                     " compute unit(s)");
+  }
+  std::vector<std::unique_ptr<Device>> out;
+  for (std::size_t i = 0; i < subs.size(); ++i) {
+    DeviceInfo info = parent->info();
+    info.name += " [sub-device " + std::to_string(i) + "]";
+    info.compute_units = per;
+    out.push_back(std::make_unique<Device>(subs[i], info));
+  }
+  return out;
+}
+
+}  // namespace
+
 std::vector<std::unique_ptr<Device>> open_devices(const std::string& selector) {
+  if (selector.rfind("sub:", 0) == 0) return open_sub_devices(selector);
   std::vector<std::string> names;
   if (selector == "all") {
     for (const DeviceInfo& d : list_devices()) names.push_back(std::to_string(d.index));

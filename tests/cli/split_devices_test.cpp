@@ -39,7 +39,8 @@ TEST_F(SplitDevices, TwoDevicesGiveTheSingleDeviceImage) {
   const auto scene = input("ball.json", sphere_scene());
   ASSERT_TRUE(succeeds(render(scene, {"--device", "pthread", "--no-tuned", "--size", "200x150"})));
   const std::string single = bytes_of(image());
-  for (const char* list : {"pthread,basic", "basic,pthread", "all"}) {
+  // sub:pthread:1 = the pthread device cut into sub-devices of one compute unit (clCreateSubDevices).
+  for (const char* list : {"pthread,basic", "basic,pthread", "all", "sub:pthread:1"}) {
     const RunResult r = render(scene, {"--device", list, "--size", "200x150"});
     ASSERT_TRUE(succeeds(r)) << list;
     EXPECT_EQ(bytes_of(image()), single) << "split over " << list << " differs from the pthread device's image";
