@@ -25,13 +25,42 @@
 
 #define TILE_VECTORS (TILE * SEGMENTS)
 
+/* PLAN_PASS (docs/planner.md): 0 the plain frame; 1 the modeled units' depth pass, each unit walking its
+ * own work lists and keeping per pixel the least key (depth, primitive index) by an atomic minimum;
+ * 2 the resolve, which shades at each pixel only the triangle whose key won. The least key is what
+ * the plain frame's in-order strict depth test keeps, whatever the order the units ran in. */
+#ifndef PLAN_PASS
+#define PLAN_PASS 0
+#endif
+#if PLAN_PASS
+#pragma OPENCL EXTENSION cl_khr_int64_extended_atomics : enable
+#define PLAN_DECL , uint ti, int px, __global ulong* keys, int width
+#define PLAN_ARGS(px_) , ti, (px_), keys, width
+#include "plan_key.h"
+#else
+#define PLAN_DECL
+#define PLAN_ARGS(px_)
+#endif
+
 /* Depth test of one row segment of VEC pixels (columns rel from the triangle's x0, row dy from its y0;
  * `inside` marks covered lanes): the lanes that pass, their depth kept. */
-INLINE intV depth_test(__global const TriangleGeometry* t, int dy, floatV frel, intV inside, floatV* depth) {
+INLINE intV depth_test(__global const TriangleGeometry* t, int dy, floatV frel, intV inside, floatV* depth PLAN_DECL) {
   const floatV z = (floatV)(t->z_ref + t->z_ddy * (float)dy) + t->z_ddx * frel;
+#if PLAN_PASS == 1
+  /* Within one unit's list (primitive order) only a strictly nearer pixel can still win. */
+  const intV nearer = inside & isless(z, *depth);
+  *depth = select(*depth, z, nearer);
+  plan_offer_keys(z, nearer, ti, keys + (size_t)(t->y0 + dy) * width + px);
+  return (intV)0;
+#else
+#if PLAN_PASS == 2
+  const intV pass = inside & plan_won(ti, keys + (size_t)(t->y0 + dy) * width + px, inside);
+#else
   const intV pass = inside & isless(z, *depth);
+#endif
   *depth = select(*depth, z, pass);
   return pass;
+#endif
 }
 
 INLINE void keep(intV pass, floatV sr, floatV sg, floatV sb, floatV* cr, floatV* cg, floatV* cb) {
@@ -43,9 +72,9 @@ INLINE void keep(intV pass, floatV sr, floatV sg, floatV sb, floatV* cr, floatV*
 /* One row segment of VEC pixels: depth test, shade, keep. */
 INLINE void shade_segment(__global const TriangleGeometry* t, __global const float* attr, int dy, intV rel,
                           intV inside, int slot, floatV* depth, floatV* cr, floatV* cg, floatV* cb,
-                          __constant float4* lights, __constant float4* materials, float4 viewer) {
+                          __constant float4* lights, __constant float4* materials, float4 viewer PLAN_DECL) {
   const floatV frel = convert_floatV(rel);
-  const intV pass = depth_test(t, dy, frel, inside, &depth[slot]);
+  const intV pass = depth_test(t, dy, frel, inside, &depth[slot] PLAN_ARGS(px));
   if (!any(pass)) return;
   floatV sr, sg, sb;
   shade_pixels(attr, dy, frel, &sr, &sg, &sb, lights, materials, viewer);
@@ -59,8 +88,27 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
                   int tiles_x, int num_tiles, int width, int height, __global uint* out_rgba,
                   __global float* out_float, __global const FixedPlanes* fixed, __global ulong* tile_clocks,
                   __global const SierpinskiLeaf* leaves, __global const uint* dda_first,
-                  __global const int* dda_rows) {
+                  __global const int* dda_rows
+#if PLAN_PASS
+                  , __global ulong* keys, __global const uint* packet_first, __global const uint* vtile_tile,
+                  volatile __global int* packet_counter, int num_packets
+#endif
+                  ) {
+#if PLAN_PASS == 1
+  /* Work-item = modeled unit: its packet (static), or packets pulled from the shared counter (dynamic).
+   * tile_start / tile_tris are the plan's virtual tiles and lists here. */
+#if PLAN_DYNAMIC
+  for (int packet = atomic_inc(packet_counter); packet < num_packets; packet = atomic_inc(packet_counter))
+#else
+  for (int packet = get_global_id(0); packet < num_packets; packet += get_global_size(0))
+#endif
+  for (uint v = packet_first[packet]; v < packet_first[packet + 1]; ++v) {
+  const int tile = vtile_tile[v];
+  const uint begin = tile_start[v], end = tile_start[v + 1];
+#else
   for (int tile = get_global_id(0); tile < num_tiles; tile += get_global_size(0)) {
+  const uint begin = tile_start[tile], end = tile_start[tile + 1];
+#endif
   const int tile_x = (tile % tiles_x) * TILE, tile_y = (tile / tiles_x) * TILE;
 
   floatV depth[TILE_VECTORS], cr[TILE_VECTORS], cg[TILE_VECTORS], cb[TILE_VECTORS];
@@ -83,8 +131,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
   const intV lane = LANE_INDEX;
   int span_lo[VEC], span_hi[VEC];
 
-  const uint end = tile_start[tile + 1];
-  for (uint k = tile_start[tile]; k < end; ++k) {
+  for (uint k = begin; k < end; ++k) {
     const uint ti = tile_tris[k];
     __global const TriangleGeometry* t = &tris[ti];
     const int x0 = t->x0, y0 = t->y0;
@@ -136,7 +183,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
           const intV rel = lane + (tile_x + s * VEC - x0);
           const floatV frel = convert_floatV(rel);
           const int slot = (py - tile_y) * SEGMENTS + s;
-          const intV pass = depth_test(t, dy, frel, (rel >= sl) & (rel <= sr), &depth[slot]);
+          const intV pass = depth_test(t, dy, frel, (rel >= sl) & (rel <= sr), &depth[slot] PLAN_ARGS(tile_x + s * VEC));
           if (!any(pass)) continue;
 #if REGISTER_COLOUR
           const intV i = rel - xl;
@@ -164,7 +211,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
           const intV rel = lane + (tile_x + s * VEC - x0);
           const intV inside = small_triangle_inside(t, rel, dy) & (rel >= lo) & (rel <= hi);
           shade_segment(t, attr, dy, rel, inside, (py - tile_y) * SEGMENTS + s, depth, cr, cg, cb, lights, materials,
-                        viewer);
+                        viewer PLAN_ARGS(tile_x + s * VEC));
         }
       }
       continue;
@@ -182,13 +229,14 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
         for (int s = (xl + x0 - tile_x) / VEC; s <= (xr + x0 - tile_x) / VEC; ++s) {
           const intV rel = lane + (tile_x + s * VEC - x0);
           shade_segment(t, attr, py - y0, rel, (rel >= xl) & (rel <= xr), (py - tile_y) * SEGMENTS + s, depth, cr, cg,
-                        cb, lights, materials, viewer);
+                        cb, lights, materials, viewer PLAN_ARGS(tile_x + s * VEC));
         }
       }
     }
 #endif
   }
 
+#if PLAN_PASS != 1
   /* The frame is width x height exactly (no padding), so the host can use it without a copy. */
   for (int i = 0; i < TILE_VECTORS; ++i) {
     const int y = tile_y + i / SEGMENTS, x = tile_x + (i % SEGMENTS) * VEC;
@@ -225,7 +273,8 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
     }
 #endif
   }
-#if UNIT_PATH
+#endif
+#if UNIT_PATH && PLAN_PASS != 1
   tile_clocks[3 * tile] = spans;
   tile_clocks[3 * tile + 1] = span_pixels;
   tile_clocks[3 * tile + 2] = clocks;

@@ -195,7 +195,17 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
 
   t0 = Clock::now();
   binner_.count(tri_ptr, n, scene.width, scene.height, options_.tile_size);
-  const auto& start = binner_.tile_start();
+  const std::vector<std::uint32_t>* start_list = &binner_.tile_start();
+  if (options_.band_rows >= 0) {  // empty every tile outside the band: tile k holds start[k] .. start[k + 1]
+    band_start_ = binner_.tile_start();
+    const std::size_t tiles = band_start_.size() - 1, tx = std::size_t(binner_.tiles_x());
+    const std::size_t lo = std::min(tiles, tx * std::size_t(options_.band_first));
+    const std::size_t hi = std::min(tiles, tx * std::size_t(options_.band_first + options_.band_rows));
+    for (std::size_t k = 0; k < lo; ++k) band_start_[k] = band_start_[lo];
+    for (std::size_t k = hi + 1; k <= tiles; ++k) band_start_[k] = band_start_[hi];
+    start_list = &band_start_;
+  }
+  const auto& start = *start_list;
   const std::size_t start_bytes = start.size() * sizeof(std::uint32_t);
   const std::size_t list_bytes = binner_.entries() * sizeof(std::uint32_t);
   ensure(tile_start_, start_cap_, start_bytes, CL_MEM_READ_ONLY);
@@ -207,6 +217,7 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
         q.enqueueMapBuffer(tile_tris_, CL_TRUE, CL_MAP_WRITE_INVALIDATE_REGION, 0, list_bytes));
   }
   binner_.fill(list_ptr);
+  if (options_.plan) plan_frame(tri_ptr, n, list_ptr, t, s);
   q.enqueueUnmapMemObject(tile_tris_, list_ptr);
   q.enqueueUnmapMemObject(tris_, tri_ptr);
   t.binning_ms = ms_since(t0);
@@ -267,8 +278,9 @@ const Frame& Renderer::render(const Scene& scene) {
     if (options_.float_output) ensure(out_float_, float_cap_, 3 * pixels * sizeof(float), CL_MEM_WRITE_ONLY);
     else ensure(out_float_, float_cap_, 64, CL_MEM_WRITE_ONLY);
 
-    cl::Program& program = device_.program({"common.h", "triangle_record.h", method_header(options_.method), "render_tiles.cl"},
-                                           kernel_options(scene, options_));
+    const std::string options = kernel_options(scene, options_);
+    const std::vector<std::string> files{"common.h", "triangle_record.h", method_header(options_.method), "render_tiles.cl"};
+    cl::Program& program = device_.program(files, options + (options_.plan ? " -D PLAN_PASS=2" : ""));
     cl::Kernel kernel(program, "render_tiles");
     const glm::vec3 viewer = needs_local_viewer(scene)
                                  ? scene.camera.position
@@ -301,6 +313,10 @@ const Frame& Renderer::render(const Scene& scene) {
     }
     kernel.setArg(17, dda_first_);
     kernel.setArg(18, dda_rows_);
+    cl::Event unit_pass;
+    if (options_.plan)
+      enqueue_unit_pass(kernel, files, options, {{viewer.x, viewer.y, viewer.z, 0.0f}}, {{bg.x, bg.y, bg.z, 0.0f}}, scene,
+                        unit_pass);
     // The kernel, then the map that makes the frame valid in the image's memory (on a CPU device the
     // kernel wrote it there already): one wait for both. The frame stays mapped until the next render.
     auto t0 = Clock::now();
@@ -332,6 +348,7 @@ const Frame& Renderer::render(const Scene& scene) {
     }
     t.launch_ms = ms_since(t0);
     t.kernel_ms = event_ms(done);
+    if (options_.plan) t.unit_pass_ms = event_ms(unit_pass);
     t0 = Clock::now();
     if (rgba != rgba_host_)
       std::memcpy(img.rgba.data(), rgba, pixels * 4);  // the spec says it is the host pointer; be safe

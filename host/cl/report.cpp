@@ -32,7 +32,7 @@ nlohmann::json to_json(const ErrorMetrics& m) {
 nlohmann::json to_json(const FrameTimings& t) {
   return {{"geometry_ms", t.geometry_ms}, {"setup_ms", t.setup_ms},       {"binning_ms", t.binning_ms},
           {"kernel_ms", t.kernel_ms},     {"launch_ms", t.launch_ms},     {"readback_ms", t.readback_ms},
-          {"total_ms", t.total_ms}};
+          {"total_ms", t.total_ms},       {"planning_ms", t.planning_ms}, {"unit_pass_ms", t.unit_pass_ms}};
 }
 
 nlohmann::json to_json(const FrameStats& s) {
@@ -51,6 +51,21 @@ nlohmann::json to_json(const FrameStats& s) {
 
 nlohmann::json to_json(const ModeledClocks& c) {
   return {{"spans", c.spans}, {"span_pixels", c.pixels}, {"clocks", c.clocks}};
+}
+
+nlohmann::json to_json(const PlanReport& r) {
+  nlohmann::json units = nlohmann::json::array();
+  for (const UnitLoad& l : r.load)
+    units.push_back({{"triangles", l.triangles}, {"spans", l.spans}, {"pixels", l.pixels}, {"clocks", l.clocks}});
+  return {{"partition", partition_name(r.partition)},
+          {"units", r.units},
+          {"tile_size", r.tile_size},
+          {"batch", r.batch},
+          {"setup_clocks", r.setup_clocks},
+          {"modeled_frame_clocks", r.frame_clocks()},
+          {"modeled_total_clocks", r.total_clocks()},
+          {"imbalance", r.imbalance()},
+          {"per_unit", units}};
 }
 
 void write_text_atomically(const std::filesystem::path& path, const std::string& text) {

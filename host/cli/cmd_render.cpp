@@ -9,6 +9,10 @@
 
 #include "cli_args.hpp"
 #include "commands.hpp"
+#include "plan_cli.hpp"
+#include "tune_cache.hpp"
+#include "split_render_cli.hpp"
+#include "parashade/split_renderer.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/image.hpp"
@@ -27,6 +31,9 @@ struct RenderArgs {
               coverage = "centre";
   int frames = 5, warmup = 1, tile = 16, work_items = 0;
   bool float_output = false, no_error = false, quiet = false;
+  PlanArgs plan;
+  std::string tune_cache;
+  bool no_tuned = false, explicit_config = false, keep_going = false;  // explicit: --tile, --work-items, --cu or --partition given
 };
 
 // Median of each stage over the timed frames.
@@ -44,6 +51,8 @@ FrameTimings median_timings(const std::vector<FrameTimings>& f) {
   m.launch_ms = med(&FrameTimings::launch_ms);
   m.readback_ms = med(&FrameTimings::readback_ms);
   m.total_ms = med(&FrameTimings::total_ms);
+  m.planning_ms = med(&FrameTimings::planning_ms);
+  m.unit_pass_ms = med(&FrameTimings::unit_pass_ms);
   return m;
 }
 
@@ -68,6 +77,7 @@ int run_render(const RenderArgs& a) {
   if (a.coverage != "centre" && a.coverage != "dda")
     throw UsageError("unknown coverage '" + a.coverage + "' (valid: centre, dda)");
   options.dda_coverage = a.coverage == "dda";
+  options.plan = plan_options(a.plan);
   const auto size = parse_size(a.size);
   if (a.frames < 1) throw UsageError("--frames must be at least 1");
   if (a.warmup < 0) throw UsageError("--warmup must not be negative");
@@ -77,9 +87,26 @@ int run_render(const RenderArgs& a) {
   check_image_destination(out_path);
   if (!a.report.empty()) check_report_destination(a.report);
 
+  if (is_device_list(a.device))
+    return run_split_render(scene, options, {a.device, a.output, a.report, a.scene, a.frames, a.warmup, a.keep_going, a.quiet});
   auto device = open_device(a.device);
   const DeviceInfo& dev = device->info();
   if (a.work_items < 0) throw UsageError("--work-items must not be negative");
+  nlohmann::json tuned = nullptr;
+  if (!a.no_tuned && !a.explicit_config && !options.unit_path()) {
+    const std::filesystem::path path = a.tune_cache.empty() ? default_tune_cache() : std::filesystem::path(a.tune_cache);
+    try {
+      const TuneProblem problem{scene.name, scene.width, scene.height, method_name(method), "float"};
+      if (const auto best = TuneCache(path).best(dev, problem)) {
+        apply_tuned_params(best->at("params"), options);
+        tuned = {{"cache", path.string()}, {"params", best->at("params")}, {"objective_ms", best->at("objective")}};
+        std::cerr << "using the tuned configuration " << best->at("params").dump() << " from " << path.string()
+                  << " (--no-tuned to disable)\n";
+      }
+    } catch (const InputError& e) {
+      std::cerr << "parashade: warning: tune cache not used: " << e.what() << "\n";
+    }
+  }
   Renderer renderer(*device, options);
   if (!a.quiet)
     std::cerr << "rendering " << scene.name << " (" << scene.width << "x" << scene.height << ", "
@@ -119,7 +146,8 @@ int run_render(const RenderArgs& a) {
       {"method", method_name(method)},
       {"width", scene.width},
       {"height", scene.height},
-      {"tile_size", a.tile},
+      {"tile_size", options.tile_size},
+      {"tuned", tuned},
       {"work_items", renderer.work_items(frame.stats.tiles)},
       {"triangles", {{"in", frame.stats.geometry.triangles_in},
                      {"after_culling", frame.stats.geometry.triangles_out}}},
@@ -137,6 +165,10 @@ int run_render(const RenderArgs& a) {
     report["span_division"] = division_name(options.division);
     report["coverage"] = a.coverage;
     report["modeled_clocks"] = to_json(frame.stats.clocks);
+  }
+  if (frame.stats.plan) {
+    report["plan"] = to_json(*frame.stats.plan);
+    report["plan"]["measured_frame_ms"] = med.total_ms;
   }
   if (!a.report.empty()) {
     try {
@@ -164,6 +196,11 @@ int run_render(const RenderArgs& a) {
                 division_name(options.division).c_str(), (unsigned long long)c.clocks,
                 (unsigned long long)c.spans, (unsigned long long)c.pixels, c.clocks ? double(c.pixels) / double(c.clocks) : 0.0);
   }
+  if (frame.stats.plan) {
+    print_plan(*frame.stats.plan, !a.quiet);
+    std::printf("planned frame: planning %.3f ms, units' depth pass %.3f ms, resolve kernel %.3f ms (medians)\n",
+                med.planning_ms, med.unit_pass_ms, med.kernel_ms);
+  }
   for (const auto& l : error_lines) std::printf("%s\n", l.c_str());
   std::printf("wrote %s%s%s\n", a.output.c_str(), a.report.empty() ? "" : " and ", a.report.c_str());
   return 0;
@@ -178,7 +215,10 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("-o,--output", a->output, "Image to write; format from the extension (png, jpg, tif, ppm, exr ...)")
       ->required();
   cmd->add_option("--method", a->method, "Shading method: flat, gouraud, phong")->capture_default_str();
-  cmd->add_option("--device", a->device, "OpenCL device: index or name substring (see 'parashade devices')");
+  cmd->add_option("--device", a->device,
+                  "OpenCL device: index or name substring (see 'parashade devices'); 'all' or a comma list splits the "
+                  "frame across devices by measured speed");
+  cmd->add_flag("--keep-going", a->keep_going, "With a device list: drop a failing device (named) and go on with the others");
   cmd->add_option("--size", a->size, "Resolution WIDTHxHEIGHT (at most 4096x4096), overriding the scene's");
   cmd->add_option("--report", a->report, "Write a JSON report (timings, stages, error figures)");
   cmd->add_option("--frames", a->frames, "Timed frames; the median is reported")->capture_default_str();
@@ -201,10 +241,17 @@ Command add_render_command(CLI::App& app) {
                   "Coverage: centre (pixel centres, top-left rule) or dda (the sources' edge walk; Gouraud units; "
                   "differences show as coverage mismatches against the reference)")
       ->capture_default_str();
+  add_plan_options(*cmd, a->plan, false);
+  cmd->add_option("--tune-cache", a->tune_cache, "Tune cache to take the best configuration from (default: as 'tune')");
+  cmd->add_flag("--no-tuned", a->no_tuned, "Ignore the tune cache: the default configuration");
   cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
   cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");
   cmd->add_flag("-q,--quiet", a->quiet, "No progress line");
-  return {cmd, [a]() { return run_render(*a); }};
+  return {cmd, [a, cmd]() {
+            a->explicit_config = cmd->count("--tile") + cmd->count("--work-items") + cmd->count("--cu") +
+                                     cmd->count("--partition") > 0;
+            return run_render(*a);
+          }};
 }
 
 }  // namespace parashade::cli

@@ -13,6 +13,8 @@ struct Command {
 };
 Command add_devices_command(CLI::App& app);
 Command add_render_command(CLI::App& app);
+Command add_plan_command(CLI::App& app);
+Command add_tune_command(CLI::App& app);
 Command add_scaling_command(CLI::App& app);
 Command add_unit_error_command(CLI::App& app);
 

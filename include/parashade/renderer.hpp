@@ -12,6 +12,7 @@
 #include "parashade/device.hpp"
 #include "parashade/image.hpp"
 #include "parashade/method.hpp"
+#include "parashade/planner.hpp"
 #include "parashade/scene.hpp"
 #include "parashade/screen_geometry.hpp"
 #include "parashade/units.hpp"
@@ -29,6 +30,12 @@ struct RenderOptions {
   Arithmetic arith;
   SpanDivision division;  // fixed point: the span increment by a division per span (--div)
   bool dda_coverage = false;  // the sources' edge-walking coverage instead of pixel centres (--coverage dda)
+  // --cu / --partition: the frame by U modeled units from the planner's work lists, then a resolve pass
+  // (docs/planner.md); the image is the same bytes as without.
+  std::optional<PlanOptions> plan;
+  // Only tile rows [band_first, band_first + band_rows) are shaded, the rest is background (a device's
+  // share of a frame split across devices, split_renderer.hpp); band_rows < 0: the whole frame.
+  int band_first = 0, band_rows = -1;
   bool unit_path() const { return units.has_value() || arith.fixed || dda_coverage; }
   UnitConfig unit() const { return units.value_or(UnitConfig{}); }
 };
@@ -42,6 +49,8 @@ struct FrameTimings {
   double launch_ms = 0;    // enqueue to completion on the host clock (kernel_ms + launch overhead)
   double readback_ms = 0;  // map the frame and copy it out
   double total_ms = 0;     // the whole frame
+  double planning_ms = 0;  // with a plan: costs, assignment and work lists (host)
+  double unit_pass_ms = 0; // with a plan: the units' depth pass (profiling event); kernel_ms is the resolve
 };
 
 struct FrameStats {
@@ -52,6 +61,7 @@ struct FrameStats {
   ModeledClocks clocks;  // on the unit path only (RenderOptions::unit_path)
   std::uint64_t parity_dropped = 0;  // sierpinski: triangles degenerate after vertex parity normalization
   std::uint64_t sierpinski_whole = 0;  // sierpinski :touch/:overlap: too small to halve, shaded whole
+  std::optional<PlanReport> plan;    // with a plan: the modeled per-unit load
 };
 
 struct Frame {
@@ -80,6 +90,10 @@ class Renderer {
  private:
   void prepare(const Scene& scene, FrameTimings& t, FrameStats& s);  // geometry, setup, binning
   void release_frame();  // unmaps the last frame's image
+  // planned_frame.cpp: the plan of a frame (in prepare), and the units' pass before the resolve kernel.
+  void plan_frame(const TriangleGeometry* tris, std::size_t n, const std::uint32_t* tile_list, FrameTimings& t, FrameStats& s);
+  void enqueue_unit_pass(cl::Kernel& resolve, const std::vector<std::string>& files, const std::string& options,
+                         cl_float4 viewer, cl_float4 background, const Scene& scene, cl::Event& done);
   cl::Buffer& ensure(cl::Buffer& buffer, std::size_t& capacity, std::size_t bytes, cl_mem_flags flags);
 
   Device& device_;
@@ -89,6 +103,11 @@ class Renderer {
   Binner binner_;
   cl::Buffer tris_, attrs_, tile_start_, tile_tris_, lights_, materials_, out_rgba_, out_float_, counts_, fixed_,
       tile_clocks_, leaves_, dda_first_, dda_rows_;
+  Plan plan_;
+  std::vector<std::uint32_t> band_start_;  // tile_start with the tiles outside the band emptied
+  cl::Buffer keys_, plan_packets_, plan_vtiles_, plan_starts_, plan_list_, plan_counter_;
+  std::size_t keys_cap_ = 0, plan_packets_cap_ = 0, plan_vtiles_cap_ = 0, plan_starts_cap_ = 0, plan_list_cap_ = 0,
+              plan_counter_cap_ = 0;
   DdaRowTable dda_;  // the last frame's row table (uploaded without waiting: it must outlive the copy)
   // sierpinski: setup's whole-triangle records before the split (kept to reuse their memory)
   std::vector<TriangleGeometry> whole_;

@@ -17,6 +17,7 @@ nlohmann::json to_json(const ErrorMetrics& m);
 nlohmann::json to_json(const FrameTimings& t);
 nlohmann::json to_json(const FrameStats& s);
 nlohmann::json to_json(const ModeledClocks& c);
+nlohmann::json to_json(const PlanReport& r);  // per-unit load, frame clocks, imbalance
 // A finite number, or null.
 nlohmann::json number_or_null(double v);
 

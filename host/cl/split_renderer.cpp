@@ -1,0 +1,175 @@
+#include "parashade/split_renderer.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <exception>
+#include <set>
+#include <thread>
+
+#include "parashade/errors.hpp"
+
+namespace parashade {
+
+bool is_device_list(const std::string& selector) {
+  return selector == "all" || selector.find(',') != std::string::npos || selector.rfind("sub:", 0) == 0;
+}
+
+namespace {
+
+// "sub:NAME:N": device NAME partitioned by clCreateSubDevices(CL_DEVICE_PARTITION_EQUALLY, N).
+std::vector<std::unique_ptr<Device>> open_sub_devices(const std::string& selector) {
+  const std::size_t colon = selector.rfind(':');
+  const std::string name = selector.substr(4, colon > 4 ? colon - 4 : 0);
+  int per = 0;
+  try {
+    per = std::stoi(selector.substr(colon + 1));
+  } catch (const std::exception&) {
+  }
+  if (name.empty() || colon <= 4 || per < 1)
+    throw UsageError("--device '" + selector + "': expected sub:NAME:N (N compute units per sub-device)");
+  auto parent = open_device(name);
+  std::vector<cl::Device> subs;
+  try {
+    const cl_device_partition_property props[] = {CL_DEVICE_PARTITION_EQUALLY, cl_device_partition_property(per), 0};
+    parent->device().createSubDevices(props, &subs);
+  } catch (const cl::Error&) {
+    rethrow_cl_error("partitioning '" + parent->info().name + "' into sub-devices of " + std::to_string(per) +
+                     " compute unit(s)");
+  }
+  std::vector<std::unique_ptr<Device>> out;
+  for (std::size_t i = 0; i < subs.size(); ++i) {
+    DeviceInfo info = parent->info();
+    info.name += " [sub-device " + std::to_string(i) + "]";
+    info.compute_units = per;
+    out.push_back(std::make_unique<Device>(subs[i], info));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::unique_ptr<Device>> open_devices(const std::string& selector) {
+  if (selector.rfind("sub:", 0) == 0) return open_sub_devices(selector);
+  std::vector<std::string> names;
+  if (selector == "all") {
+    for (const DeviceInfo& d : list_devices()) names.push_back(std::to_string(d.index));
+  } else {
+    std::size_t from = 0;
+    while (from <= selector.size()) {
+      const std::size_t comma = std::min(selector.find(',', from), selector.size());
+      const std::string name = selector.substr(from, comma - from);
+      if (name.empty()) throw UsageError("--device '" + selector + "' has an empty entry");
+      names.push_back(name);
+      from = comma + 1;
+    }
+  }
+  std::vector<std::unique_ptr<Device>> out;
+  std::set<int> seen;
+  for (const std::string& n : names) {
+    auto d = open_device(n);
+    if (!seen.insert(d->info().index).second)
+      throw UsageError("--device '" + selector + "' names device '" + d->info().name + "' twice");
+    out.push_back(std::move(d));
+  }
+  return out;
+}
+
+SplitRenderer::SplitRenderer(std::vector<std::unique_ptr<Device>> devices, RenderOptions options, bool keep_going)
+    : devices_(std::move(devices)), options_(options), keep_going_(keep_going) {
+  if (devices_.empty()) throw UsageError("no device to render on");
+  if (options_.plan) throw UsageError("--cu/--partition do not combine with a device list yet");
+  if (options_.float_output) throw UsageError("--float does not combine with a device list yet");
+  speed_.assign(devices_.size(), 0.0);
+  dropped_.assign(devices_.size(), false);
+}
+
+const Frame& SplitRenderer::render(const Scene& scene, std::string* warning) {
+  const auto started = std::chrono::steady_clock::now();
+  const int tile = options_.tile_size;
+  const int tile_rows = (scene.height + tile - 1) / tile;
+  std::vector<std::size_t> active;
+  for (std::size_t i = 0; i < devices_.size(); ++i)
+    if (!dropped_[i]) active.push_back(i);
+  if (active.empty()) throw DeviceError("every device of the list failed");
+  // Band sizes in proportion to the measured speeds (equal until every active device was measured).
+  const bool measured = std::all_of(active.begin(), active.end(), [&](std::size_t i) { return speed_[i] > 0; });
+  double total = 0;
+  for (std::size_t i : active) total += measured ? speed_[i] : 1.0;
+  shares_.assign(devices_.size(), Share{});
+  int row = 0;
+  double acc = 0;
+  for (std::size_t k = 0; k < active.size(); ++k) {
+    const std::size_t i = active[k];
+    acc += (measured ? speed_[i] : 1.0) / total;
+    // At least one row each while there are rows enough, so every device stays measured.
+    const int left = int(active.size() - k - 1);
+    int end = k + 1 == active.size() ? tile_rows : int(std::lround(acc * tile_rows));
+    if (tile_rows >= int(active.size())) end = std::clamp(end, row + 1, tile_rows - left);
+    shares_[i].first_row = row;
+    shares_[i].rows = std::max(0, end - row);
+    row = std::max(row, end);
+  }
+  for (std::size_t i = 0; i < devices_.size(); ++i) shares_[i].device = devices_[i]->info().name;
+
+  RenderedImage& img = frame_.image;
+  img.width = scene.width;
+  img.height = scene.height;
+  img.rgba.assign(std::size_t(scene.width) * scene.height * 4, 0);
+  img.rgb_float.clear();
+  frame_.stats = FrameStats{};
+  std::vector<std::exception_ptr> errors(devices_.size());
+  std::vector<ModeledClocks> clocks(devices_.size());
+  std::vector<double> kernel_ms(devices_.size(), 0.0);
+  std::vector<std::thread> threads;
+  for (std::size_t i : active) {
+    if (shares_[i].rows == 0) continue;
+    threads.emplace_back([&, i] {
+      try {
+        const auto t0 = std::chrono::steady_clock::now();
+        RenderOptions o = options_;
+        o.band_first = shares_[i].first_row;
+        o.band_rows = shares_[i].rows;
+        Renderer r(*devices_[i], o);
+        const Frame& f = r.render(scene);
+        const int y0 = shares_[i].first_row * tile, y1 = std::min(scene.height, (shares_[i].first_row + shares_[i].rows) * tile);
+        const std::size_t pitch = std::size_t(scene.width) * 4;
+        std::memcpy(&img.rgba[std::size_t(y0) * pitch], &f.image.rgba[std::size_t(y0) * pitch], std::size_t(y1 - y0) * pitch);
+        clocks[i] = f.stats.clocks;
+        kernel_ms[i] = f.timings.kernel_ms;
+        shares_[i].frame_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    });
+  }
+  for (auto& t : threads) t.join();
+  bool failed = false;
+  for (std::size_t i : active) {
+    if (!errors[i]) continue;
+    try {
+      std::rethrow_exception(errors[i]);
+    } catch (const std::exception& e) {
+      shares_[i].failed = true;
+      shares_[i].error = e.what();
+      if (!keep_going_) throw DeviceError("device '" + devices_[i]->info().name + "' failed: " + e.what());
+      if (warning) *warning += "device '" + devices_[i]->info().name + "' failed (" + e.what() + "); continuing on the others\n";
+      dropped_[i] = true;
+      failed = true;
+    }
+  }
+  if (failed) return render(scene, warning);  // the frame again on the devices left
+  for (std::size_t i : active) {
+    // Speed by the shading kernel's time: the host stages are the whole frame's on every device.
+    if (shares_[i].rows > 0 && kernel_ms[i] > 0) speed_[i] = shares_[i].rows / kernel_ms[i];
+    frame_.stats.clocks.spans += clocks[i].spans;
+    frame_.stats.clocks.pixels += clocks[i].pixels;
+    frame_.stats.clocks.clocks += clocks[i].clocks;
+  }
+  frame_.timings = FrameTimings{};
+  frame_.timings.total_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  return frame_;
+}
+
+}  // namespace parashade

@@ -1,0 +1,89 @@
+#include "plan_cli.hpp"
+
+#include <cstdio>
+
+#include "cli_args.hpp"
+#include "parashade/errors.hpp"
+
+namespace parashade::cli {
+namespace {
+
+int parse_units_count(const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const int u = std::stoi(text, &used);
+    if (used == text.size() && u >= 1 && u <= 4096) return u;
+  } catch (const std::exception&) {
+  }
+  throw UsageError("--cu '" + text + "' is not a number of modeled units (1..4096)");
+}
+
+}  // namespace
+
+void add_plan_options(CLI::App& cmd, PlanArgs& a, bool lists) {
+  cmd.add_option("--cu", a.units,
+                 lists ? "Modeled shading units U, or a list (1,2,4,8); default 1"
+                       : "Shade the frame by U modeled units from the planner's work lists (docs/planner.md); the image "
+                         "is unchanged");
+  cmd.add_option("--partition", a.partition,
+                 std::string("Planner strategy: round-robin, lpt (cost-balanced), tiles (screen tiles by cost), dynamic "
+                             "(batches from a shared counter)") +
+                     (lists ? "; a list, or all" : "; default lpt"));
+  cmd.add_option("--batch", a.batch, "dynamic: triangles per batch a unit pulls")->capture_default_str();
+  cmd.add_option("--setup-clocks", a.setup_clocks, "Modeled clocks per triangle a unit starts (cost model)")
+      ->capture_default_str();
+}
+
+std::optional<PlanOptions> plan_options(const PlanArgs& a) {
+  if (!a.given()) return std::nullopt;
+  PlanOptions o;
+  if (!a.units.empty()) o.units = parse_units_count(a.units);
+  if (!a.partition.empty()) o.partition = parse_partition(a.partition);
+  if (a.batch < 1) throw UsageError("--batch must be at least 1");
+  if (a.setup_clocks < 0) throw UsageError("--setup-clocks must not be negative");
+  o.batch = a.batch;
+  o.setup_clocks = a.setup_clocks;
+  return o;
+}
+
+std::vector<PlanOptions> plan_option_list(const PlanArgs& a) {
+  std::vector<int> units{1};
+  if (!a.units.empty()) {
+    units.clear();
+    for (const std::string& u : split_list(a.units, "--cu")) units.push_back(parse_units_count(u));
+  }
+  std::vector<Partition> parts{Partition::round_robin, Partition::lpt, Partition::tiles, Partition::dynamic};
+  if (!a.partition.empty() && a.partition != "all") {
+    parts.clear();
+    for (const std::string& p : split_list(a.partition, "--partition")) parts.push_back(parse_partition(p));
+  }
+  if (a.batch < 1) throw UsageError("--batch must be at least 1");
+  if (a.setup_clocks < 0) throw UsageError("--setup-clocks must not be negative");
+  std::vector<PlanOptions> out;
+  for (Partition p : parts)
+    for (int u : units) {
+      PlanOptions o;
+      o.partition = p;
+      o.units = u;
+      o.batch = a.batch;
+      o.setup_clocks = a.setup_clocks;
+      out.push_back(o);
+    }
+  return out;
+}
+
+void print_plan(const PlanReport& r, bool per_unit) {
+  std::printf("plan %s, U = %d, tile %d%s: modeled frame clocks %llu (slowest unit), total %llu, imbalance %.3f\n",
+              partition_name(r.partition).c_str(), r.units, r.tile_size,
+              r.partition == Partition::dynamic ? (", batch " + std::to_string(r.batch)).c_str() : "",
+              (unsigned long long)r.frame_clocks(), (unsigned long long)r.total_clocks(), r.imbalance());
+  if (!per_unit) return;
+  std::printf("  %5s %12s %12s %12s %14s\n", "unit", "triangles", "spans", "pixels", "clocks");
+  for (std::size_t u = 0; u < r.load.size(); ++u) {
+    const UnitLoad& l = r.load[u];
+    std::printf("  %5zu %12llu %12llu %12llu %14llu\n", u, (unsigned long long)l.triangles, (unsigned long long)l.spans,
+                (unsigned long long)l.pixels, (unsigned long long)l.clocks);
+  }
+}
+
+}  // namespace parashade::cli

@@ -1,0 +1,55 @@
+#include "split_render_cli.hpp"
+
+#include <cstdio>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "parashade/image.hpp"
+#include "parashade/report.hpp"
+#include "parashade/split_renderer.hpp"
+#include "parashade/statistics.hpp"
+
+namespace parashade::cli {
+
+int run_split_render(const Scene& scene, const RenderOptions& options, const SplitRenderArgs& a) {
+  SplitRenderer renderer(open_devices(a.devices), options, a.keep_going);
+  std::string warning;
+  const auto warn = [&] {
+    if (!warning.empty()) std::cerr << "parashade: warning: " << warning;
+    warning.clear();
+  };
+  for (int i = 0; i < a.warmup; ++i) {
+    renderer.render(scene, &warning);  // the first is the calibration frame (equal bands)
+    warn();
+  }
+  std::vector<double> times;
+  const Frame* f = nullptr;
+  for (int i = 0; i < a.frames; ++i) {
+    f = &renderer.render(scene, &warning);
+    warn();
+    times.push_back(f->timings.total_ms);
+  }
+  const double ms = median(times);
+  write_image(a.output, f->image);
+  nlohmann::json shares = nlohmann::json::array();
+  for (const auto& s : renderer.shares())
+    shares.push_back({{"device", s.device}, {"first_tile_row", s.first_row}, {"tile_rows", s.rows},
+                      {"band_ms", s.frame_ms}, {"failed", s.failed}, {"error", s.error}});
+  if (!a.report.empty()) {
+    const nlohmann::json report = {{"scene", scene.name},   {"scene_file", a.scene_file}, {"image", a.output},
+                                   {"width", scene.width},  {"height", scene.height},     {"frame_ms", ms},
+                                   {"frame_ms_note", "median of " + std::to_string(a.frames) + " split frames"},
+                                   {"devices", shares}};
+    write_text_atomically(a.report, report.dump(2) + "\n");
+  }
+  std::printf("%s: %dx%d split across devices, frame %.3f ms (median of %d)\n", scene.name.c_str(), scene.width,
+              scene.height, ms, a.frames);
+  for (const auto& s : renderer.shares())
+    std::printf("  %-40s tile rows %4d..%4d (%d rows) %9.3f ms%s\n", s.device.c_str(), s.first_row,
+                s.first_row + s.rows - 1, s.rows, s.frame_ms, s.failed ? "  FAILED (dropped)" : "");
+  std::printf("wrote %s%s%s\n", a.output.c_str(), a.report.empty() ? "" : " and ", a.report.c_str());
+  return 0;
+}
+
+}  // namespace parashade::cli

@@ -1,0 +1,19 @@
+#pragma once
+// `render --device all|A,B`: the frame split across devices (split_renderer.hpp); image, summary and
+// report (per-device bands and times). No error figures in this mode.
+#include <string>
+
+#include "parashade/renderer.hpp"
+#include "parashade/scene.hpp"
+
+namespace parashade::cli {
+
+struct SplitRenderArgs {
+  std::string devices, output, report, scene_file;
+  int frames = 5, warmup = 1;
+  bool keep_going = false, quiet = false;
+};
+
+int run_split_render(const Scene& scene, const RenderOptions& options, const SplitRenderArgs& a);
+
+}  // namespace parashade::cli

@@ -1,0 +1,45 @@
+#pragma once
+// One frame split across several OpenCL devices (--device all, or a comma list): each device shades a
+// horizontal band of tile rows, sized in proportion to the device's measured speed on the previous
+// frame's kernel time (equal bands for the first, calibration frame); the bands are copied into one image. Every
+// device runs the whole tile kernel on its band, so the image is the single-device image.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "parashade/device.hpp"
+#include "parashade/renderer.hpp"
+
+namespace parashade {
+
+// True for "all" or a comma-separated list of device selectors.
+bool is_device_list(const std::string& selector);
+// Opens every device the list names (each as open_device() would), in list order, no device twice.
+std::vector<std::unique_ptr<Device>> open_devices(const std::string& selector);
+
+class SplitRenderer {
+ public:
+  struct Share {
+    std::string device;
+    int first_row = 0, rows = 0;  // tile rows
+    double frame_ms = 0;          // the device's frame for its band (host clock)
+    bool failed = false;
+    std::string error;
+  };
+  // keep_going: a device that fails is reported on `warn` and dropped, the frame redone on the others;
+  // otherwise its DeviceError (naming it) ends the run.
+  SplitRenderer(std::vector<std::unique_ptr<Device>> devices, RenderOptions options, bool keep_going);
+  const Frame& render(const Scene& scene, std::string* warning = nullptr);
+  const std::vector<Share>& shares() const { return shares_; }
+
+ private:
+  std::vector<std::unique_ptr<Device>> devices_;
+  RenderOptions options_;
+  bool keep_going_;
+  std::vector<double> speed_;  // tile rows per kernel ms in the last frame; 0: not measured yet
+  std::vector<bool> dropped_;
+  std::vector<Share> shares_;
+  Frame frame_;
+};
+
+}  // namespace parashade
