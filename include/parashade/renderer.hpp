@@ -12,8 +12,10 @@
 #include "parashade/device.hpp"
 #include "parashade/image.hpp"
 #include "parashade/method.hpp"
+#include "parashade/normalization.hpp"
 #include "parashade/scene.hpp"
 #include "parashade/screen_geometry.hpp"
+#include "parashade/specular_models.hpp"
 #include "parashade/units.hpp"
 
 namespace parashade {
@@ -29,6 +31,9 @@ struct RenderOptions {
   Arithmetic arith;
   SpanDivision division;  // fixed point: the span increment by a division per span (--div)
   bool dda_coverage = false;  // the sources' edge-walking coverage instead of pixel centres (--coverage dda)
+  SpecularModel specular;     // Phong: the specular model (--specular, kernels/specular_models.h)
+  NormalizeMethod normalize;  // Phong: unit normals per span (--normalize, kernels/normalize_span.h)
+  bool span_normalize() const { return method == Method::phong && normalize.kind != NormalizeKind::exact; }
   bool unit_path() const { return units.has_value() || arith.fixed || dda_coverage; }
   UnitConfig unit() const { return units.value_or(UnitConfig{}); }
 };
@@ -50,6 +55,8 @@ struct FrameStats {
   std::uint64_t bin_entries = 0;
   int tiles = 0;
   ModeledClocks clocks;  // on the unit path only (RenderOptions::unit_path)
+  // Per-span normalization: span setups (per span and tile) and those that fell back to the exact normal.
+  std::uint64_t normalize_span_setups = 0, normalize_fallback_spans = 0;
   std::uint64_t parity_dropped = 0;  // sierpinski: triangles degenerate after vertex parity normalization
 };
 
