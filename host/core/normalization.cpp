@@ -118,9 +118,13 @@ std::vector<V3<T>> dichotomy_span(const NormalizeMethod& m, V3<T> na, V3<T> nb, 
     // A whole segment, or the source's rule for the last one: 2^k long, its end extrapolated.
     const bool whole = start + seg <= last || m.extrapolate_last;
     const int steps = whole ? seg : last - start;       // pixels from the segment's start to its end
+    // A partial segment whose length is no power of two is bisected three levels finer than it needs,
+    // so the nearest dyadic point is within phi/(16 steps) of the pixel's own.
     int levels = 0;
     while ((1 << levels) < steps) ++levels;
+    if ((1 << levels) != steps) levels += 3;
     const int n = whole ? seg : 1 << levels;           // dyadic points of the bisection
+    if (static_cast<int>(pts.size()) < n + 1) pts.resize(n + 1);
     NormalizeCounters ends;
     pts[0] = exact_normal(na, nb, T(start) / denom, &ends);
     pts[n] = exact_normal(na, nb, T(start + steps) / denom, &ends);

@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <regex>
+#include <utility>
 
 #include "parashade/errors.hpp"
 
@@ -34,13 +37,24 @@ double clamp_power(double base, double p) { return base > 0.0 ? std::pow(base, p
 double taylor_scale(double n, int k) { return std::sqrt(n / k); }
 
 double lobe_scale(double n, int k) {
+  // Memoized: the renderer asks per material and frame, and one solve takes ~160k cosines.
+  static std::mutex mutex;
+  static std::map<std::pair<double, int>, double> cache;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    const auto it = cache.find({n, k});
+    if (it != cache.end()) return it->second;
+  }
   const double target = 1.0 / (n + 1.0);
   double lo = 1e-3, hi = 1e3;
   for (int i = 0; i < 80; ++i) {
     const double mid = std::sqrt(lo * hi);
     (lobe_integral(mid, k) > target ? lo : hi) = mid;
   }
-  return std::sqrt(lo * hi);
+  const double a = std::sqrt(lo * hi);
+  std::lock_guard<std::mutex> lock(mutex);
+  cache[{n, k}] = a;
+  return a;
 }
 
 double specular_value(const SpecularModel& m, double n, double c, double scale) {
