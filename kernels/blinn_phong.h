@@ -28,6 +28,8 @@ INLINE floatV positive_power(floatV x, float n) {
   return exp2(n * log2_positive(fmax(x, (floatV)0.0f)));
 }
 
+#include "specular_models.h"
+
 INLINE void blinn_phong(__constant float4* materials, int m, __constant float4* lights, float4 viewer,
                         floatV nx, floatV ny, floatV nz, floatV px, floatV py, floatV pz,
                         floatV* r, floatV* g, floatV* b) {
@@ -65,7 +67,7 @@ INLINE void blinn_phong(__constant float4* materials, int m, __constant float4* 
     floatV hx = lx + vx, hy = ly + vy, hz = lz + vz;
     const floatV h_inv = safe_rsqrt(hx * hx + hy * hy + hz * hz);
     const floatV n_dot_h = (nx * hx + ny * hy + nz * hz) * h_inv;
-    const floatV spec = positive_power(n_dot_h, amb.w);
+    const floatV spec = specular_term(n_dot_h, amb.w, kd.w); /* specular_models.h */
     cr += il.x * (kd.x * n_dot_l + ks.x * spec);
     cg += il.y * (kd.y * n_dot_l + ks.y * spec);
     cb += il.z * (kd.z * n_dot_l + ks.z * spec);

@@ -25,3 +25,39 @@ INLINE void shade_pixels(__global const float* a, int dy, floatV rel, floatV* r,
 #endif
   blinn_phong(materials, (int)a[PHONG_MATERIAL_SLOT], lights, viewer, nx, ny, nz, px, py, pz, r, g, b);
 }
+
+#if NORMALIZE_METHOD
+/* Per-span normalization (normalize_span.h): the span's end normals from the planes at its first
+ * and last pixel xl, xr (relative to x0); the rest of the shading is unchanged. SHADE_SPAN tells
+ * render_tiles.cl to pass whole spans. */
+#include "normalize_span.h"
+#define SHADE_SPAN 1
+
+INLINE float3 plane_normal_at(__global const float* a, float fdy, float x) {
+  return (float3)(a[0] + a[6] * fdy + a[3] * x, a[1] + a[7] * fdy + a[4] * x, a[2] + a[8] * fdy + a[5] * x);
+}
+
+INLINE SpanNormals span_setup(__global const float* a, int dy, int xl, int xr) {
+  const float fdy = (float)dy;
+  return span_normals_setup(plane_normal_at(a, fdy, (float)xl), plane_normal_at(a, fdy, (float)xr));
+}
+
+INLINE void shade_pixels_span(__global const float* a, int dy, floatV rel, const SpanNormals* s, int xl, int xr,
+                              floatV* r, floatV* g, floatV* b, __constant float4* lights, __constant float4* materials,
+                              float4 viewer) {
+  if (s->fallback) {
+    shade_pixels(a, dy, rel, r, g, b, lights, materials, viewer);
+    return;
+  }
+  const float fdy = (float)dy;
+  const floatV t = xr > xl ? (rel - (float)xl) * (1.0f / (float)(xr - xl)) : (floatV)0.0f;
+  floatV nx, ny, nz;
+  span_normal_at(s, t, &nx, &ny, &nz);
+#if NEED_POSITION
+  const floatV px = plane_row(a, 9, fdy, rel), py = plane_row(a, 10, fdy, rel), pz = plane_row(a, 11, fdy, rel);
+#else
+  const floatV px = 0.0f, py = 0.0f, pz = 0.0f;
+#endif
+  blinn_phong(materials, (int)a[PHONG_MATERIAL_SLOT], lights, viewer, nx, ny, nz, px, py, pz, r, g, b);
+}
+#endif

@@ -69,15 +69,36 @@ INLINE void keep(intV pass, floatV sr, floatV sg, floatV sb, floatV* cr, floatV*
   *cb = select(*cb, sb, pass);
 }
 
+#if SHADE_SPAN
+/* Per-span normalization (method_phong.h): a span's setup, once per span and tile; its end normals and
+ * the fallback count (spans, fallbacks) go to tile_clocks. */
+#define SPAN_SETUP(attr, dy, xl, xr) \
+  const SpanNormals span_n = span_setup(attr, dy, xl, xr); \
+  span_setups += 1; \
+  span_fallbacks += span_n.fallback;
+#define SPAN_ARGS , &span_n, span_xl, span_xr
+#else
+#define SPAN_SETUP(attr, dy, xl, xr)
+#define SPAN_ARGS
+#endif
+
 /* One row segment of VEC pixels: depth test, shade, keep. */
 INLINE void shade_segment(__global const TriangleGeometry* t, __global const float* attr, int dy, intV rel,
                           intV inside, int slot, floatV* depth, floatV* cr, floatV* cg, floatV* cb,
-                          __constant float4* lights, __constant float4* materials, float4 viewer PLAN_DECL) {
+                          __constant float4* lights, __constant float4* materials, float4 viewer PLAN_DECL
+#if SHADE_SPAN
+                          , const SpanNormals* span_ptr, int xl, int xr
+#endif
+                          ) {
   const floatV frel = convert_floatV(rel);
   const intV pass = depth_test(t, dy, frel, inside, &depth[slot] PLAN_ARGS(px));
   if (!any(pass)) return;
   floatV sr, sg, sb;
+#if SHADE_SPAN
+  shade_pixels_span(attr, dy, frel, span_ptr, xl, xr, &sr, &sg, &sb, lights, materials, viewer);
+#else
   shade_pixels(attr, dy, frel, &sr, &sg, &sb, lights, materials, viewer);
+#endif
   keep(pass, sr, sg, sb, &cr[slot], &cg[slot], &cb[slot]);
 }
 
@@ -127,6 +148,9 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
   }
 #if UNIT_PATH
   ulong spans = 0, span_pixels = 0, clocks = 0;
+#endif
+#if SHADE_SPAN
+  ulong span_setups = 0, span_fallbacks = 0;
 #endif
   const intV lane = LANE_INDEX;
   int span_lo[VEC], span_hi[VEC];
@@ -207,29 +231,46 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
       /* Few rows: test each pixel's edge functions directly. */
       for (int py = row_first; py <= row_last; ++py) {
         const int dy = py - y0;
+#if SHADE_SPAN
+        intV sl_v, sr_v;
+        row_spans_small(t, (intV)dy, &sl_v, &sr_v, 0, t->x1 - x0);
+        const int span_xl = sl_v.s0, span_xr = sr_v.s0;
+        if (span_xl > span_xr) continue;
+        SPAN_SETUP(attr, dy, span_xl, span_xr)
+#endif
         for (int s = seg_first; s <= seg_last; ++s) {
           const intV rel = lane + (tile_x + s * VEC - x0);
           const intV inside = small_triangle_inside(t, rel, dy) & (rel >= lo) & (rel <= hi);
           shade_segment(t, attr, dy, rel, inside, (py - tile_y) * SEGMENTS + s, depth, cr, cg, cb, lights, materials,
-                        viewer PLAN_ARGS(tile_x + s * VEC));
+                        viewer PLAN_ARGS(tile_x + s * VEC) SPAN_ARGS);
         }
       }
       continue;
     }
     for (int block = row_first; block <= row_last; block += VEC) {
       intV lo_v, hi_v;
+#if SHADE_SPAN
+      row_spans(t, lane + (block - y0), &lo_v, &hi_v, 0, t->x1 - x0); /* whole spans: their ends matter */
+#else
       row_spans(t, lane + (block - y0), &lo_v, &hi_v, lo, hi);
+#endif
       vstoreV(lo_v, 0, span_lo);
       vstoreV(hi_v, 0, span_hi);
       const int rows = min(VEC, row_last - block + 1);
       for (int j = 0; j < rows; ++j) {
+#if SHADE_SPAN
+        const int span_xl = span_lo[j], span_xr = span_hi[j];
+        const int xl = max(span_xl, lo), xr = min(span_xr, hi);
+#else
         const int xl = span_lo[j], xr = span_hi[j];
+#endif
         if (xl > xr) continue;
         const int py = block + j;
+        SPAN_SETUP(attr, py - y0, span_xl, span_xr)
         for (int s = (xl + x0 - tile_x) / VEC; s <= (xr + x0 - tile_x) / VEC; ++s) {
           const intV rel = lane + (tile_x + s * VEC - x0);
           shade_segment(t, attr, py - y0, rel, (rel >= xl) & (rel <= xr), (py - tile_y) * SEGMENTS + s, depth, cr, cg,
-                        cb, lights, materials, viewer PLAN_ARGS(tile_x + s * VEC));
+                        cb, lights, materials, viewer PLAN_ARGS(tile_x + s * VEC) SPAN_ARGS);
         }
       }
     }
@@ -273,6 +314,10 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
     }
 #endif
   }
+#endif
+#if SHADE_SPAN && PLAN_PASS != 1
+  tile_clocks[3 * tile] = span_setups;
+  tile_clocks[3 * tile + 1] = span_fallbacks;
 #endif
 #if UNIT_PATH && PLAN_PASS != 1
   tile_clocks[3 * tile] = spans;

@@ -42,12 +42,16 @@ std::vector<cl_float4> light_table(const Scene& s) {
   return out;
 }
 
-std::vector<cl_float4> material_table(const Scene& s) {
+std::vector<cl_float4> material_table(const Scene& s, const SpecularModel& spec) {
   std::vector<cl_float4> out;
   for (const Material& m : s.materials) {
     const glm::vec3 a = 255.0f * m.ambient * s.ambient_light;
     out.push_back({{a.x, a.y, a.z, m.shininess}});
-    out.push_back({{m.diffuse.r, m.diffuse.g, m.diffuse.b, 0.0f}});
+    // .w: the scale a of a cos^k(a alpha) specular model (specular_models.h), per material exponent.
+    const double scale = spec.kind == SpecularKind::cosk_taylor ? taylor_scale(m.shininess, spec.k)
+                         : spec.kind == SpecularKind::cosk_lobe ? lobe_scale(m.shininess, spec.k)
+                                                                : 0.0;
+    out.push_back({{m.diffuse.r, m.diffuse.g, m.diffuse.b, float(scale)}});
     out.push_back({{m.specular.r, m.specular.g, m.specular.b, 0.0f}});
   }
   if (out.empty()) out.push_back({{0, 0, 0, 1}});
@@ -63,6 +67,16 @@ std::string kernel_options(const Scene& s, const RenderOptions& o) {
   opt << "-D TILE=" << o.tile_size << " -D NUM_LIGHTS=" << s.lights.size() << " -D POINT_LIGHTS=" << point_mask
       << " -D LOCAL_VIEWER=" << (needs_local_viewer(s) ? 1 : 0) << " -D NEED_POSITION=" << (need_position ? 1 : 0)
       << " -D OUTPUT_FLOAT=" << (o.float_output ? 1 : 0) << " -D UNIT_PATH=" << (o.unit_path() ? 1 : 0);
+  if (o.specular.kind != SpecularKind::exact) {
+    const int model = o.specular.kind == SpecularKind::quadratic  ? 3
+                      : o.specular.kind == SpecularKind::sevenths ? 4
+                                                                  : 1;
+    opt << " -D SPECULAR_MODEL=" << model << " -D SPECULAR_K=" << o.specular.k << " -D SPECULAR_P=" << std::to_string(o.specular.p)
+        << "f -D SPECULAR_P_IS_2=" << (o.specular.p == 2.0 ? 1 : 0);
+  }
+  if (o.span_normalize())
+    opt << " -D NORMALIZE_METHOD=" << (o.normalize.kind == NormalizeKind::slerp ? 1 : 2)
+        << " -D NORMALIZE_MID=" << int(o.normalize.mid);
   if (o.unit_path()) {
     const UnitConfig u = o.unit();
     opt << " -D UNIT_KIND=" << int(u.kind) << " -D UNIT_LANES=" << u.lanes << " -D UNIT_OWN_STEP=" << (u.own_step ? 1 : 0)
@@ -93,6 +107,14 @@ Renderer::Renderer(Device& device, RenderOptions options) : device_(device), opt
   if (options_.dda_coverage && options_.unit().kind == UnitKind::sierpinski)
     throw UsageError("--coverage dda does not combine with --units " + unit_name(options_.unit()) +
                      " (its copies need pixel-centre coverage)");
+  if (options_.specular.kind != SpecularKind::exact && options_.method != Method::phong)
+    throw UsageError("--specular " + specular_name(options_.specular) + " needs --method phong (the other methods light on the host)");
+  if (options_.normalize.kind != NormalizeKind::exact && options_.method != Method::phong)
+    throw UsageError("--normalize " + normalize_name(options_.normalize) + " needs --method phong");
+  if (options_.normalize.kind == NormalizeKind::dichotomy || options_.normalize.kind == NormalizeKind::recurrence)
+    throw UsageError("--normalize " + normalize_name(options_.normalize) +
+                     ": the kernel shades a span's pixels as parallel lanes; this sequential method is in the host "
+                     "library and 'parashade phong-study' only (kernel: exact, slerp, quadratic:*)");
   if (options_.dda_coverage && options_.method != Method::gouraud)
     throw UsageError("--coverage dda is modeled for Gouraud's units only");
   if (options_.division.mode != DIV_CONSTANT) {
@@ -258,7 +280,7 @@ const Frame& Renderer::render(const Scene& scene) {
     const std::size_t pixels = std::size_t(scene.width) * scene.height;
 
     const auto lights = light_table(scene);
-    const auto materials = material_table(scene);
+    const auto materials = material_table(scene, options_.specular);
     if ((lights.size() + materials.size()) * sizeof(cl_float4) > device_.info().constant_buffer)
       throw DeviceError("the scene's lights and materials do not fit the constant memory of '" + device_.info().name + "'");
     ensure(lights_, lights_cap_, lights.size() * sizeof(cl_float4), CL_MEM_READ_ONLY);
@@ -302,7 +324,8 @@ const Frame& Renderer::render(const Scene& scene) {
     kernel.setArg(13, out_float_);
     // Unused by the kernel off the unit path (and the planes without fixed point): a small placeholder.
     if (!options_.arith.fixed) ensure(fixed_, fixed_cap_, 64, CL_MEM_READ_ONLY);
-    const std::size_t clock_bytes = options_.unit_path() ? 3 * std::size_t(frame.stats.tiles) * sizeof(cl_ulong) : 64;
+    const bool counts = options_.unit_path() || options_.span_normalize();
+    const std::size_t clock_bytes = counts ? 3 * std::size_t(frame.stats.tiles) * sizeof(cl_ulong) : 64;
     ensure(tile_clocks_, tile_clocks_cap_, clock_bytes, CL_MEM_WRITE_ONLY);
     kernel.setArg(14, fixed_);
     kernel.setArg(15, tile_clocks_);
@@ -331,7 +354,7 @@ const Frame& Renderer::render(const Scene& scene) {
           q.enqueueMapBuffer(out_float_, CL_FALSE, CL_MAP_READ, 0, 3 * pixels * sizeof(float), nullptr, &float_mapped));
     cl::Event clocks_mapped;
     const cl_ulong* tile_clocks = nullptr;
-    if (options_.unit_path())
+    if (counts)
       tile_clocks = static_cast<const cl_ulong*>(
           q.enqueueMapBuffer(tile_clocks_, CL_FALSE, CL_MAP_READ, 0, clock_bytes, nullptr, &clocks_mapped));
     mapped.wait();
@@ -339,7 +362,11 @@ const Frame& Renderer::render(const Scene& scene) {
     if (tile_clocks) {
       clocks_mapped.wait();
       ModeledClocks& c = frame.stats.clocks;
-      for (int tile = 0; tile < frame.stats.tiles; ++tile) {
+      for (int tile = 0; tile < frame.stats.tiles && options_.span_normalize(); ++tile) {
+        frame.stats.normalize_span_setups += tile_clocks[3 * tile];
+        frame.stats.normalize_fallback_spans += tile_clocks[3 * tile + 1];
+      }
+      for (int tile = 0; tile < frame.stats.tiles && options_.unit_path(); ++tile) {
         c.spans += tile_clocks[3 * tile];
         c.pixels += tile_clocks[3 * tile + 1];
         c.clocks += tile_clocks[3 * tile + 2];

@@ -28,7 +28,7 @@ namespace {
 
 struct RenderArgs {
   std::string scene, output, method = "gouraud", device, size, report, units, arith = "float", division = "constant",
-              coverage = "centre";
+              coverage = "centre", specular = "exact", normalize = "exact";
   int frames = 5, warmup = 1, tile = 16, work_items = 0;
   bool float_output = false, no_error = false, quiet = false;
   PlanArgs plan;
@@ -78,6 +78,8 @@ int run_render(const RenderArgs& a) {
     throw UsageError("unknown coverage '" + a.coverage + "' (valid: centre, dda)");
   options.dda_coverage = a.coverage == "dda";
   options.plan = plan_options(a.plan);
+  options.specular = parse_specular(a.specular);
+  options.normalize = parse_normalize(a.normalize);
   const auto size = parse_size(a.size);
   if (a.frames < 1) throw UsageError("--frames must be at least 1");
   if (a.warmup < 0) throw UsageError("--warmup must not be negative");
@@ -144,6 +146,10 @@ int run_render(const RenderArgs& a) {
       {"image", a.output},
       {"device", to_json(dev)},
       {"method", method_name(method)},
+      {"specular", specular_name(options.specular)},
+      {"normalize", {{"method", normalize_name(options.normalize)},
+                     {"span_setups", frame.stats.normalize_span_setups},
+                     {"fallback_spans", frame.stats.normalize_fallback_spans}}},
       {"width", scene.width},
       {"height", scene.height},
       {"tile_size", options.tile_size},
@@ -201,6 +207,10 @@ int run_render(const RenderArgs& a) {
     std::printf("planned frame: planning %.3f ms, units' depth pass %.3f ms, resolve kernel %.3f ms (medians)\n",
                 med.planning_ms, med.unit_pass_ms, med.kernel_ms);
   }
+  if (options.span_normalize() || options.specular.kind != SpecularKind::exact)
+    std::printf("phong: normals %s (%llu span setups, %llu fell back to the exact normal), specular %s\n",
+                normalize_name(options.normalize).c_str(), (unsigned long long)frame.stats.normalize_span_setups,
+                (unsigned long long)frame.stats.normalize_fallback_spans, specular_name(options.specular).c_str());
   for (const auto& l : error_lines) std::printf("%s\n", l.c_str());
   std::printf("wrote %s%s%s\n", a.output.c_str(), a.report.empty() ? "" : " and ", a.report.c_str());
   return 0;
@@ -215,6 +225,12 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("-o,--output", a->output, "Image to write; format from the extension (png, jpg, tif, ppm, exr ...)")
       ->required();
   cmd->add_option("--method", a->method, "Shading method: flat, gouraud, phong")->capture_default_str();
+  cmd->add_option("--specular", a->specular,
+                  "Phong specular model: exact, cosk:taylor:2|4, cosk:lobe:2|4, quadratic, 7n16[:P] (docs/phong-methods.md)")
+      ->capture_default_str();
+  cmd->add_option("--normalize", a->normalize,
+                  "Phong unit normals: exact, slerp, quadratic:exact|quad|cubic|cubic-fit (docs/phong-methods.md)")
+      ->capture_default_str();
   cmd->add_option("--device", a->device,
                   "OpenCL device: index or name substring (see 'parashade devices'); 'all' or a comma list splits the "
                   "frame across devices by measured speed");

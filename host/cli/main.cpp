@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
   app.footer(
       "Exit codes: 0 ok, 2 usage error, 3 bad input (scene, mesh, values), 4 OpenCL or device failure.\n"
       "Run 'parashade COMMAND --help' for a command's options.");
-  const std::vector<cli::Command> commands = {cli::add_devices_command(app), cli::add_render_command(app), cli::add_plan_command(app),
+  const std::vector<cli::Command> commands = {cli::add_devices_command(app), cli::add_phong_study_command(app),
+                                              cli::add_render_command(app), cli::add_plan_command(app),
                                               cli::add_tune_command(app),
                                               cli::add_scaling_command(app),
                                               cli::add_unit_error_command(app)};
@@ -31,7 +32,7 @@ int main(int argc, char** argv) {
   try {
     for (const cli::Command& c : commands)
       if (c.app->parsed()) return c.run();
-    std::cerr << "parashade: error: a command is required: devices, render, plan, tune, scaling or unit-error\n"
+    std::cerr << "parashade: error: a command is required: devices, phong-study, render, plan, tune, scaling or unit-error\n"
                  "Run with --help for more information.\n";
     return int(ExitCode::usage);
   } catch (const Error& e) {

@@ -13,8 +13,10 @@
 #include "parashade/image.hpp"
 #include "parashade/method.hpp"
 #include "parashade/planner.hpp"
+#include "parashade/normalization.hpp"
 #include "parashade/scene.hpp"
 #include "parashade/screen_geometry.hpp"
+#include "parashade/specular_models.hpp"
 #include "parashade/units.hpp"
 
 namespace parashade {
@@ -36,6 +38,9 @@ struct RenderOptions {
   // Only tile rows [band_first, band_first + band_rows) are shaded, the rest is background (a device's
   // share of a frame split across devices, split_renderer.hpp); band_rows < 0: the whole frame.
   int band_first = 0, band_rows = -1;
+  SpecularModel specular;     // Phong: the specular model (--specular, kernels/specular_models.h)
+  NormalizeMethod normalize;  // Phong: unit normals per span (--normalize, kernels/normalize_span.h)
+  bool span_normalize() const { return method == Method::phong && normalize.kind != NormalizeKind::exact; }
   bool unit_path() const { return units.has_value() || arith.fixed || dda_coverage; }
   UnitConfig unit() const { return units.value_or(UnitConfig{}); }
 };
@@ -59,6 +64,8 @@ struct FrameStats {
   std::uint64_t bin_entries = 0;
   int tiles = 0;
   ModeledClocks clocks;  // on the unit path only (RenderOptions::unit_path)
+  // Per-span normalization: span setups (per span and tile) and those that fell back to the exact normal.
+  std::uint64_t normalize_span_setups = 0, normalize_fallback_spans = 0;
   std::uint64_t parity_dropped = 0;  // sierpinski: triangles degenerate after vertex parity normalization
   std::uint64_t sierpinski_whole = 0;  // sierpinski :touch/:overlap: too small to halve, shaded whole
   std::optional<PlanReport> plan;    // with a plan: the modeled per-unit load
