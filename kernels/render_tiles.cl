@@ -17,6 +17,9 @@
 #if UNIT_PATH
 #include "method_gouraud_units.h"
 #endif
+#ifndef COMBINED
+#define COMBINED 0
+#endif
 
 #define TILE_VECTORS (TILE * SEGMENTS)
 
@@ -34,6 +37,10 @@ INLINE void keep(intV pass, floatV sr, floatV sg, floatV sb, floatV* cr, floatV*
   *cg = select(*cg, sg, pass);
   *cb = select(*cb, sb, pass);
 }
+
+#if COMBINED
+#include "combined_walk.h"
+#endif
 
 /* One row segment of VEC pixels: depth test, shade, keep. */
 INLINE void shade_segment(__global const TriangleGeometry* t, __global const float* attr, int dy, intV rel,
@@ -146,6 +153,12 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
       }
     }
 #else
+#if COMBINED
+    /* Combined Gouraud/Phong: by whole spans, segment ends counted from each span's left pixel. */
+    shade_triangle_combined(t, attr, tile_x, tile_y, row_first, row_last, lo, hi, depth, cr, cg, cb, lights, materials,
+                            viewer);
+    continue;
+#endif
     const int seg_first = (lo + x0 - tile_x) / VEC, seg_last = (hi + x0 - tile_x) / VEC;
     if (t->flags & TRIANGLE_SMALL) {
       /* Few rows: test each pixel's edge functions directly. */

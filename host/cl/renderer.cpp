@@ -4,6 +4,7 @@
 #include <cstring>
 #include <sstream>
 
+#include "parashade/combined_kernel.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/parallel.hpp"
@@ -21,6 +22,7 @@ const char* method_header(Method m) {
     case Method::flat: return "method_flat.h";
     case Method::gouraud: return "method_gouraud.h";
     case Method::phong: return "method_phong.h";
+    case Method::combined: return "method_combined.h";
   }
   return "";
 }
@@ -63,6 +65,7 @@ std::string kernel_options(const Scene& s, const RenderOptions& o) {
   opt << "-D TILE=" << o.tile_size << " -D NUM_LIGHTS=" << s.lights.size() << " -D POINT_LIGHTS=" << point_mask
       << " -D LOCAL_VIEWER=" << (needs_local_viewer(s) ? 1 : 0) << " -D NEED_POSITION=" << (need_position ? 1 : 0)
       << " -D OUTPUT_FLOAT=" << (o.float_output ? 1 : 0) << " -D UNIT_PATH=" << (o.unit_path() ? 1 : 0);
+  if (o.method == Method::combined) opt << combined_kernel_options(o.combined);
   if (o.unit_path()) {
     const UnitConfig u = o.unit();
     opt << " -D UNIT_KIND=" << int(u.kind) << " -D UNIT_LANES=" << u.lanes << " -D UNIT_OWN_STEP=" << (u.own_step ? 1 : 0)
@@ -244,7 +247,8 @@ const Frame& Renderer::render(const Scene& scene) {
     const std::size_t pixels = std::size_t(scene.width) * scene.height;
 
     const auto lights = light_table(scene);
-    const auto materials = material_table(scene);
+    auto materials = material_table(scene);
+    if (options_.method == Method::combined) set_combined_limits(scene, options_.combined, materials);
     if ((lights.size() + materials.size()) * sizeof(cl_float4) > device_.info().constant_buffer)
       throw DeviceError("the scene's lights and materials do not fit the constant memory of '" + device_.info().name + "'");
     ensure(lights_, lights_cap_, lights.size() * sizeof(cl_float4), CL_MEM_READ_ONLY);

@@ -9,6 +9,7 @@
 
 #include "cli_args.hpp"
 #include "commands.hpp"
+#include "parashade/combined.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/image.hpp"
@@ -26,6 +27,7 @@ struct RenderArgs {
   std::string scene, output, method = "gouraud", device, size, report, units, arith = "float", division = "constant",
               coverage = "centre";
   int frames = 5, warmup = 1, tile = 16, work_items = 0;
+  double max_error = 0;  // 0: not given
   bool float_output = false, no_error = false, quiet = false;
 };
 
@@ -62,6 +64,13 @@ int run_render(const RenderArgs& a) {
   options.float_output = a.float_output;
   options.tile_size = a.tile;
   options.work_items = a.work_items;
+  if (method == Method::combined) options.combined = parse_combined(a.method);
+  if (a.max_error != 0) {
+    if (!options.combined.automatic || method != Method::combined)
+      throw UsageError("--max-error chooses the segments of --method combined:auto; method '" + a.method + "' has none");
+    if (!(a.max_error > 0 && a.max_error <= 255)) throw UsageError("--max-error must be in (0, 255] levels");
+    options.combined.max_error = a.max_error;
+  }
   if (!a.units.empty()) options.units = parse_units(a.units);
   options.arith = parse_arith(a.arith);
   options.division = parse_division(a.division);
@@ -131,6 +140,10 @@ int run_render(const RenderArgs& a) {
       {"mtriangle_per_s", double(frame.stats.geometry.triangles_in) / (med.total_ms * 1e3)},
       {"stats", to_json(frame.stats)},
       {"error", errors}};
+  if (method == Method::combined) {
+    report["method"] = combined_name(options.combined);
+    if (options.combined.automatic) report["max_error_levels"] = options.combined.max_error;
+  }
   if (options.unit_path()) {
     report["units"] = unit_name(options.unit());
     report["arith"] = arith_name(options.arith);
@@ -150,7 +163,8 @@ int run_render(const RenderArgs& a) {
 
   std::printf("%s: %dx%d, %llu triangles (%llu after culling and clipping), method %s\n", scene.name.c_str(),
               scene.width, scene.height, (unsigned long long)frame.stats.geometry.triangles_in,
-              (unsigned long long)frame.stats.geometry.triangles_out, method_name(method));
+              (unsigned long long)frame.stats.geometry.triangles_out,
+              method == Method::combined ? combined_name(options.combined).c_str() : method_name(method));
   std::printf("device: %s (%s), %d compute units\n", dev.name.c_str(), dev.platform.c_str(), dev.compute_units);
   std::printf("frame: %.3f ms (median of %d after %d warm-up; geometry %.3f, setup %.3f, binning %.3f, kernel %.3f, "
               "read-back %.3f) = %.1f fps, %.1f Mpixel/s, %.2f Mtriangle/s\n",
@@ -177,7 +191,12 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("scene", a->scene, "Scene file (.json) or mesh (.obj .off .ply .stl)")->required();
   cmd->add_option("-o,--output", a->output, "Image to write; format from the extension (png, jpg, tif, ppm, exr ...)")
       ->required();
-  cmd->add_option("--method", a->method, "Shading method: flat, gouraud, phong")->capture_default_str();
+  cmd->add_option("--method", a->method,
+                  "Shading method: flat, gouraud, phong, combined:K (Phong at the ends of 2^K-pixel segments, K = 0..6), "
+                  "combined:auto (K per span from --max-error)")
+      ->capture_default_str();
+  cmd->add_option("--max-error", a->max_error,
+                  "combined:auto: error budget in 8-bit levels against Phong (default 1; 0.5 of it is the image's rounding)");
   cmd->add_option("--device", a->device, "OpenCL device: index or name substring (see 'parashade devices')");
   cmd->add_option("--size", a->size, "Resolution WIDTHxHEIGHT (at most 4096x4096), overriding the scene's");
   cmd->add_option("--report", a->report, "Write a JSON report (timings, stages, error figures)");

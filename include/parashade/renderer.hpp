@@ -8,6 +8,7 @@
 #include <CL/opencl.hpp>
 
 #include "parashade/binning.hpp"
+#include "parashade/combined.hpp"
 #include "parashade/dda_coverage.hpp"
 #include "parashade/device.hpp"
 #include "parashade/image.hpp"
@@ -29,6 +30,7 @@ struct RenderOptions {
   Arithmetic arith;
   SpanDivision division;  // fixed point: the span increment by a division per span (--div)
   bool dda_coverage = false;  // the sources' edge-walking coverage instead of pixel centres (--coverage dda)
+  CombinedConfig combined;    // Method::combined: segment length or auto with its error budget
   bool unit_path() const { return units.has_value() || arith.fixed || dda_coverage; }
   UnitConfig unit() const { return units.value_or(UnitConfig{}); }
 };
