@@ -9,6 +9,12 @@
  * render_tiles.cl walks triangles by whole spans for this method (combined_walk.h). */
 #define COMBINED 1
 #include "method_phong.h"
+#ifndef HIGHLIGHT_TEST
+#define HIGHLIGHT_TEST 0
+#endif
+#if HIGHLIGHT_TEST
+#include "highlight_mask.h"
+#endif
 
 #ifndef SEG_AUTO
 #define SEG_AUTO 0
@@ -26,6 +32,14 @@
 #define SEG_K_MIN SEG_K
 #endif
 #define SEG_END_COLUMNS (((TILE - 1) >> SEG_K_MIN) + 3)
+
+/* Per triangle: segments (combined_walk.h) or Phong per pixel. A triangle whose box is narrower than
+ * COMBINED_MIN_WIDTH pixels has spans too short to share segment ends (its ends would be nearly all its
+ * pixels), so it goes the per-pixel way: the same result as combined:0, without the walk's overhead. */
+#ifndef COMBINED_MIN_WIDTH
+#define COMBINED_MIN_WIDTH 0
+#endif
+INLINE bool combined_walks(__global const TriangleGeometry* t) { return t->x1 - t->x0 + 1 >= COMBINED_MIN_WIDTH; }
 
 /* A plane's value on each lane's own row and column: the same operations, in the same order, as
  * method_phong.h's plane_row, so segment ends equal Phong's pixels bit for bit. */
@@ -45,6 +59,13 @@ INLINE void shade_points(__global const float* a, floatV fdy, floatV rel, floatV
   const floatV px = plane_at(a, 9, fdy, rel), py = plane_at(a, 10, fdy, rel), pz = plane_at(a, 11, fdy, rel);
 #else
   const floatV px = 0.0f, py = 0.0f, pz = 0.0f;
+#endif
+#if HIGHLIGHT_TEST
+  const int needed = (int)a[PHONG_HIGHLIGHT_SLOT];
+  if (needed != (1 << NUM_LIGHTS) - 1) {
+    blinn_phong_masked(materials, (int)a[PHONG_MATERIAL_SLOT], lights, viewer, needed, nx, ny, nz, px, py, pz, r, g, b);
+    return;
+  }
 #endif
   blinn_phong(materials, (int)a[PHONG_MATERIAL_SLOT], lights, viewer, nx, ny, nz, px, py, pz, r, g, b);
 }

@@ -154,10 +154,13 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
     }
 #else
 #if COMBINED
-    /* Combined Gouraud/Phong: by whole spans, segment ends counted from each span's left pixel. */
-    shade_triangle_combined(t, attr, tile_x, tile_y, row_first, row_last, lo, hi, depth, cr, cg, cb, lights, materials,
-                            viewer);
-    continue;
+    /* Combined Gouraud/Phong: by whole spans, segment ends counted from each span's left pixel; narrow
+     * triangles, where it cannot save, by Phong per pixel below. */
+    if (combined_walks(t)) {
+      shade_triangle_combined(t, attr, tile_x, tile_y, row_first, row_last, lo, hi, depth, cr, cg, cb, lights, materials,
+                              viewer);
+      continue;
+    }
 #endif
     const int seg_first = (lo + x0 - tile_x) / VEC, seg_last = (hi + x0 - tile_x) / VEC;
     if (t->flags & TRIANGLE_SMALL) {

@@ -7,8 +7,14 @@ namespace parashade {
 
 std::string combined_kernel_options(const CombinedConfig& c) {
   std::ostringstream opt;
-  opt << " -D SEG_AUTO=" << (c.automatic ? 1 : 0) << " -D SEG_K=" << c.k << " -D SEG_K_MAX=" << kCombinedMaxK;
+  opt << " -D SEG_AUTO=" << (c.automatic ? 1 : 0) << " -D SEG_K=" << c.k << " -D SEG_K_MAX=" << kCombinedMaxK
+      << " -D HIGHLIGHT_TEST=" << (c.highlight_test ? 1 : 0) << " -D COMBINED_MIN_WIDTH=" << combined_min_width(c);
   return opt.str();
+}
+
+int combined_min_width(const CombinedConfig& c) {
+  if (c.min_width >= 0) return c.min_width;
+  return c.automatic ? 8 : 2 << c.k;
 }
 
 double combined_shading_budget(const CombinedConfig& c) { return std::max(0.0, c.max_error - 0.5); }

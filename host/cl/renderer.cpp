@@ -178,6 +178,9 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
     q.enqueueUnmapMemObject(leaves_, leaf_ptr);
   } else {
     s.triangles_without_pixels = setup_triangles(geometry_, method, tri_ptr, attr_ptr, fixed_ptr).without_pixels;
+    if (method == Method::combined && options_.combined.highlight_test)
+      s.highlight = mark_highlights(scene, geometry_, attr_ptr, PHONG_ATTR_FLOATS, PHONG_HIGHLIGHT_SLOT,
+                                    options_.combined.negligible_specular);
     if (options_.dda_coverage) {
       q.finish();  // the previous frame's row table may still be in flight
       dda_ = apply_dda_coverage(geometry_, tri_ptr, attr_ptr, fixed_ptr);

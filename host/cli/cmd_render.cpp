@@ -10,6 +10,7 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "parashade/combined.hpp"
+#include "parashade/combined_kernel.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/image.hpp"
@@ -28,7 +29,8 @@ struct RenderArgs {
               coverage = "centre";
   int frames = 5, warmup = 1, tile = 16, work_items = 0;
   double max_error = 0;  // 0: not given
-  bool float_output = false, no_error = false, quiet = false;
+  int combined_min_width = -1;
+  bool float_output = false, no_error = false, quiet = false, highlight_test = false;
 };
 
 // Median of each stage over the timed frames.
@@ -65,6 +67,15 @@ int run_render(const RenderArgs& a) {
   options.tile_size = a.tile;
   options.work_items = a.work_items;
   if (method == Method::combined) options.combined = parse_combined(a.method);
+  if (a.highlight_test && method != Method::combined)
+    throw UsageError("--highlight-test is modeled in the combined method (combined:0 is Phong); not in '" + a.method + "'");
+  options.combined.highlight_test = a.highlight_test;
+  if (a.combined_min_width != -1) {
+    if (method != Method::combined) throw UsageError("--combined-min-width needs --method combined:K or combined:auto");
+    if (a.combined_min_width < 0 || a.combined_min_width > 4096)
+      throw UsageError("--combined-min-width must be 0..4096 pixels");
+    options.combined.min_width = a.combined_min_width;
+  }
   if (a.max_error != 0) {
     if (!options.combined.automatic || method != Method::combined)
       throw UsageError("--max-error chooses the segments of --method combined:auto; method '" + a.method + "' has none");
@@ -143,6 +154,8 @@ int run_render(const RenderArgs& a) {
   if (method == Method::combined) {
     report["method"] = combined_name(options.combined);
     if (options.combined.automatic) report["max_error_levels"] = options.combined.max_error;
+    report["combined_min_width"] = combined_min_width(options.combined);
+    report["highlight_test"] = options.combined.highlight_test;
   }
   if (options.unit_path()) {
     report["units"] = unit_name(options.unit());
@@ -178,6 +191,11 @@ int run_render(const RenderArgs& a) {
                 division_name(options.division).c_str(), (unsigned long long)c.clocks,
                 (unsigned long long)c.spans, (unsigned long long)c.pixels, c.clocks ? double(c.pixels) / double(c.clocks) : 0.0);
   }
+  if (options.combined.highlight_test)
+    std::printf("highlight test: %llu of %llu triangles without a highlight, %llu (triangle, light) specular terms skipped\n",
+                (unsigned long long)frame.stats.highlight.without_highlight,
+                (unsigned long long)frame.stats.highlight.triangles,
+                (unsigned long long)frame.stats.highlight.light_terms_skipped);
   for (const auto& l : error_lines) std::printf("%s\n", l.c_str());
   std::printf("wrote %s%s%s\n", a.output.c_str(), a.report.empty() ? "" : " and ", a.report.c_str());
   return 0;
@@ -220,6 +238,10 @@ Command add_render_command(CLI::App& app) {
                   "Coverage: centre (pixel centres, top-left rule) or dda (the sources' edge walk; Gouraud units; "
                   "differences show as coverage mismatches against the reference)")
       ->capture_default_str();
+  cmd->add_option("--combined-min-width", a->combined_min_width,
+                  "combined:*: triangles with a narrower box (pixels) go by Phong per pixel (default 2^(K+1), auto 8; 0: none)");
+  cmd->add_flag("--highlight-test", a->highlight_test,
+                "combined:*: skip the specular term per triangle and light where no highlight can fall (SEEDS §8)");
   cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
   cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");
   cmd->add_flag("-q,--quiet", a->quiet, "No progress line");

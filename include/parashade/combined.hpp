@@ -12,6 +12,12 @@ struct CombinedConfig {
   int k = 2;               // segment length 2^k pixels (fixed k)
   bool automatic = false;  // k per span from the error bound (combined:auto)
   double max_error = 1.0;  // auto: budget in 8-bit levels for the 8-bit image against Phong
+  // Highlight-presence test (highlight.hpp): per triangle, skip the specular term of the lights that
+  // cannot add more than negligible_specular levels anywhere in it.
+  bool highlight_test = false;
+  // Triangles with a narrower bounding box go by Phong per pixel (-1: 2^(k+1), 8 for auto; 0: none).
+  int min_width = -1;
+  double negligible_specular = 0.05;
 };
 
 constexpr int kCombinedMaxK = 6;  // longest segment 64 pixels

@@ -11,6 +11,7 @@
 #include "parashade/combined.hpp"
 #include "parashade/dda_coverage.hpp"
 #include "parashade/device.hpp"
+#include "parashade/highlight.hpp"
 #include "parashade/image.hpp"
 #include "parashade/method.hpp"
 #include "parashade/scene.hpp"
@@ -53,6 +54,7 @@ struct FrameStats {
   int tiles = 0;
   ModeledClocks clocks;  // on the unit path only (RenderOptions::unit_path)
   std::uint64_t parity_dropped = 0;  // sierpinski: triangles degenerate after vertex parity normalization
+  HighlightMarks highlight;          // combined with the highlight-presence test
 };
 
 struct Frame {

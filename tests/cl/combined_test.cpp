@@ -155,5 +155,31 @@ TEST(CombinedKernel, AutoStaysWithinItsBudget) {
   }
 }
 
+// Point light and local viewer (H varies over a triangle): skipping the specular term where the test
+// says no highlight falls changes no pixel by more than the negligible level per light.
+TEST(CombinedKernel, HighlightTestChangesNothingVisible) {
+  Scene scene = busy_scene(true);
+  scene.materials[0].shininess = 300.0f;
+  scene.camera.projection = Projection::perspective;
+  scene.camera.position = {0.0f, 0.0f, 400.0f};
+  scene.camera.fov_y_degrees = 40.0f;
+  scene.camera.near_plane = 100.0f;
+  scene.camera.far_plane = 800.0f;
+  scene.local_viewer = true;
+  const auto plain = render_float(scene, Method::combined, fixed_k(0));
+  RenderOptions o;
+  o.method = Method::combined;
+  o.float_output = true;
+  o.combined = fixed_k(0);
+  o.combined.highlight_test = true;
+  Renderer renderer(test_device(), o);
+  const Frame& f = renderer.render(scene);
+  EXPECT_GT(f.stats.highlight.light_terms_skipped, 5u);
+  EXPECT_LT(f.stats.highlight.without_highlight, f.stats.highlight.triangles);
+  double worst = 0;
+  for (std::size_t i = 0; i < plain.size(); ++i) worst = std::max(worst, std::abs(double(f.image.rgb_float[i]) - plain[i]));
+  EXPECT_LE(worst, 2 * o.combined.negligible_specular + 1e-3);
+}
+
 }  // namespace
 }  // namespace parashade
