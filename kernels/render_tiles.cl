@@ -22,6 +22,9 @@
 #endif
 /* Gouraud's fixed-point unit keeps its registers' bits as the colour until the output rounds them. */
 #define REGISTER_COLOUR (UNIT_PATH && FIXED && UNIT_REGISTER_COLOUR)
+#ifndef COMBINED
+#define COMBINED 0
+#endif
 
 #define TILE_VECTORS (TILE * SEGMENTS)
 
@@ -80,6 +83,9 @@ INLINE void keep(intV pass, floatV sr, floatV sg, floatV sb, floatV* cr, floatV*
 #else
 #define SPAN_SETUP(attr, dy, xl, xr)
 #define SPAN_ARGS
+#endif
+#if COMBINED
+#include "combined_walk.h"
 #endif
 
 /* One row segment of VEC pixels: depth test, shade, keep. */
@@ -226,6 +232,15 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
       }
     }
 #else
+#if COMBINED
+    /* Combined Gouraud/Phong: by whole spans, segment ends counted from each span's left pixel; narrow
+     * triangles, where it cannot save, by Phong per pixel below. */
+    if (combined_walks(t)) {
+      shade_triangle_combined(t, attr, tile_x, tile_y, row_first, row_last, lo, hi, depth, cr, cg, cb, lights, materials,
+                              viewer);
+      continue;
+    }
+#endif
     const int seg_first = (lo + x0 - tile_x) / VEC, seg_last = (hi + x0 - tile_x) / VEC;
     if (t->flags & TRIANGLE_SMALL) {
       /* Few rows: test each pixel's edge functions directly. */

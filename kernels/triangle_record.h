@@ -43,5 +43,6 @@ typedef struct {
 /* Phong: normal ref xyz, ddx xyz, ddy xyz; position ref xyz, ddx xyz, ddy xyz; material; 3 unused */
 #define PHONG_ATTR_FLOATS 22
 #define PHONG_MATERIAL_SLOT 18
+#define PHONG_HIGHLIGHT_SLOT 19 /* combined --highlight-test: lights whose specular term is evaluated (mask) */
 
 #endif

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <sstream>
 
+#include "parashade/combined_kernel.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/parallel.hpp"
@@ -21,6 +22,7 @@ const char* method_header(Method m) {
     case Method::flat: return "method_flat.h";
     case Method::gouraud: return "method_gouraud.h";
     case Method::phong: return "method_phong.h";
+    case Method::combined: return "method_combined.h";
   }
   return "";
 }
@@ -77,6 +79,7 @@ std::string kernel_options(const Scene& s, const RenderOptions& o) {
   if (o.span_normalize())
     opt << " -D NORMALIZE_METHOD=" << (o.normalize.kind == NormalizeKind::slerp ? 1 : 2)
         << " -D NORMALIZE_MID=" << int(o.normalize.mid);
+  if (o.method == Method::combined) opt << combined_kernel_options(o.combined);
   if (o.unit_path()) {
     const UnitConfig u = o.unit();
     opt << " -D UNIT_KIND=" << int(u.kind) << " -D UNIT_LANES=" << u.lanes << " -D UNIT_OWN_STEP=" << (u.own_step ? 1 : 0)
@@ -117,6 +120,10 @@ Renderer::Renderer(Device& device, RenderOptions options) : device_(device), opt
                      "library and 'parashade phong-study' only (kernel: exact, slerp, quadratic:*)");
   if (options_.dda_coverage && options_.method != Method::gouraud)
     throw UsageError("--coverage dda is modeled for Gouraud's units only");
+  if (options_.method == Method::combined && options_.unit_path())
+    throw UsageError("--method combined has no shading-unit model (--units, --arith fixed): gouraud or phong");
+  if (options_.method == Method::combined && options_.plan)
+    throw UsageError("--cu / --partition do not plan --method combined yet (its span walk has no planned depth pass)");
   if (options_.division.mode != DIV_CONSTANT) {
     const UnitConfig u = options_.unit();
     if (!options_.arith.fixed)
@@ -200,6 +207,9 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
     q.enqueueUnmapMemObject(leaves_, leaf_ptr);
   } else {
     s.triangles_without_pixels = setup_triangles(geometry_, method, tri_ptr, attr_ptr, fixed_ptr).without_pixels;
+    if (method == Method::combined && options_.combined.highlight_test)
+      s.highlight = mark_highlights(scene, geometry_, attr_ptr, PHONG_ATTR_FLOATS, PHONG_HIGHLIGHT_SLOT,
+                                    options_.combined.negligible_specular);
     if (options_.dda_coverage) {
       q.finish();  // the previous frame's row table may still be in flight
       dda_ = apply_dda_coverage(geometry_, tri_ptr, attr_ptr, fixed_ptr);
@@ -280,7 +290,8 @@ const Frame& Renderer::render(const Scene& scene) {
     const std::size_t pixels = std::size_t(scene.width) * scene.height;
 
     const auto lights = light_table(scene);
-    const auto materials = material_table(scene, options_.specular);
+    auto materials = material_table(scene, options_.specular);
+    if (options_.method == Method::combined) set_combined_limits(scene, options_.combined, materials);
     if ((lights.size() + materials.size()) * sizeof(cl_float4) > device_.info().constant_buffer)
       throw DeviceError("the scene's lights and materials do not fit the constant memory of '" + device_.info().name + "'");
     ensure(lights_, lights_cap_, lights.size() * sizeof(cl_float4), CL_MEM_READ_ONLY);

@@ -46,7 +46,10 @@ nlohmann::json to_json(const FrameStats& s) {
           {"triangles_without_pixels", s.triangles_without_pixels},
           {"bin_entries", s.bin_entries},
           {"tiles", s.tiles},
-          {"parity_dropped", s.parity_dropped}, {"sierpinski_whole", s.sierpinski_whole}};
+          {"parity_dropped", s.parity_dropped}, {"sierpinski_whole", s.sierpinski_whole},
+          {"highlight_test", {{"triangles", s.highlight.triangles},
+                              {"without_highlight", s.highlight.without_highlight},
+                              {"light_terms_skipped", s.highlight.light_terms_skipped}}}};
 }
 
 nlohmann::json to_json(const ModeledClocks& c) {

@@ -13,6 +13,8 @@
 #include "tune_cache.hpp"
 #include "split_render_cli.hpp"
 #include "parashade/split_renderer.hpp"
+#include "parashade/combined.hpp"
+#include "parashade/combined_kernel.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/image.hpp"
@@ -30,7 +32,9 @@ struct RenderArgs {
   std::string scene, output, method = "gouraud", device, size, report, units, arith = "float", division = "constant",
               coverage = "centre", specular = "exact", normalize = "exact";
   int frames = 5, warmup = 1, tile = 16, work_items = 0;
-  bool float_output = false, no_error = false, quiet = false;
+  double max_error = 0;  // 0: not given
+  int combined_min_width = -1;
+  bool float_output = false, no_error = false, quiet = false, highlight_test = false;
   PlanArgs plan;
   std::string tune_cache;
   bool no_tuned = false, explicit_config = false, keep_going = false;  // explicit: --tile, --work-items, --cu or --partition given
@@ -71,6 +75,22 @@ int run_render(const RenderArgs& a) {
   options.float_output = a.float_output;
   options.tile_size = a.tile;
   options.work_items = a.work_items;
+  if (method == Method::combined) options.combined = parse_combined(a.method);
+  if (a.highlight_test && method != Method::combined)
+    throw UsageError("--highlight-test is modeled in the combined method (combined:0 is Phong); not in '" + a.method + "'");
+  options.combined.highlight_test = a.highlight_test;
+  if (a.combined_min_width != -1) {
+    if (method != Method::combined) throw UsageError("--combined-min-width needs --method combined:K or combined:auto");
+    if (a.combined_min_width < 0 || a.combined_min_width > 4096)
+      throw UsageError("--combined-min-width must be 0..4096 pixels");
+    options.combined.min_width = a.combined_min_width;
+  }
+  if (a.max_error != 0) {
+    if (!options.combined.automatic || method != Method::combined)
+      throw UsageError("--max-error chooses the segments of --method combined:auto; method '" + a.method + "' has none");
+    if (!(a.max_error > 0 && a.max_error <= 255)) throw UsageError("--max-error must be in (0, 255] levels");
+    options.combined.max_error = a.max_error;
+  }
   if (!a.units.empty()) options.units = parse_units(a.units);
   options.arith = parse_arith(a.arith);
   options.division = parse_division(a.division);
@@ -165,6 +185,12 @@ int run_render(const RenderArgs& a) {
       {"mtriangle_per_s", double(frame.stats.geometry.triangles_in) / (med.total_ms * 1e3)},
       {"stats", to_json(frame.stats)},
       {"error", errors}};
+  if (method == Method::combined) {
+    report["method"] = combined_name(options.combined);
+    if (options.combined.automatic) report["max_error_levels"] = options.combined.max_error;
+    report["combined_min_width"] = combined_min_width(options.combined);
+    report["highlight_test"] = options.combined.highlight_test;
+  }
   if (options.unit_path()) {
     report["units"] = unit_name(options.unit());
     report["arith"] = arith_name(options.arith);
@@ -188,7 +214,8 @@ int run_render(const RenderArgs& a) {
 
   std::printf("%s: %dx%d, %llu triangles (%llu after culling and clipping), method %s\n", scene.name.c_str(),
               scene.width, scene.height, (unsigned long long)frame.stats.geometry.triangles_in,
-              (unsigned long long)frame.stats.geometry.triangles_out, method_name(method));
+              (unsigned long long)frame.stats.geometry.triangles_out,
+              method == Method::combined ? combined_name(options.combined).c_str() : method_name(method));
   std::printf("device: %s (%s), %d compute units\n", dev.name.c_str(), dev.platform.c_str(), dev.compute_units);
   std::printf("frame: %.3f ms (median of %d after %d warm-up; geometry %.3f, setup %.3f, binning %.3f, kernel %.3f, "
               "read-back %.3f) = %.1f fps, %.1f Mpixel/s, %.2f Mtriangle/s\n",
@@ -211,6 +238,11 @@ int run_render(const RenderArgs& a) {
     std::printf("phong: normals %s (%llu span setups, %llu fell back to the exact normal), specular %s\n",
                 normalize_name(options.normalize).c_str(), (unsigned long long)frame.stats.normalize_span_setups,
                 (unsigned long long)frame.stats.normalize_fallback_spans, specular_name(options.specular).c_str());
+  if (options.combined.highlight_test)
+    std::printf("highlight test: %llu of %llu triangles without a highlight, %llu (triangle, light) specular terms skipped\n",
+                (unsigned long long)frame.stats.highlight.without_highlight,
+                (unsigned long long)frame.stats.highlight.triangles,
+                (unsigned long long)frame.stats.highlight.light_terms_skipped);
   for (const auto& l : error_lines) std::printf("%s\n", l.c_str());
   std::printf("wrote %s%s%s\n", a.output.c_str(), a.report.empty() ? "" : " and ", a.report.c_str());
   return 0;
@@ -224,7 +256,12 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("scene", a->scene, "Scene file (.json) or mesh (.obj .off .ply .stl)")->required();
   cmd->add_option("-o,--output", a->output, "Image to write; format from the extension (png, jpg, tif, ppm, exr ...)")
       ->required();
-  cmd->add_option("--method", a->method, "Shading method: flat, gouraud, phong")->capture_default_str();
+  cmd->add_option("--method", a->method,
+                  "Shading method: flat, gouraud, phong, combined:K (Phong at the ends of 2^K-pixel segments, K = 0..6), "
+                  "combined:auto (K per span from --max-error)")
+      ->capture_default_str();
+  cmd->add_option("--max-error", a->max_error,
+                  "combined:auto: error budget in 8-bit levels against Phong (default 1; 0.5 of it is the image's rounding)");
   cmd->add_option("--specular", a->specular,
                   "Phong specular model: exact, cosk:taylor:2|4, cosk:lobe:2|4, quadratic, 7n16[:P] (docs/phong-methods.md)")
       ->capture_default_str();
@@ -260,6 +297,10 @@ Command add_render_command(CLI::App& app) {
   add_plan_options(*cmd, a->plan, false);
   cmd->add_option("--tune-cache", a->tune_cache, "Tune cache to take the best configuration from (default: as 'tune')");
   cmd->add_flag("--no-tuned", a->no_tuned, "Ignore the tune cache: the default configuration");
+  cmd->add_option("--combined-min-width", a->combined_min_width,
+                  "combined:*: triangles with a narrower box (pixels) go by Phong per pixel (default 2^(K+1), auto 8; 0: none)");
+  cmd->add_flag("--highlight-test", a->highlight_test,
+                "combined:*: skip the specular term per triangle and light where no highlight can fall (SEEDS §8)");
   cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
   cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");
   cmd->add_flag("-q,--quiet", a->quiet, "No progress line");

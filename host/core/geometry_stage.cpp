@@ -288,8 +288,9 @@ glm::mat4 view_projection(const Scene& scene) {
 
 void build_screen_geometry(const Scene& scene, const GeometryRequest& request, ScreenGeometry& g) {
   const Method method = request.method;
-  const Needs needs{method == Method::flat || method == Method::phong || request.for_reference,
-                    method == Method::phong || request.for_reference, method == Method::gouraud,
+  const bool per_pixel = method == Method::phong || method == Method::combined;
+  const Needs needs{method == Method::flat || per_pixel || request.for_reference,
+                    per_pixel || request.for_reference, method == Method::gouraud,
                     method == Method::flat};
   const VertexLighting lighting(scene);
   const glm::mat4 vp = view_projection(scene);

@@ -1,5 +1,6 @@
 #include "parashade/method.hpp"
 
+#include "parashade/combined.hpp"
 #include "parashade/errors.hpp"
 
 namespace parashade {
@@ -8,7 +9,11 @@ Method parse_method(const std::string& name) {
   if (name == "flat") return Method::flat;
   if (name == "gouraud") return Method::gouraud;
   if (name == "phong") return Method::phong;
-  throw UsageError("unknown method '" + name + "' (valid: flat, gouraud, phong)");
+  if (name.compare(0, 9, "combined:") == 0) {
+    parse_combined(name);  // validates K
+    return Method::combined;
+  }
+  throw UsageError("unknown method '" + name + "' (valid: flat, gouraud, phong, combined:K (K = 0..6), combined:auto)");
 }
 
 const char* method_name(Method m) {
@@ -16,6 +21,7 @@ const char* method_name(Method m) {
     case Method::flat: return "flat";
     case Method::gouraud: return "gouraud";
     case Method::phong: return "phong";
+    case Method::combined: return "combined";
   }
   return "?";
 }

@@ -217,7 +217,8 @@ ReferenceImage render_reference(const Scene& scene, const ScreenGeometry& g, Met
           ideal =
               weighted(b, glm::dvec3(g.color[idx.x]), glm::dvec3(g.color[idx.y]), glm::dvec3(g.color[idx.z]));
           break;
-        case Method::phong: {
+        case Method::phong:
+        case Method::combined: {  // its ideal is Phong: the error shown is the method's own
           const glm::dvec3 pos = weighted(b, w[0], w[1], w[2]);
           ideal =
               blinn_phong(scene, material, pos, shading_normal(scene, weighted(b, n[0], n[1], n[2]), pos, w));

@@ -47,7 +47,8 @@ std::size_t attribute_floats(Method method) {
   switch (method) {
     case Method::flat: return FLAT_ATTR_FLOATS;
     case Method::gouraud: return GOURAUD_ATTR_FLOATS;
-    case Method::phong: return PHONG_ATTR_FLOATS;
+    case Method::phong:
+    case Method::combined: return PHONG_ATTR_FLOATS;
   }
   return 0;
 }
@@ -176,7 +177,8 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
         }
         break;
       }
-      case Method::phong: {
+      case Method::phong:
+      case Method::combined: {  // the same planes; the kernel shades differently
         Plane n[3], q[3];
         for (int k = 0; k < 3; ++k) {
           n[k] = plane(g.normal[vid[0]][k], g.normal[vid[1]][k], g.normal[vid[2]][k]);

@@ -8,8 +8,10 @@
 #include <CL/opencl.hpp>
 
 #include "parashade/binning.hpp"
+#include "parashade/combined.hpp"
 #include "parashade/dda_coverage.hpp"
 #include "parashade/device.hpp"
+#include "parashade/highlight.hpp"
 #include "parashade/image.hpp"
 #include "parashade/method.hpp"
 #include "parashade/planner.hpp"
@@ -41,6 +43,7 @@ struct RenderOptions {
   SpecularModel specular;     // Phong: the specular model (--specular, kernels/specular_models.h)
   NormalizeMethod normalize;  // Phong: unit normals per span (--normalize, kernels/normalize_span.h)
   bool span_normalize() const { return method == Method::phong && normalize.kind != NormalizeKind::exact; }
+  CombinedConfig combined;    // Method::combined: segment length or auto with its error budget
   bool unit_path() const { return units.has_value() || arith.fixed || dda_coverage; }
   UnitConfig unit() const { return units.value_or(UnitConfig{}); }
 };
@@ -69,6 +72,7 @@ struct FrameStats {
   std::uint64_t parity_dropped = 0;  // sierpinski: triangles degenerate after vertex parity normalization
   std::uint64_t sierpinski_whole = 0;  // sierpinski :touch/:overlap: too small to halve, shaded whole
   std::optional<PlanReport> plan;    // with a plan: the modeled per-unit load
+  HighlightMarks highlight;          // combined with the highlight-presence test
 };
 
 struct Frame {

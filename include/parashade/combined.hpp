@@ -1,0 +1,50 @@
+#pragma once
+// Combined Gouraud/Phong shading on digital segments (SEEDS §6, docs/combined.md): exact Blinn–Phong
+// at the ends of segments of 2^k pixels along each span, linear interpolation inside. Here: the
+// method's parameters and the worst-case error bounds that `combined:auto` chooses k from.
+#include <string>
+
+#include "parashade/scene.hpp"
+
+namespace parashade {
+
+struct CombinedConfig {
+  int k = 2;               // segment length 2^k pixels (fixed k)
+  bool automatic = false;  // k per span from the error bound (combined:auto)
+  double max_error = 1.0;  // auto: budget in 8-bit levels for the 8-bit image against Phong
+  // Highlight-presence test (highlight.hpp): per triangle, skip the specular term of the lights that
+  // cannot add more than negligible_specular levels anywhere in it.
+  bool highlight_test = false;
+  // Triangles with a narrower bounding box go by Phong per pixel (-1: 2^(k+1), 8 for auto; 0: none).
+  int min_width = -1;
+  double negligible_specular = 0.05;
+};
+
+constexpr int kCombinedMaxK = 6;  // longest segment 64 pixels
+
+// "combined:K" (K = 0..kCombinedMaxK) or "combined:auto"; throws UsageError otherwise.
+CombinedConfig parse_combined(const std::string& method_text);
+std::string combined_name(const CombinedConfig& c);
+
+// Worst-case |exact - chord| of one segment for a term max(0, A cos(theta - theta0))^n (A <= 1) whose
+// end normals are phi apart on a great circle, the chord linear in the angle (docs/combined.md §2).
+// n = 1 is the diffuse term.
+double chord_error_bound(double phi, double n);
+// Largest |d/dtheta max(0, cos theta)^n| (n >= 1): how fast a misplaced angle changes the term.
+double term_slope_bound(double n);
+// Largest |atan(u tan(phi/2)) - u phi/2| over u in [-1, 1]: how far the normalized chord point is from
+// the point uniform in angle.
+double nonuniform_angle(double phi);
+// The same bound for a segment whose unnormalized end normals N_a, N_b = N_a + w satisfy
+// |w| <= psi * min|N| over the segment: phi <= asin(psi), and the chord's parameter is off the
+// angle's by at most delta = (sqrt(rho) - 1) / (sqrt(rho) + 1), rho = 1 + psi (docs/combined.md §3).
+// Returns 1 (the whole range of a term) for psi >= 1.
+double segment_term_bound(double psi, double n);
+// Worst-case error in 8-bit levels (largest channel) of one pixel of material m under the scene's
+// lights when every segment has relative normal change <= psi; L and H are taken as constant along a
+// segment (exact for directional lights and a distant viewer).
+double segment_error_levels(const Scene& s, const Material& m, double psi);
+// The largest psi whose segment_error_levels stays <= budget levels (0 when none does).
+double psi_limit(const Scene& s, const Material& m, double budget_levels);
+
+}  // namespace parashade

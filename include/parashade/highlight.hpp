@@ -1,0 +1,35 @@
+#pragma once
+// Highlight-presence test (SEEDS §8): may a triangle show a specular highlight? Its shaded normals are
+// normalized interpolations of its vertex normals, so they lie in the spherical triangle of the unit
+// vertex normals (for barycentric weights >= 0). With a directional light and a distant viewer H is
+// constant, and the largest N.H over that spherical triangle bounds the specular term.
+#include <cstddef>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "parashade/scene.hpp"
+#include "parashade/screen_geometry.hpp"
+
+namespace parashade {
+
+struct HighlightMarks {
+  std::uint64_t triangles = 0;           // triangles tested
+  std::uint64_t without_highlight = 0;   // no light's specular term can reach `negligible` levels
+  std::uint64_t light_terms_skipped = 0; // (triangle, light) pairs whose specular term is skipped
+};
+
+// For every screen triangle t, writes into attributes[t * stride + slot] the bit mask of the lights whose
+// specular term must be evaluated: light l is left out when 255 * max_c(I_l,c k_s,c) * max(0, N.H)^n
+// <= negligible_levels for every shaded normal N and halfway vector H of the triangle. For point lights
+// and a local viewer H varies: it stays within a cone around H_c from the vertices' L and V cones
+// (docs/combined.md §5).
+HighlightMarks mark_highlights(const Scene& s, const ScreenGeometry& g, float* attributes, std::size_t stride, int slot,
+                               double negligible_levels);
+
+// max over N = normalize(b0 n0 + b1 n1 + b2 n2), b >= 0, of N.h (n0..n2 and h unit vectors). The maximum
+// is at a vertex, on an edge's great arc (where h's projection on the arc's plane falls between its
+// ends), or 1 when h itself lies in the spherical triangle.
+double max_cosine_over_normals(const glm::dvec3& n0, const glm::dvec3& n1, const glm::dvec3& n2, const glm::dvec3& h);
+
+}  // namespace parashade

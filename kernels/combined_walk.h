@@ -1,0 +1,99 @@
+/* The combined method's walk of one triangle in one tile (method_combined.h), included by
+ * render_tiles.cl after depth_test() and keep(). Per block of VEC rows (rows as lanes):
+ * 1. each row's whole span [xl, xr] (segment ends are counted from xl, so a span crossing tiles
+ *    gives the same pixels in every tile) and its part [sl, sr] in the tile;
+ * 2. rows with no pixel passing the depth test are dropped (occluded triangles cost no shading);
+ * 3. the exact intensity at the segment ends the tile needs, one vector of rows per end column;
+ * 4. per row: depth test and the linear interpolation between the two ends of each pixel's segment. */
+#ifndef PARASHADE_COMBINED_WALK_H
+#define PARASHADE_COMBINED_WALK_H
+
+INLINE void shade_triangle_combined(__global const TriangleGeometry* t, __global const float* attr, int tile_x,
+                                    int tile_y, int row_first, int row_last, int lo, int hi, floatV* depth,
+                                    floatV* cr, floatV* cg, floatV* cb, __constant float4* lights,
+                                    __constant float4* materials, float4 viewer) {
+  const int x0 = t->x0, y0 = t->y0;
+  const intV lane = LANE_INDEX;
+  const float psi_limit = materials[3 * (int)attr[PHONG_MATERIAL_SLOT] + 2].w;
+  int xl_[VEC], xr_[VEC], sl_[VEC], sr_[VEC], k_[VEC], first_[VEC], visible_[VEC];
+  float end_r[SEG_END_COLUMNS * VEC], end_g[SEG_END_COLUMNS * VEC], end_b[SEG_END_COLUMNS * VEC];
+  for (int block = row_first; block <= row_last; block += VEC) {
+    const int rows = min(VEC, row_last - block + 1);
+    const intV dy = lane + (block - y0);
+    intV xl, xr;
+    if (t->flags & TRIANGLE_SMALL) row_spans_small(t, dy, &xl, &xr, 0, t->x1 - x0);
+    else row_spans(t, dy, &xl, &xr, 0, t->x1 - x0);
+    const intV sl = max(xl, (intV)lo), sr = min(xr, (intV)hi);
+    vstoreV(xl, 0, xl_);
+    vstoreV(xr, 0, xr_);
+    vstoreV(sl, 0, sl_);
+    vstoreV(sr, 0, sr_);
+
+    /* 2. Visible rows: a pixel in the tile passes the depth test (the test proper comes in step 4). */
+    int any_visible = 0;
+    for (int j = 0; j < VEC; ++j) {
+      int vis = 0;
+      if (j < rows && sl_[j] <= sr_[j]) {
+        const int py = block + j;
+        for (int s = (sl_[j] + x0 - tile_x) / VEC; s <= (sr_[j] + x0 - tile_x) / VEC && !vis; ++s) {
+          const intV rel = lane + (tile_x + s * VEC - x0);
+          const floatV z = (floatV)(t->z_ref + t->z_ddy * (float)(py - y0)) + t->z_ddx * convert_floatV(rel);
+          vis = any((rel >= sl_[j]) & (rel <= sr_[j]) & isless(z, depth[(py - tile_y) * SEGMENTS + s]));
+        }
+      }
+      visible_[j] = vis;
+      any_visible |= vis;
+    }
+    if (!any_visible) continue;
+
+    /* 3. End columns: row j needs ends m = first_j .. last_j + 1 of its segments (m counted from xl). */
+    const floatV fdy = convert_floatV(dy);
+    const intV k = segment_log2(attr, fdy, xl, xr, psi_limit);
+    const intV first = (sl - xl) >> k;
+    vstoreV(k, 0, k_);
+    vstoreV(first, 0, first_);
+    int columns = 0;
+    for (int j = 0; j < VEC; ++j)
+      if (visible_[j]) columns = max(columns, ((sr_[j] - xl_[j]) >> k_[j]) - first_[j] + 2);
+    for (int c = 0; c < columns; ++c) {
+      const intV at = xl + ((first + c) << k);
+      floatV r, g, b;
+      shade_points(attr, fdy, convert_floatV(at), &r, &g, &b, lights, materials, viewer);
+      vstoreV(r, 0, end_r + c * VEC);
+      vstoreV(g, 0, end_g + c * VEC);
+      vstoreV(b, 0, end_b + c * VEC);
+    }
+
+    /* 4. Per row: I = I_a + (I_b - I_a) * v / 2^K between the ends of each pixel's segment. */
+    for (int j = 0; j < rows; ++j) {
+      if (!visible_[j]) continue;
+      const int py = block + j, kj = k_[j], row_xl = xl_[j], row_sl = sl_[j], row_sr = sr_[j];
+      const float step = 1.0f / (float)(1 << kj);
+      for (int s = (row_sl + x0 - tile_x) / VEC; s <= (row_sr + x0 - tile_x) / VEC; ++s) {
+        const intV rel = lane + (tile_x + s * VEC - x0);
+        const int slot = (py - tile_y) * SEGMENTS + s;
+        const intV pass = depth_test(t, py - y0, convert_floatV(rel), (rel >= row_sl) & (rel <= row_sr), &depth[slot]);
+        if (!any(pass)) continue;
+        const intV i = rel - row_xl;
+        const intV column = (i >> kj) - first_[j];
+        const floatV w = convert_floatV(i & ((1 << kj) - 1)) * step;
+        /* The columns the chunk's covered lanes use (lanes are in increasing x). */
+        const int c_lo = ((max(row_sl, tile_x + s * VEC - x0) - row_xl) >> kj) - first_[j];
+        const int c_hi = ((min(row_sr, tile_x + s * VEC + VEC - 1 - x0) - row_xl) >> kj) - first_[j];
+        floatV ar = 0.0f, ag = 0.0f, ab = 0.0f, br = 0.0f, bg = 0.0f, bb = 0.0f;
+        for (int c = c_lo; c <= c_hi; ++c) {
+          const intV here = column == c;
+          ar = select(ar, (floatV)end_r[c * VEC + j], here);
+          ag = select(ag, (floatV)end_g[c * VEC + j], here);
+          ab = select(ab, (floatV)end_b[c * VEC + j], here);
+          br = select(br, (floatV)end_r[(c + 1) * VEC + j], here);
+          bg = select(bg, (floatV)end_g[(c + 1) * VEC + j], here);
+          bb = select(bb, (floatV)end_b[(c + 1) * VEC + j], here);
+        }
+        keep(pass, ar + (br - ar) * w, ag + (bg - ag) * w, ab + (bb - ab) * w, &cr[slot], &cg[slot], &cb[slot]);
+      }
+    }
+  }
+}
+
+#endif

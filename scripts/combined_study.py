@@ -1,0 +1,118 @@
+#!/usr/bin/env python3
+"""Speed against error of the combined Gouraud/Phong method (docs/combined.md): renders each scene with
+phong, gouraud, combined:K and combined:auto at several budgets through `parashade render --report`,
+in rounds (methods interleaved, so load from other processes spreads over all of them), and prints a
+Markdown table with frame and kernel time, their ratio to Phong's from the same round (median over the
+rounds), and the error against Phong (the method's ideal: screen-space Phong in double) and against
+exact (perspective-correct) Phong. With --json it also writes the measurements and the source claims
+(SEEDS §6: combined k = 2 1.3x / 1.8x, k = 3 1.48x / 2.09x) as {claim, source, measured}. Example:
+
+    scripts/combined_study.py --scenes scenes/teapot.json scenes/bunny.json --frames 11 --json combined.json
+"""
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+
+DEFAULT_METHODS = ["phong", "gouraud", "combined:1", "combined:2", "combined:3", "combined:4",
+                   "combined:3 --combined-min-width 0", "combined:auto@1", "combined:auto@2", "combined:auto@4",
+                   "combined:auto@1 --highlight-test", "combined:auto@2 --highlight-test",
+                   "combined:0 --highlight-test"]
+
+
+def run(binary, scene, method, frames, device, tmp):
+    words = method.split()
+    name, _, budget = words[0].partition("@")
+    report = os.path.join(tmp, "r.json")
+    cmd = [binary, "render", scene, "-o", os.path.join(tmp, "out.png"), "--method", name, "--frames", str(frames),
+           "--report", report, "-q"]
+    if budget:
+        cmd += ["--max-error", budget]
+    cmd += words[1:]
+    if device:
+        cmd += ["--device", device]
+    print("running:", " ".join(cmd), file=sys.stderr)
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+    with open(report) as f:
+        return json.load(f), " ".join(cmd[1:])
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--binary", default=os.path.join(os.path.dirname(__file__), "..", "build", "parashade"))
+    ap.add_argument("--scenes", nargs="+", default=["scenes/teapot.json", "scenes/bunny.json"])
+    ap.add_argument("--methods", nargs="+", default=DEFAULT_METHODS,
+                    help="method[@max-error][ extra render options], e.g. 'combined:auto@2 --highlight-test'")
+    ap.add_argument("--frames", type=int, default=11)
+    ap.add_argument("--rounds", type=int, default=1)
+    ap.add_argument("--paired", action="store_true", help="run Phong right before every other method for its ratio")
+    ap.add_argument("--device", default="")
+    ap.add_argument("--json", default="", help="write measurements and claims here")
+    args = ap.parse_args()
+
+    results, pairs, device = {}, {}, None
+    with tempfile.TemporaryDirectory() as tmp:
+        for scene in args.scenes:
+            for rnd in range(args.rounds):
+                for method in args.methods:
+                    if args.paired and method != "phong":
+                        # Phong right before each method: the ratio comes from two adjacent runs.
+                        base, _ = run(args.binary, scene, "phong", args.frames, args.device, tmp)
+                        pairs.setdefault((scene, method), []).append(base)
+                    r, cmd = run(args.binary, scene, method, args.frames, args.device, tmp)
+                    device = r["device"]
+                    results.setdefault((scene, method), []).append((rnd, r, cmd))
+
+    rows, records = [], []
+    for scene in args.scenes:
+        for method in args.methods:
+            runs = results[(scene, method)]
+            if args.paired and method != "phong":
+                base = {rnd: b for (rnd, _, _), b in zip(runs, pairs[(scene, method)])}
+            else:
+                base = {rnd: r for rnd, r, _ in results[(scene, "phong")]}
+            frame = statistics.median(r["frame_ms"] for _, r, _ in runs)
+            kernel = statistics.median(r["stages_ms"]["kernel_ms"] for _, r, _ in runs)
+            speed = statistics.median(base[rnd]["frame_ms"] / r["frame_ms"] for rnd, r, _ in runs)
+            kspeed = statistics.median(base[rnd]["stages_ms"]["kernel_ms"] / r["stages_ms"]["kernel_ms"] for rnd, r, _ in runs)
+            r, cmd = runs[-1][1], runs[-1][2]
+            own, exact = r["error"]["implementation"], r["error"]["method"]
+            budget = method.split()[0].partition("@")[2]
+            within = "" if not budget else ("yes" if own["max_abs"] <= float(budget) else "no")
+            rows.append(f"| {r['scene']} | {method.replace('@', ' @')} | {frame:.1f} | {kernel:.1f} | {speed:.2f} | {kspeed:.2f} "
+                        f"| {own['max_abs']:.2f} / {own['nmse']:.1e} / {own['pixels_over_1_level']} {within}"
+                        f"| {exact['max_abs']:.2f} / {exact['nmse']:.1e} |")
+            records.append({"scene": r["scene"], "method": method, "command": "parashade " + cmd, "frame_ms": frame,
+                            "kernel_ms": kernel, "speedup_vs_phong_frame": speed, "speedup_vs_phong_kernel": kspeed,
+                            "error_vs_phong": own, "error_vs_exact_phong": exact, "width": r["width"],
+                            "height": r["height"]})
+    header = (f"Device: {device['name']} ({device['platform']}), {device['compute_units']} compute units. "
+              f"Median of {args.frames} frames after 1 warm-up; ratios to Phong from "
+              f"{'the Phong run right before it' if args.paired else 'the same round'}, median of {args.rounds} round(s).\n\n"
+              "| scene | method | frame ms | kernel ms | speed-up vs Phong (frame) | (kernel) | vs Phong: max levels / NMSE / "
+              "px > 1 level, within budget | vs exact Phong: max / NMSE |\n|---|---|---|---|---|---|---|---|")
+    print(header)
+    print("\n".join(rows))
+    if args.json:
+        claims = []
+        for k, diffuse, with_linear in ((2, 1.3, 1.8), (3, 1.48, 2.09)):
+            for rec in records:
+                if rec["method"] == f"combined:{k}":
+                    claims.append({"claim": f"combined-k{k}-speedup", "source": "SEEDS §6 (001)",
+                                   "source_figure": f"{diffuse}x (diffuse), {with_linear}x with the linear normal approximation",
+                                   "scene": rec["scene"], "measured_figure": rec["speedup_vs_phong_frame"],
+                                   "measured_kernel_figure": rec["speedup_vs_phong_kernel"],
+                                   "note": "speed-up of the whole frame (and of the kernel) against --method phong, "
+                                           + ("the Phong run right before" if args.paired else "same round")
+                                           + "; shared, loaded machine"})
+        with open(args.json, "w") as f:
+            json.dump({"device": device, "frames": args.frames, "rounds": args.rounds, "paired": args.paired,
+                       "measurements": records,
+                       "claims": claims}, f, indent=2)
+
+
+if __name__ == "__main__":
+    main()
