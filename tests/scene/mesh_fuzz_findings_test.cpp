@@ -7,6 +7,7 @@
 
 #include "parashade/errors.hpp"
 #include "parashade/mesh.hpp"
+#include "parashade/scene.hpp"
 #include "temp_dir.hpp"
 
 namespace parashade {
@@ -132,6 +133,25 @@ TEST(FuzzFindingF6, NoffNormalsAreRead) {
   EXPECT_EQ(m.normals[0], glm::vec3(0, 0, 1));
   expect_refused("nan_normal.off", "NOFF\n3 1 0\n0 0 0 nan 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n",
                  "a vertex normal is not finite");
+}
+
+// F12 (found by the same run): a mesh file of denormal extent (1e-40) gave its bare-mesh scene a camera
+// whose view direction does not normalize (NaN image). Now refused, like the far too large (F8).
+TEST(FuzzFindingF12, MeshTooSmallToFrameIsRefused) {
+  TempDir dir;
+  for (const auto& [name, text] : {std::make_pair("tiny.obj", "v 0 0 0\nv 1e-40 0 0\nv 0 1e-40 0\nf 1 2 3\n"),
+                                   std::make_pair("far_and_tiny.obj", "v 1e6 0 0\nv 1000000.01 0 0\nv 1e6 0.01 0\nf 1 2 3\n")}) {
+    const std::filesystem::path p = dir.write(name, text);
+    try {
+      load_scene(p);
+      ADD_FAILURE() << name << " loaded";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("too small to frame"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(p.string()), std::string::npos) << e.what();
+    }
+  }
+  // Small but frameable: a millimetre-sized mesh a metre away loads.
+  EXPECT_NO_THROW(load_scene(dir.write("small.obj", "v 1 0 0\nv 1.001 0 0\nv 1 0.001 0\nf 1 2 3\n")));
 }
 
 }  // namespace
