@@ -178,6 +178,16 @@ void check_readable(const std::filesystem::path& path, const std::string& name) 
 
 }  // namespace
 
+std::string mesh_load_warning(const std::string& name, const MeshLoadStats& stats) {
+  std::string said;
+  if (stats.non_manifold_faces > 0)
+    said += std::to_string(stats.non_manifold_faces) + " non-manifold face" + (stats.non_manifold_faces == 1 ? "" : "s") + " kept";
+  if (stats.faces_dropped > 0)
+    said += (said.empty() ? "" : ", ") + std::to_string(stats.faces_dropped) + " face" +
+            (stats.faces_dropped == 1 ? "" : "s") + " with a repeated vertex dropped";
+  return said.empty() ? said : name + ": " + said;
+}
+
 Mesh load_mesh(const std::filesystem::path& path, MeshLoadStats* stats_out) {
   const std::string name = path.string();
   check_readable(path, name);

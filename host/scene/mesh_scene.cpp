@@ -22,7 +22,8 @@ std::string short_number(double v) {
 }  // namespace
 
 Scene scene_for_mesh(const std::filesystem::path& mesh_path) {
-  auto mesh = std::make_shared<const Mesh>(load_mesh(mesh_path));
+  MeshLoadStats stats;
+  auto mesh = std::make_shared<const Mesh>(load_mesh(mesh_path, &stats));
 
   // Bounding sphere: the box centre and the farthest vertex from it, in double (squared float distances
   // overflow from ~1.8e19 on: fuzzing finding F8).
@@ -34,6 +35,7 @@ Scene scene_for_mesh(const std::filesystem::path& mesh_path) {
   if (!(radius > 0.0)) radius = 1.0;  // a single point: any distance will do
 
   Scene scene;
+  if (std::string w = mesh_load_warning(mesh_path.string(), stats); !w.empty()) scene.warnings.push_back(std::move(w));
   scene.name = mesh_path.stem().string();
   scene.source = mesh_path;
   scene.width = 1920;
