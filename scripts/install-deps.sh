@@ -1,5 +1,6 @@
 #!/bin/sh
-# Installs the Debian (bookworm) packages parashade builds, tests and benchmarks with.
+# Installs the Debian (bookworm) packages parashade builds, tests and benchmarks with (clang and its
+# runtimes: the libFuzzer targets that scripts/test.sh runs, docs/robustness.md).
 # Runs as root or through sudo; safe to run again.
 set -eu
 SUDO=""
@@ -11,4 +12,5 @@ $SUDO apt-get install -y -q --no-install-recommends \
     pocl-opencl-icd ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers clinfo \
     libglm-dev libopenmesh-dev libopenimageio-dev openimageio-tools \
     nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev \
+    clang libclang-rt-dev \
     ca-certificates
