@@ -32,17 +32,16 @@ for t in $TARGETS; do
 done
 
 if [ "${PARASHADE_FUZZ_SKIP_BUILD:-0}" != 1 ]; then
-  ./scripts/install-deps.sh
-  SUDO=""
-  if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-  # clang and its runtimes (libFuzzer, ASan, UBSan): Debian's default version (14 on bookworm).
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends clang libclang-rt-dev
+  # clang and its runtimes (libFuzzer, ASan, UBSan; Debian's default version, 14 on bookworm) are in
+  # install-deps.sh. PARASHADE_FUZZ_SKIP_INSTALL=1: test.sh installed them already.
+  if [ "${PARASHADE_FUZZ_SKIP_INSTALL:-0}" != 1 ]; then ./scripts/install-deps.sh; fi
 
   GENERATOR=""
   if command -v ninja >/dev/null 2>&1; then GENERATOR="-G Ninja"; fi
   build_start=$(date +%s)
   # shellcheck disable=SC2086  # GENERATOR is empty or two words
   cmake -S . -B build-fuzz $GENERATOR -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+        ${PARASHADE_FUZZ_CMAKE_ARGS:-} \
         -DPARASHADE_FUZZ=ON -DPARASHADE_BUILD_TESTS=OFF -DPARASHADE_BUILD_BENCH=OFF
   cmake --build build-fuzz --target fuzz_targets --parallel "$(nproc)"
   echo "fuzz.sh: targets built in $(( $(date +%s) - build_start )) s"

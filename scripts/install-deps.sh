@@ -1,5 +1,6 @@
 #!/bin/sh
-# Installs the Debian (bookworm) packages parashade builds, tests and benchmarks with.
+# Installs the Debian (bookworm) packages parashade builds, tests and benchmarks with (clang and its
+# runtimes: the libFuzzer targets that scripts/test.sh runs, docs/robustness.md).
 # Runs as root or through sudo; safe to run again. scripts/report.py (plots) also needs python3-matplotlib,
 # which CI does not install.
 set -eu
@@ -13,4 +14,5 @@ $SUDO apt-get install -y -q --no-install-recommends \
     libglm-dev libopenmesh-dev libopenimageio-dev openimageio-tools \
     nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev \
     libegl-dev libgl-dev libgl1-mesa-dri python3 \
+    clang libclang-rt-dev \
     ca-certificates

@@ -7,7 +7,7 @@
 # See docs/robustness.md for the sanitizer options and why they are what they are.
 set -eu
 cd "$(dirname "$0")/.."
-./scripts/install-deps.sh
+if [ "${PARASHADE_SANITIZE_SKIP_INSTALL:-0}" != 1 ]; then ./scripts/install-deps.sh; fi
 
 GENERATOR=""
 if command -v ninja >/dev/null 2>&1; then GENERATOR="-G Ninja"; fi

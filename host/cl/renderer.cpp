@@ -140,7 +140,8 @@ cl::Buffer& Renderer::ensure(cl::Buffer& buffer, std::size_t& capacity, std::siz
     if (bytes > device_.info().max_allocation)
       throw DeviceError("a buffer of " + std::to_string(bytes) + " bytes exceeds the device's largest allocation (" +
                         std::to_string(device_.info().max_allocation) + " bytes) on '" + device_.info().name + "'");
-    const std::size_t grown = std::max(bytes, capacity + capacity / 2);
+    // Grow by half to spare reallocations, but never past what the device can allocate in one buffer.
+    const std::size_t grown = std::min<std::size_t>(std::max(bytes, capacity + capacity / 2), device_.info().max_allocation);
     buffer = cl::Buffer(device_.context(), flags | CL_MEM_ALLOC_HOST_PTR, grown);
     capacity = grown;
   }

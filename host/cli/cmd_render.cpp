@@ -104,6 +104,7 @@ int run_render(const RenderArgs& a) {
   if (a.frames < 1) throw UsageError("--frames must be at least 1");
   if (a.warmup < 0) throw UsageError("--warmup must not be negative");
   Scene scene = load_scene_at(a.scene, size, a.size);
+  for (const std::string& w : scene.warnings) std::cerr << "parashade: warning: " << w << "\n";
   // Fail on an unwritable output before the work, not after it.
   const std::filesystem::path out_path(a.output);
   check_image_destination(out_path);
@@ -277,7 +278,7 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("--frames", a->frames, "Timed frames; the median is reported")->capture_default_str();
   cmd->add_option("--warmup", a->warmup, "Untimed frames first (program build, work-group compilation)")
       ->capture_default_str();
-  cmd->add_option("--tile", a->tile, "Screen tile size: 16, 32 or 64")->capture_default_str();
+  cmd->add_option("--tile", a->tile, "Screen tile size: 16, 32 or 64")->capture_default_str()->check(CLI::IsMember({16, 32, 64}));
   cmd->add_option("--work-items", a->work_items,
                   "Kernel work-items, each rendering every N-th tile (0: 16 per compute unit)")
       ->capture_default_str();

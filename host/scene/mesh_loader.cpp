@@ -11,6 +11,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@
 #include <OpenMesh/Core/System/omstream.hh>
 
 #include "mesh_file_scan.hpp"
+#include "off_reader.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/mesh.hpp"
 
@@ -36,7 +38,7 @@ using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<>;
 // triangles). Normals are collected per face corner: a file may give one vertex several.
 class CollectingImporter : public OpenMesh::IO::ImporterT<PolyMesh> {
  public:
-  // detect_truncation: OpenMesh's OFF and PLY readers repeat the last face when the file ends early.
+  // detect_truncation: OpenMesh's PLY reader repeats the last face when the file ends early.
   CollectingImporter(PolyMesh& mesh, bool detect_truncation)
       : ImporterT(mesh), mesh_(mesh), detect_truncation_(detect_truncation) {}
 
@@ -70,16 +72,31 @@ class CollectingImporter : public OpenMesh::IO::ImporterT<PolyMesh> {
     return face;
   }
 
+  using ImporterT::add_vertex;
+  OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3f& p) override {
+    ++vertices_added;
+    return ImporterT::add_vertex(p);
+  }
+  OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3d& p) override {
+    ++vertices_added;
+    return ImporterT::add_vertex(p);
+  }
+
+  // OpenMesh's OBJ reader passes handles it never range-checked; ImporterT writes through them unchecked
+  // (fuzzing finding F1: a heap overflow). Such a normal is an error, not a write.
   void set_normal(OpenMesh::VertexHandle v, const OpenMesh::Vec3f& n) override {
+    if (!known(v)) return;
     collect_normal(v, glm::dvec3(n[0], n[1], n[2]));
     ImporterT::set_normal(v, n);
   }
   void set_normal(OpenMesh::VertexHandle v, const OpenMesh::Vec3d& n) override {
+    if (!known(v)) return;
     collect_normal(v, glm::dvec3(n[0], n[1], n[2]));
     ImporterT::set_normal(v, n);
   }
 
   std::size_t faces_seen = 0;
+  std::size_t vertices_added = 0;
   std::size_t non_manifold_faces = 0;
   std::string error;                         // the first malformed face; reported after reading
   std::vector<std::size_t> polygon_start;    // accepted faces, as offsets into polygon_corners
@@ -88,6 +105,14 @@ class CollectingImporter : public OpenMesh::IO::ImporterT<PolyMesh> {
   bool non_finite_normal = false;
 
  private:
+  bool known(OpenMesh::VertexHandle v) {
+    if (v.is_valid() && static_cast<std::size_t>(v.idx()) < mesh_.n_vertices()) return true;
+    if (error.empty())
+      error = "a normal is given to vertex " + std::to_string(v.idx()) + " (the reader has " +
+              std::to_string(mesh_.n_vertices()) + ")";
+    return false;
+  }
+
   void collect_normal(OpenMesh::VertexHandle v, glm::dvec3 n) {
     if (!v.is_valid()) return;
     const auto i = static_cast<std::size_t>(v.idx());
@@ -153,28 +178,52 @@ void check_readable(const std::filesystem::path& path, const std::string& name) 
 
 }  // namespace
 
+std::string mesh_load_warning(const std::string& name, const MeshLoadStats& stats) {
+  std::string said;
+  if (stats.non_manifold_faces > 0)
+    said += std::to_string(stats.non_manifold_faces) + " non-manifold face" + (stats.non_manifold_faces == 1 ? "" : "s") + " kept";
+  if (stats.faces_dropped > 0)
+    said += (said.empty() ? "" : ", ") + std::to_string(stats.faces_dropped) + " face" +
+            (stats.faces_dropped == 1 ? "" : "s") + " with a repeated vertex dropped";
+  return said.empty() ? said : name + ": " + said;
+}
+
 Mesh load_mesh(const std::filesystem::path& path, MeshLoadStats* stats_out) {
   const std::string name = path.string();
   check_readable(path, name);
   const std::string ext = lower_extension(path);
 
-  // Faces as the file has them (OBJ, text OFF, STL), for the dropped count; PLY counts as its reader reports.
+  // Faces as the file has them (OBJ, OFF, STL), for the dropped count; PLY counts as its reader reports.
   std::size_t faces_in_file = 0;
-  if (ext == ".obj") faces_in_file = detail::check_obj(path).faces;
-  if (ext == ".off") faces_in_file = detail::check_off(path);
+  detail::ObjSummary obj;
+  if (ext == ".obj") faces_in_file = (obj = detail::check_obj(path)).faces;
+  if (ext == ".ply") detail::check_ply(path);
   if (ext == ".stl") faces_in_file = detail::count_stl_facets(path);
 
   PolyMesh poly;
   poly.request_vertex_normals();
-  CollectingImporter importer(poly, ext == ".off" || ext == ".ply");
+  CollectingImporter importer(poly, ext == ".ply");
   OpenMesh::IO::Options options = OpenMesh::IO::Options::VertexNormal;
   bool read_ok = false;
-  {
-    QuietOpenMeshLogs quiet;
-    read_ok = OpenMesh::IO::IOManager().read(name, importer, options);
+  try {
+    if (ext == ".off") {
+      faces_in_file = detail::read_off(path, importer);
+      read_ok = true;
+    } else {
+      QuietOpenMeshLogs quiet;
+      read_ok = OpenMesh::IO::IOManager().read(name, importer, options);
+    }
+  } catch (const std::bad_alloc&) {
+    // The scans bound every count by the file's size, so this is a file too large for this machine.
+    throw InputError(name + ": out of memory reading a file of " + std::to_string(std::filesystem::file_size(path)) +
+                     " bytes (" + std::to_string(poly.n_vertices()) + " vertices and " +
+                     std::to_string(importer.faces_seen) + " faces read so far)");
   }
   if (!read_ok) throw InputError(name + ": cannot parse as " + ext.substr(1) + " (OpenMesh's reader failed)");
   if (!importer.error.empty()) throw InputError(name + ": " + importer.error);
+  if (ext == ".obj" && importer.vertices_added != obj.vertices)
+    throw InputError(name + ": OpenMesh's reader found " + std::to_string(importer.vertices_added) +
+                     " vertices where the file has " + std::to_string(obj.vertices) + " (a vertex line it cannot read)");
   if (importer.non_finite_normal) throw InputError(name + ": a vertex normal is not finite");
 
   MeshLoadStats stats;

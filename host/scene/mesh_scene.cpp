@@ -2,14 +2,28 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <sstream>
+#include <string>
 
 #include "parashade/errors.hpp"
 #include "parashade/scene.hpp"
 
 namespace parashade {
 
+namespace {
+
+std::string short_number(double v) {
+  std::ostringstream s;
+  s.precision(3);
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
 Scene scene_for_mesh(const std::filesystem::path& mesh_path) {
-  auto mesh = std::make_shared<const Mesh>(load_mesh(mesh_path));
+  MeshLoadStats stats;
+  auto mesh = std::make_shared<const Mesh>(load_mesh(mesh_path, &stats));
 
   // Bounding sphere: the box centre and the farthest vertex from it, in double (squared float distances
   // overflow from ~1.8e19 on: fuzzing finding F8).
@@ -21,6 +35,7 @@ Scene scene_for_mesh(const std::filesystem::path& mesh_path) {
   if (!(radius > 0.0)) radius = 1.0;  // a single point: any distance will do
 
   Scene scene;
+  if (std::string w = mesh_load_warning(mesh_path.string(), stats); !w.empty()) scene.warnings.push_back(std::move(w));
   scene.name = mesh_path.stem().string();
   scene.source = mesh_path;
   scene.width = 1920;
@@ -40,6 +55,14 @@ Scene scene_for_mesh(const std::filesystem::path& mesh_path) {
   if (!(radius < kLargest && glm::length(centre) < kLargest))
     throw InputError("'" + mesh_path.string() + "': coordinates reach " + std::to_string(glm::length(centre) + radius) +
                      ", beyond the 1e18 that single-precision shading can take");
+  // Too small to frame: the camera's offset from the target would underflow or vanish next to the
+  // target's own coordinates in single precision (fuzzing finding F12: a view direction of 1e-40).
+  const double magnitude = std::max({std::abs(centre.x), std::abs(centre.y), std::abs(centre.z)});
+  constexpr double kSmallest = 1e-18, kRelative = 1e-5;
+  if (!(radius >= kSmallest && radius >= kRelative * magnitude))
+    throw InputError("'" + mesh_path.string() + "': the mesh spans only " + short_number(2 * radius) + " at " +
+                     short_number(magnitude) + " from the origin, too small to frame in single precision (it must span at least 1e-18 "
+                     "and 1e-5 of its distance from the origin)");
   const double distance = 1.15 * radius / std::sin(glm::radians(0.5 * double(cam.fov_y_degrees)));
   const glm::dvec3 position = centre + distance * glm::normalize(glm::dvec3(0.0, 0.25, 1.0));
   const double far_plane = 2.0 * (distance + radius);

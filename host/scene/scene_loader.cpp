@@ -80,6 +80,8 @@ std::string expand_variables(const JsonValue& where, const std::string& text) {
 // Shapes and meshes already built for this scene, so equal specifications share one Mesh.
 class MeshCache {
  public:
+  std::vector<std::string> warnings;  // of the meshes loaded, once per file
+
   std::shared_ptr<const Mesh> get(const std::string& key, const std::function<Mesh()>& build) {
     auto& slot = meshes_[key];
     if (!slot) slot = std::make_shared<const Mesh>(build());
@@ -168,7 +170,10 @@ std::shared_ptr<const Mesh> read_mesh_path(const JsonValue& v, const std::filesy
   path = path.lexically_normal();
   return cache.get("mesh " + path.string(), [&] {
     try {
-      return load_mesh(path);
+      MeshLoadStats stats;
+      Mesh mesh = load_mesh(path, &stats);
+      if (std::string w = mesh_load_warning(path.string(), stats); !w.empty()) cache.warnings.push_back(std::move(w));
+      return mesh;
     } catch (const InputError& e) {
       v.fail(e.what());
     }
@@ -349,6 +354,7 @@ Scene read_scene(const nlohmann::json& doc, const std::filesystem::path& path) {
   const std::vector<JsonValue> objects = top.required("objects").array(1);
   for (std::size_t i = 0; i < objects.size(); ++i)
     scene.objects.push_back(read_object(objects[i], i, materials, scene, folder, cache));
+  scene.warnings = cache.warnings;
   if (const auto x = top.optional("cull_backfaces")) scene.cull_backfaces = x->boolean();
   if (const auto x = top.optional("viewer")) scene.local_viewer = x->choice({"local", "infinite"}) == "local";
   top.finish();

@@ -34,6 +34,11 @@ struct MeshLoadStats {
 // STL files carry only facet normals, so their vertex normals are always computed.
 Mesh load_mesh(const std::filesystem::path& path, MeshLoadStats* stats = nullptr);
 
+// What a user should hear about a mesh that loaded: "<name>: N non-manifold faces kept, M faces with a
+// repeated vertex dropped"; empty when there is nothing to say. Non-manifold meshes are accepted (a
+// renderer needs triangles, not a manifold), with this warning and the count.
+std::string mesh_load_warning(const std::string& name, const MeshLoadStats& stats);
+
 // Vertex normal = normalized sum of the area-weighted normals of the faces around it. A zero-area face
 // contributes nothing; a vertex with no face of non-zero area gets (0, 0, 1). Never produces NaN.
 void compute_vertex_normals(Mesh& mesh);

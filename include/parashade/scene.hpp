@@ -64,6 +64,7 @@ struct Scene {
   std::vector<Object> objects;
   bool cull_backfaces = false;
   bool local_viewer = true;       // false: V is the constant view direction (infinite viewer)
+  std::vector<std::string> warnings;  // what loading accepted but the user should hear (mesh_load_warning)
 
   std::size_t triangle_count() const;
 };

@@ -248,7 +248,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadFile{"nan.off", "OFF\n3 1 0\n0 nan 0\n1 0 0\n0 1 0\n3 0 1 2\n", ":3: vertex has a non-finite"},
                       BadFile{"two_vertices.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", "face has 2 vertices"},
                       BadFile{"not.off", "hello\n", "no OFF header"},
-                      BadFile{"not.ply", "hello\n", "cannot parse"},
+                      BadFile{"not.ply", "hello\n", ":1: no 'ply' magic line"},
                       BadFile{"text.stl", "hello\n", "no faces"},
                       BadFile{"mesh.xyz", "v 0 0 0\n", "unknown mesh format '.xyz'"}),
     [](const auto& info) {
@@ -262,7 +262,7 @@ TEST(LoadMeshPly, MalformedFacesAreRefused) {
   TempDir dir;
   for (const auto& [name, faces, says] :
        {std::make_tuple("bad_index.ply", "3 0 1 2\n3 0 1 9\n", "refers to vertex 9"),
-        std::make_tuple("truncated.ply", "3 0 1 2\n", "looks truncated"),
+        std::make_tuple("truncated.ply", "3 0 1 2\n", "face record 1: the file ends early"),
         std::make_tuple("two_vertices.ply", "3 0 1 2\n2 0 1\n", "a face has 2 vertices")}) {
     const std::filesystem::path p = dir.write(name, std::string(kPlyHeader) + "0 0 0\n1 0 0\n0 1 0\n" + faces);
     try {
