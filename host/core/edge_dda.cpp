@@ -40,7 +40,7 @@ DdaSpans dda_spans(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
   const int y1 = std::max({a.y, b.y, c.y});
   s.rows.assign(std::size_t(y1 - s.y0) + 1, glm::ivec2(INT32_MAX, INT32_MIN));
   for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}}) {
-    for (const glm::ivec2 px : dda_segment(p, q)) {
+    for (const glm::ivec2& px : dda_segment(p, q)) {
       glm::ivec2& row = s.rows[std::size_t(px.y - s.y0)];
       row = {std::min(row.x, px.x), std::max(row.y, px.x)};
     }

@@ -89,7 +89,7 @@ class PlyHeaderChecker {
       } else if (keyword == "element") {
         if (tokens.size() != 3) fail("element line needs a name and a count");
         if (elements_.size() >= kMaxElements) fail("more than " + std::to_string(kMaxElements) + " elements");
-        elements_.push_back({tokens[1], count(tokens[2]), 0, 0});
+        elements_.push_back({tokens[1], count(tokens[2]), 0, 0, {}});
       } else if (keyword == "property") {
         add_property(tokens);
       } else {
