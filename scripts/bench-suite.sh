@@ -1,7 +1,8 @@
 #!/bin/sh
 # The benchmark suite in one command: parashade against Mesa llvmpipe (bench_llvmpipe), the modeled
 # units' scaling sweep (parashade scaling), standalone peak memory (parashade render under
-# /usr/bin/time), then the report (plots, image strip, claims table) when python3-matplotlib is present.
+# /usr/bin/time), the Phong family (phong-study, combined and normalization studies, bench_normalize),
+# then the report (plots, image strip, claims table) when python3-matplotlib is present.
 #   scripts/bench-suite.sh [OUT_DIR]          whole suite (sizes 1920x1080, 512x512, 3840x2160; ~1 h here)
 #   scripts/bench-suite.sh --quick [OUT_DIR]  CI subset: sphere_8k and fullscreen_quad at 512x512 (< 1 min)
 # Environment: PARASHADE_MESH_DIR (bunny, fandisk; skipped without it), PARASHADE_DEVICE, BUILD (default build).
@@ -26,6 +27,7 @@ if [ "$QUICK" = 1 ]; then
       --benchmark_min_time=0.05 \
       --benchmark_out="$OUT/peer.json" --benchmark_out_format=json >/dev/null
   "$PYTHON" scripts/check_bench_json.py "$OUT/peer.json"
+  "$BUILD/parashade" phong-study --json "$OUT/phong-study.json" >/dev/null  # ~2 s: the §7 approximation rows
   "$PYTHON" scripts/claims.py --results "$OUT" -o "$OUT/claims.md"  # the registry parses, the generator runs
   exit 0
 fi
@@ -62,6 +64,26 @@ if [ -x "$BUILD/bench/bench_span_setup" ]; then
       --benchmark_out="$OUT/span.json" --benchmark_out_format=json >/dev/null
   "$BUILD/bench/bench_span_setup" --print-table >"$OUT/span-table.txt"  # source 003's Table 1 recomputed
   "$BUILD/bench/bench_span_setup" --print-ops >"$OUT/span-ops.txt"      # operation counts, example triangle
+fi
+
+# Phong family (SEEDS §6-§8): approximation errors (parashade phong-study), the combined method's and the
+# normalization / specular variants' speed and error through render reports, the host normalization
+# methods in scalar C++ (bench_normalize), and the best variant at NMSE <= 1e-4 derived from the two studies.
+"$BUILD/parashade" phong-study --json "$OUT/phong-study.json" >/dev/null
+COMBINED_SCENES="scenes/teapot.json"
+if [ -n "${PARASHADE_MESH_DIR:-}" ]; then COMBINED_SCENES="$COMBINED_SCENES scenes/bunny.json"; fi
+# shellcheck disable=SC2086
+"$PYTHON" scripts/combined_study.py --binary "$BUILD/parashade" --scenes $COMBINED_SCENES --frames 5 --rounds 2 \
+    --methods phong gouraud combined:2 combined:3 combined:4 combined:auto@1 "combined:auto@1 --highlight-test" \
+    --json "$OUT/combined-study.json" >"$OUT/combined-study.md"
+"$PYTHON" scripts/phong_methods.py --binary "$BUILD/parashade" --scenes scenes/sphere.json scenes/teapot.json \
+    --frames 5 --json "$OUT/phong-methods.json" >"$OUT/phong-methods.md"
+"$PYTHON" scripts/best_method.py --combined "$OUT/combined-study.json" --methods "$OUT/phong-methods.json" \
+    -o "$OUT/best-method.json"
+if [ -x "$BUILD/bench/bench_normalize" ]; then
+  "$BUILD/bench/bench_normalize" --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true \
+      --benchmark_report_aggregates_only=true --benchmark_min_time=0.1 \
+      --benchmark_out="$OUT/normalize.json" --benchmark_out_format=json >/dev/null
 fi
 
 "$PYTHON" scripts/peak_memory.py --binary "$BUILD/parashade" -o "$OUT/memory.json"

@@ -162,8 +162,9 @@ def main():
         files = sorted({m["file"] for m in parts + ([c["rule"]["value_of"]] if "value_of" in c["rule"] else [])
                         if "file" in m})
         note = f" — {c['note']}" if c.get("note") else ""
-        lines.append(f"| {c['id']} | {c['section']} | {c['statement']}{note} | {c['source_figure']} | {measured} | "
-                     f"**{v}** | {', '.join(files) or '-'} |")
+        cells = [c["id"], c["section"], c["statement"] + note, c["source_figure"], measured, f"**{v}**",
+                 ", ".join(files) or "-"]
+        lines.append("| " + " | ".join(cell.replace("|", "\\|") for cell in cells) + " |")  # a '|' in a claim ends a cell
     lines += ["", "Totals: " + ", ".join(f"{k} {n}" for k, n in sorted(counts.items())), ""]
     tmp = args.output + ".tmp"
     os.makedirs(os.path.dirname(os.path.abspath(args.output)), exist_ok=True)

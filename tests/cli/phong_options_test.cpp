@@ -1,5 +1,6 @@
 // --normalize and --specular (docs/phong-methods.md): bad values and combinations are usage errors
 // naming the culprit, with nothing written; phong-study writes its JSON claims and Markdown.
+#include <cmath>
 #include <fstream>
 
 #include <gtest/gtest.h>
@@ -43,6 +44,24 @@ TEST_F(CliPhongOptions, StudyWritesClaims) {
     for (const char* key : {"id", "source", "source_figure", "measured", "verdict"}) EXPECT_TRUE(c.contains(key)) << key;
   EXPECT_EQ(j["nonfinite_spans"], 0);
   EXPECT_TRUE(std::filesystem::file_size(md) > 1000);
+  // The numbers the claims table (bench/claims.json) reads, checked by brute force here.
+  double lin = 0;  // the source's printed 0.64 - 0.07u against 1/sqrt(2+u) on [sqrt2, 2]
+  for (int i = 0; i <= 100000; ++i) {
+    const double u = std::sqrt(2.0) + (2.0 - std::sqrt(2.0)) * i / 100000.0;
+    lin = std::fmax(lin, std::fabs(0.64 - 0.07 * u - 1.0 / std::sqrt(2.0 + u)));
+  }
+  bool found = false;
+  for (const auto& a : j["approximations"])
+    if (a["function"] == "1/sqrt(2+u)" && a["name"] == "linear_source") {
+      found = true;
+      EXPECT_NEAR(a["max_abs"].get<double>(), lin, 1e-6);
+    }
+  EXPECT_TRUE(found);
+  // The printed table's last interval gives acos(1) = -33.838 + 74.547 - 40.535 = 0.174, not 0: far over 0.2 %.
+  EXPECT_GT(j["arccos_worst"]["printed_max_rel"].get<double>(), 0.002);
+  EXPECT_LE(j["arccos_worst"]["refit_max_rel"].get<double>(), j["arccos_worst"]["printed_max_rel"].get<double>());
+  const double phi = j["specular_4pct_phi_deg"]["n100"].get<double>() * std::acos(-1.0) / 180;  // 1 - cos^100(phi/2) = 4 %
+  EXPECT_NEAR(1 - std::pow(std::cos(phi / 2), 100), 0.04, 1e-9);
 }
 
 }  // namespace
