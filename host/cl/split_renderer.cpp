@@ -18,31 +18,51 @@ bool is_device_list(const std::string& selector) {
 
 namespace {
 
-// "sub:NAME:N": device NAME partitioned by clCreateSubDevices(CL_DEVICE_PARTITION_EQUALLY, N).
+// "sub:NAME:N": device NAME partitioned by clCreateSubDevices(CL_DEVICE_PARTITION_EQUALLY, N);
+// "sub:NAME:N1+N2+...": by counts (CL_DEVICE_PARTITION_BY_COUNTS), one sub-device of Nk compute units each.
 std::vector<std::unique_ptr<Device>> open_sub_devices(const std::string& selector) {
   const std::size_t colon = selector.rfind(':');
   const std::string name = selector.substr(4, colon > 4 ? colon - 4 : 0);
-  int per = 0;
-  try {
-    per = std::stoi(selector.substr(colon + 1));
-  } catch (const std::exception&) {
+  std::vector<int> counts;
+  const std::string spec = colon > 4 ? selector.substr(colon + 1) : "";
+  for (std::size_t from = 0; from <= spec.size();) {
+    const std::size_t plus = std::min(spec.find('+', from), spec.size());
+    int n = 0;
+    try {
+      std::size_t used = 0;
+      n = std::stoi(spec.substr(from, plus - from), &used);
+      if (used != plus - from) n = 0;
+    } catch (const std::exception&) {
+    }
+    counts.push_back(n);
+    from = plus + 1;
   }
-  if (name.empty() || colon <= 4 || per < 1)
-    throw UsageError("--device '" + selector + "': expected sub:NAME:N (N compute units per sub-device)");
+  const bool bad = name.empty() || counts.empty() || std::any_of(counts.begin(), counts.end(), [](int n) { return n < 1; });
+  if (bad)
+    throw UsageError("--device '" + selector +
+                     "': expected sub:NAME:N (N compute units per sub-device) or sub:NAME:N1+N2+... (by counts)");
   auto parent = open_device(name);
+  const bool by_counts = counts.size() > 1;
+  std::vector<cl_device_partition_property> props;
+  if (by_counts) {
+    props.push_back(CL_DEVICE_PARTITION_BY_COUNTS);
+    for (int n : counts) props.push_back(cl_device_partition_property(n));
+    props.push_back(CL_DEVICE_PARTITION_BY_COUNTS_LIST_END);
+  } else {
+    props = {CL_DEVICE_PARTITION_EQUALLY, cl_device_partition_property(counts[0])};
+  }
+  props.push_back(0);
   std::vector<cl::Device> subs;
   try {
-    const cl_device_partition_property props[] = {CL_DEVICE_PARTITION_EQUALLY, cl_device_partition_property(per), 0};
-    parent->device().createSubDevices(props, &subs);
+    parent->device().createSubDevices(props.data(), &subs);
   } catch (const cl::Error&) {
-    rethrow_cl_error("partitioning '" + parent->info().name + "' into sub-devices of " + std::to_string(per) +
-                     " compute unit(s)");
+    rethrow_cl_error("partitioning '" + parent->info().name + "' into sub-devices of " + spec + " compute unit(s)");
   }
   std::vector<std::unique_ptr<Device>> out;
   for (std::size_t i = 0; i < subs.size(); ++i) {
     DeviceInfo info = parent->info();
     info.name += " [sub-device " + std::to_string(i) + "]";
-    info.compute_units = per;
+    info.compute_units = by_counts ? counts[i] : counts[0];
     out.push_back(std::make_unique<Device>(subs[i], info));
   }
   return out;

@@ -40,7 +40,7 @@ TEST_F(SplitDevices, TwoDevicesGiveTheSingleDeviceImage) {
   ASSERT_TRUE(succeeds(render(scene, {"--device", "pthread", "--no-tuned", "--size", "200x150"})));
   const std::string single = bytes_of(image());
   // sub:pthread:1 = the pthread device cut into sub-devices of one compute unit (clCreateSubDevices).
-  for (const char* list : {"pthread,basic", "basic,pthread", "all", "sub:pthread:1"}) {
+  for (const char* list : {"pthread,basic", "basic,pthread", "all", "sub:pthread:1", "sub:pthread:1+1"}) {
     const RunResult r = render(scene, {"--device", list, "--size", "200x150"});
     ASSERT_TRUE(succeeds(r)) << list;
     EXPECT_EQ(bytes_of(image()), single) << "split over " << list << " differs from the pthread device's image";
@@ -56,6 +56,8 @@ TEST_F(SplitDevices, BadListsAreNamed) {
   const auto scene = input("ball.json", sphere_scene());
   EXPECT_TRUE(fails_with(render(scene, {"--device", "pthread,pthread"}), kUsage, {"twice"}));
   EXPECT_TRUE(fails_with(render(scene, {"--device", "pthread,nosuchdevice"}), kDeviceFailure, {"nosuchdevice"}));
+  EXPECT_TRUE(fails_with(render(scene, {"--device", "sub:pthread:1+x"}), kUsage, {"sub:pthread:1+x"}));
+  EXPECT_TRUE(fails_with(render(scene, {"--device", "sub:pthread:0"}), kUsage, {"sub:pthread:0"}));
   EXPECT_TRUE(nothing_written());
 }
 
