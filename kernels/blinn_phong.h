@@ -30,9 +30,13 @@ INLINE floatV positive_power(floatV x, float n) {
 
 #include "specular_models.h"
 
-INLINE void blinn_phong(__constant float4* materials, int m, __constant float4* lights, float4 viewer,
-                        floatV nx, floatV ny, floatV nz, floatV px, floatV py, floatV pz,
-                        floatV* r, floatV* g, floatV* b) {
+/* The specular term only for the lights in `needed` (a bit mask; the highlight-presence unit of SEEDS §8,
+ * highlight.hpp, clears the lights no highlight can reach in a triangle): the others add their diffuse
+ * term only. The mask is uniform over a triangle, so the branch is too; with every bit set (blinn_phong
+ * below) the compiler removes it. */
+INLINE void blinn_phong_masked(__constant float4* materials, int m, __constant float4* lights, float4 viewer, int needed,
+                               floatV nx, floatV ny, floatV nz, floatV px, floatV py, floatV pz, floatV* r, floatV* g,
+                               floatV* b) {
   const float4 amb = materials[3 * m], kd = materials[3 * m + 1], ks = materials[3 * m + 2];
   floatV cr = (floatV)amb.x, cg = (floatV)amb.y, cb = (floatV)amb.z;
 #if LOCAL_VIEWER
@@ -64,17 +68,29 @@ INLINE void blinn_phong(__constant float4* materials, int m, __constant float4* 
       lz = l4.z;
     }
     const floatV n_dot_l = fmax(nx * lx + ny * ly + nz * lz, (floatV)0.0f);
-    floatV hx = lx + vx, hy = ly + vy, hz = lz + vz;
-    const floatV h_inv = safe_rsqrt(hx * hx + hy * hy + hz * hz);
-    const floatV n_dot_h = (nx * hx + ny * hy + nz * hz) * h_inv;
-    const floatV spec = specular_term(n_dot_h, amb.w, kd.w); /* specular_models.h */
-    cr += il.x * (kd.x * n_dot_l + ks.x * spec);
-    cg += il.y * (kd.y * n_dot_l + ks.y * spec);
-    cb += il.z * (kd.z * n_dot_l + ks.z * spec);
+    if (needed & (1 << i)) {
+      floatV hx = lx + vx, hy = ly + vy, hz = lz + vz;
+      const floatV h_inv = safe_rsqrt(hx * hx + hy * hy + hz * hz);
+      const floatV n_dot_h = (nx * hx + ny * hy + nz * hz) * h_inv;
+      const floatV spec = specular_term(n_dot_h, amb.w, kd.w); /* specular_models.h */
+      cr += il.x * (kd.x * n_dot_l + ks.x * spec);
+      cg += il.y * (kd.y * n_dot_l + ks.y * spec);
+      cb += il.z * (kd.z * n_dot_l + ks.z * spec);
+    } else {
+      cr += il.x * (kd.x * n_dot_l);
+      cg += il.y * (kd.y * n_dot_l);
+      cb += il.z * (kd.z * n_dot_l);
+    }
   }
   *r = cr;
   *g = cg;
   *b = cb;
+}
+
+INLINE void blinn_phong(__constant float4* materials, int m, __constant float4* lights, float4 viewer,
+                        floatV nx, floatV ny, floatV nz, floatV px, floatV py, floatV pz,
+                        floatV* r, floatV* g, floatV* b) {
+  blinn_phong_masked(materials, m, lights, viewer, -1, nx, ny, nz, px, py, pz, r, g, b);
 }
 
 #endif

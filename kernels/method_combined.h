@@ -12,9 +12,6 @@
 #ifndef HIGHLIGHT_TEST
 #define HIGHLIGHT_TEST 0
 #endif
-#if HIGHLIGHT_TEST
-#include "highlight_mask.h"
-#endif
 
 #ifndef SEG_AUTO
 #define SEG_AUTO 0
