@@ -3,7 +3,7 @@
 // the Blinn–Phong formula (lighting.hpp) with the rest of the project, on purpose (DESIGN.md §3).
 //
 // Two passes. Visibility: the screen is cut into bands of rows; each band, owned by one thread,
-// visits its triangles in primitive order and keeps per pixel the nearest depth (strict <, so the
+// visits its triangles in primitive order and keeps per pixel the nearest depth (nearer by more than the rounding of coplanar depths, so the
 // earlier triangle wins ties). Shading: each pixel shades only its visible triangle. Every pixel is
 // computed by exactly one thread in a fixed order, so the result does not depend on the thread count.
 #include "parashade/reference.hpp"
@@ -164,6 +164,8 @@ ReferenceImage render_reference(const Scene& scene, const ScreenGeometry& g, Met
   out.exact.assign(pixels, background);
 
   // Visibility: window depth, linear in screen space, interpolated with screen-space barycentrics.
+  // Vertex depths are floats (~6e-8 apart at 1); rounding of the double sum is ~1e-16.
+  constexpr double kDepthTie = 1e-12;
   std::vector<double> depth(pixels, std::numeric_limits<double>::infinity());
   parallel_for(std::size_t(bands), [&](std::size_t band_index) {
     const int band = int(band_index);
@@ -180,7 +182,9 @@ ReferenceImage render_reference(const Scene& scene, const ScreenGeometry& g, Met
           const double z =
               weighted(b, double(g.depth[idx.x]), double(g.depth[idx.y]), double(g.depth[idx.z]));
           const std::size_t p = std::size_t(y) * width + x;
-          if (z < depth[p]) {
+          // Exactly coplanar triangles give the same depth up to the rounding of the barycentric sum:
+          // a later triangle must be nearer by more than that to win (ties: the earlier triangle).
+          if (z < depth[p] - kDepthTie) {
             depth[p] = z;
             out.triangle[p] = std::int32_t(t);
           }
