@@ -15,6 +15,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "fill_limit.hpp"
+
 #include "parashade/device.hpp"
 #include "parashade/renderer.hpp"
 #include "parashade/scene.hpp"
@@ -107,31 +109,7 @@ void frame_benchmark(benchmark::State& state, const std::string& scene_name, con
 }
 
 // The ceiling: a kernel that only writes every pixel of a 1920x1080 RGBA8 frame.
-void fill_limit(benchmark::State& state) {
-  Device& device = bench_device();
-  const int width = 1920, height = 1080, vectors = width * height / 16;
-  cl::Buffer out(device.context(), CL_MEM_WRITE_ONLY | CL_MEM_ALLOC_HOST_PTR, std::size_t(width) * height * 4);
-  cl::Kernel kernel(device.program({"common.h", "fill_limit.cl"}, ""), "fill_limit");
-  kernel.setArg(0, out);
-  kernel.setArg(1, cl_uint(0xFF336699u));
-  kernel.setArg(2, cl_int(vectors));
-  const cl::NDRange global{std::size_t(vectors)};
-  for (int i = 0; i < 2; ++i) device.queue().enqueueNDRangeKernel(kernel, cl::NullRange, global);
-  device.queue().finish();
-  double sum_ms = 0.0;
-  for (auto _ : state) {
-    cl::Event done;
-    device.queue().enqueueNDRangeKernel(kernel, cl::NullRange, global, cl::NullRange, nullptr, &done);
-    done.wait();
-    const double ms = double(done.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
-                             done.getProfilingInfo<CL_PROFILING_COMMAND_START>()) * 1e-6;
-    state.SetIterationTime(ms * 1e-3);
-    sum_ms += ms;
-  }
-  const double frame_ms = sum_ms / double(state.iterations());
-  state.counters["frame_ms"] = frame_ms;
-  state.counters["mpixel_per_s"] = double(width) * height / (frame_ms * 1e3);
-}
+void fill_limit(benchmark::State& state) { run_fill_limit(state, bench_device(), 1920, 1080); }
 
 void register_all() {
   const char* mesh_dir = std::getenv("PARASHADE_MESH_DIR");

@@ -36,6 +36,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "fill_limit.hpp"
+
 #include "parashade/device.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/image.hpp"
@@ -200,29 +202,7 @@ void parashade_frame(benchmark::State& state, const std::string& case_name, cons
 
 // The ceiling: a kernel that only writes every pixel of a w x h RGBA8 frame (profiling event time).
 void fill_limit(benchmark::State& state, int width, int height) {
-  Device& device = bench_device();
-  const int vectors = (width * height + 15) / 16;
-  cl::Buffer out(device.context(), CL_MEM_WRITE_ONLY | CL_MEM_ALLOC_HOST_PTR, std::size_t(vectors) * 16 * 4);
-  cl::Kernel kernel(device.program({"common.h", "fill_limit.cl"}, ""), "fill_limit");
-  kernel.setArg(0, out);
-  kernel.setArg(1, cl_uint(0xFF336699u));
-  kernel.setArg(2, cl_int(vectors));
-  const cl::NDRange global{std::size_t(vectors)};
-  for (int i = 0; i < 2; ++i) device.queue().enqueueNDRangeKernel(kernel, cl::NullRange, global);
-  device.queue().finish();
-  double sum_ms = 0.0;
-  for (auto _ : state) {
-    cl::Event done;
-    device.queue().enqueueNDRangeKernel(kernel, cl::NullRange, global, cl::NullRange, nullptr, &done);
-    done.wait();
-    const double ms = double(done.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
-                             done.getProfilingInfo<CL_PROFILING_COMMAND_START>()) * 1e-6;
-    state.SetIterationTime(ms * 1e-3);
-    sum_ms += ms;
-  }
-  const double frame_ms = sum_ms / double(state.iterations());
-  state.counters["frame_ms"] = frame_ms;
-  state.counters["mpixel_per_s"] = double(width) * height / (frame_ms * 1e3);
+  run_fill_limit(state, bench_device(), width, height);
 }
 
 // The fastest repetition beside Google Benchmark's median: on a shared machine other processes only add
