@@ -15,7 +15,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "fill_limit.hpp"
+#include "bench_device.hpp"
 
 #include "parashade/device.hpp"
 #include "parashade/renderer.hpp"
@@ -25,14 +25,6 @@
 
 namespace parashade {
 namespace {
-
-Device& bench_device() {
-  static std::unique_ptr<Device> device = [] {
-    const char* sel = std::getenv("PARASHADE_DEVICE");
-    return open_device(sel ? sel : "");
-  }();
-  return *device;
-}
 
 std::string source_path(const std::string& relative) { return std::string(PARASHADE_SOURCE_DIR) + "/" + relative; }
 

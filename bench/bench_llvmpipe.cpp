@@ -36,7 +36,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "fill_limit.hpp"
+#include "bench_device.hpp"
 
 #include "parashade/device.hpp"
 #include "parashade/geometry_stage.hpp"
@@ -50,14 +50,6 @@
 
 namespace parashade {
 namespace {
-
-Device& bench_device() {
-  static std::unique_ptr<Device> device = [] {
-    const char* sel = std::getenv("PARASHADE_DEVICE");
-    return open_device(sel ? sel : "");
-  }();
-  return *device;
-}
 
 peer::LlvmpipePeer& llvmpipe() {
   static peer::LlvmpipePeer p;

@@ -1,13 +1,25 @@
 #pragma once
-// The device's fill limit, the ceiling of every frame benchmark: a kernel that only writes every pixel
-// of a width x height RGBA8 frame (kernels/fill_limit.cl), timed by its profiling event after two untimed
-// launches. Shared by bench_frame and bench_llvmpipe.
+// What bench_frame and bench_llvmpipe share: the device they time (PARASHADE_DEVICE, as `render --device`;
+// default the first) and its fill limit, the ceiling of every frame benchmark.
+#include <cstdlib>
+#include <memory>
+
 #include <benchmark/benchmark.h>
 
 #include "parashade/device.hpp"
 
 namespace parashade {
 
+inline Device& bench_device() {
+  static std::unique_ptr<Device> device = [] {
+    const char* sel = std::getenv("PARASHADE_DEVICE");
+    return open_device(sel ? sel : "");
+  }();
+  return *device;
+}
+
+// A kernel that only writes every pixel of a width x height RGBA8 frame (kernels/fill_limit.cl), timed by
+// its profiling event after two untimed launches.
 inline void run_fill_limit(benchmark::State& state, Device& device, int width, int height) {
   const int vectors = (width * height + 15) / 16;
   cl::Buffer out(device.context(), CL_MEM_WRITE_ONLY | CL_MEM_ALLOC_HOST_PTR, std::size_t(vectors) * 16 * 4);
