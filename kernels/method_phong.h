@@ -8,6 +8,19 @@ INLINE floatV plane_row(__global const float* a, int slot, float fdy, floatV rel
   return (floatV)(a[slot] + a[slot + 6] * fdy) + a[slot + 3] * rel;
 }
 
+/* Blinn–Phong with a unit normal per lane; the world position from its planes only when a point light or
+ * a local viewer needs it. */
+INLINE void shade_unit_normal(__global const float* a, float fdy, floatV rel, floatV nx, floatV ny, floatV nz, floatV* r,
+                              floatV* g, floatV* b, __constant float4* lights, __constant float4* materials,
+                              float4 viewer) {
+#if NEED_POSITION
+  const floatV px = plane_row(a, 9, fdy, rel), py = plane_row(a, 10, fdy, rel), pz = plane_row(a, 11, fdy, rel);
+#else
+  const floatV px = 0.0f, py = 0.0f, pz = 0.0f;
+#endif
+  blinn_phong(materials, (int)a[PHONG_MATERIAL_SLOT], lights, viewer, nx, ny, nz, px, py, pz, r, g, b);
+}
+
 INLINE void shade_pixels(__global const float* a, int dy, floatV rel, floatV* r, floatV* g, floatV* b,
                          __constant float4* lights, __constant float4* materials, float4 viewer) {
   const float fdy = (float)dy;
@@ -18,12 +31,7 @@ INLINE void shade_pixels(__global const float* a, int dy, floatV rel, floatV* r,
   nx *= inv;
   ny *= inv;
   nz *= inv;
-#if NEED_POSITION
-  const floatV px = plane_row(a, 9, fdy, rel), py = plane_row(a, 10, fdy, rel), pz = plane_row(a, 11, fdy, rel);
-#else
-  const floatV px = 0.0f, py = 0.0f, pz = 0.0f;
-#endif
-  blinn_phong(materials, (int)a[PHONG_MATERIAL_SLOT], lights, viewer, nx, ny, nz, px, py, pz, r, g, b);
+  shade_unit_normal(a, fdy, rel, nx, ny, nz, r, g, b, lights, materials, viewer);
 }
 
 #if NORMALIZE_METHOD
@@ -53,11 +61,6 @@ INLINE void shade_pixels_span(__global const float* a, int dy, floatV rel, const
   const floatV t = xr > xl ? (rel - (float)xl) * (1.0f / (float)(xr - xl)) : (floatV)0.0f;
   floatV nx, ny, nz;
   span_normal_at(s, t, &nx, &ny, &nz);
-#if NEED_POSITION
-  const floatV px = plane_row(a, 9, fdy, rel), py = plane_row(a, 10, fdy, rel), pz = plane_row(a, 11, fdy, rel);
-#else
-  const floatV px = 0.0f, py = 0.0f, pz = 0.0f;
-#endif
-  blinn_phong(materials, (int)a[PHONG_MATERIAL_SLOT], lights, viewer, nx, ny, nz, px, py, pz, r, g, b);
+  shade_unit_normal(a, fdy, rel, nx, ny, nz, r, g, b, lights, materials, viewer);
 }
 #endif

@@ -16,13 +16,7 @@ INLINE void shade_unit_normals(const SpanRegisters* regs, intV i, int length, __
   nx *= inv;
   ny *= inv;
   nz *= inv;
-#if NEED_POSITION
-  const float fdy = (float)dy;
-  const floatV px = plane_row(a, 9, fdy, rel), py = plane_row(a, 10, fdy, rel), pz = plane_row(a, 11, fdy, rel);
-#else
-  const floatV px = 0.0f, py = 0.0f, pz = 0.0f;
-#endif
-  blinn_phong(materials, (int)a[PHONG_MATERIAL_SLOT], lights, viewer, nx, ny, nz, px, py, pz, r, g, b);
+  shade_unit_normal(a, (float)dy, rel, nx, ny, nz, r, g, b, lights, materials, viewer);
 }
 
 #endif
