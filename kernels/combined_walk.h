@@ -14,7 +14,11 @@ INLINE void shade_triangle_combined(__global const TriangleGeometry* t, __global
                                     __constant float4* materials, float4 viewer) {
   const int x0 = t->x0, y0 = t->y0;
   const intV lane = LANE_INDEX;
+#if TRIANGLE_CHOICE
+  const float psi_limit = attr[PHONG_PSI_SLOT];
+#else
   const float psi_limit = materials[3 * (int)attr[PHONG_MATERIAL_SLOT] + 2].w;
+#endif
   int xl_[VEC], xr_[VEC], sl_[VEC], sr_[VEC], k_[VEC], first_[VEC], visible_[VEC];
   float end_r[SEG_END_COLUMNS * VEC], end_g[SEG_END_COLUMNS * VEC], end_b[SEG_END_COLUMNS * VEC];
   for (int block = row_first; block <= row_last; block += VEC) {

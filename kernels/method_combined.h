@@ -13,6 +13,14 @@
 #define HIGHLIGHT_TEST 0
 #endif
 
+/* TRIANGLE_CHOICE = 1: the host chose per triangle (triangle_choice.hpp) in PHONG_METHOD_SLOT: 0 Phong per
+ * pixel, 1 Gouraud (its colour planes in slots 0..8, Gouraud's layout), 2 segments; combined:auto takes
+ * the triangle's limit on the normal change from PHONG_PSI_SLOT. */
+#ifndef TRIANGLE_CHOICE
+#define TRIANGLE_CHOICE 0
+#endif
+INLINE bool shaded_by_gouraud(__global const float* a) { return TRIANGLE_CHOICE && a[PHONG_METHOD_SLOT] == 1.0f; }
+
 #ifndef SEG_AUTO
 #define SEG_AUTO 0
 #endif
@@ -36,7 +44,13 @@
 #ifndef COMBINED_MIN_WIDTH
 #define COMBINED_MIN_WIDTH 0
 #endif
-INLINE bool combined_walks(__global const TriangleGeometry* t) { return t->x1 - t->x0 + 1 >= COMBINED_MIN_WIDTH; }
+INLINE bool combined_walks(__global const TriangleGeometry* t, __global const float* a) {
+#if TRIANGLE_CHOICE
+  return a[PHONG_METHOD_SLOT] == 2.0f;
+#else
+  return t->x1 - t->x0 + 1 >= COMBINED_MIN_WIDTH;
+#endif
+}
 
 /* A plane's value on each lane's own row and column: the same operations, in the same order, as
  * method_phong.h's plane_row, so segment ends equal Phong's pixels bit for bit. */
@@ -66,6 +80,23 @@ INLINE void shade_points(__global const float* a, floatV fdy, floatV rel, floatV
 #endif
   blinn_phong(materials, (int)a[PHONG_MATERIAL_SLOT], lights, viewer, nx, ny, nz, px, py, pz, r, g, b);
 }
+
+#if TRIANGLE_CHOICE || HIGHLIGHT_TEST
+/* The per-pixel path (narrow triangles, and those given to Gouraud): Gouraud's planes, or Phong with the
+ * triangle's specular mask (shade_points: the same operations as method_phong.h's shade_pixels). */
+INLINE void shade_pixels_combined(__global const float* a, int dy, floatV rel, floatV* r, floatV* g, floatV* b,
+                                  __constant float4* lights, __constant float4* materials, float4 viewer) {
+  const float fdy = (float)dy;
+  if (shaded_by_gouraud(a)) {
+    *r = (floatV)(a[0] + a[6] * fdy) + a[3] * rel;
+    *g = (floatV)(a[1] + a[7] * fdy) + a[4] * rel;
+    *b = (floatV)(a[2] + a[8] * fdy) + a[5] * rel;
+    return;
+  }
+  shade_points(a, (floatV)fdy, rel, r, g, b, lights, materials, viewer);
+}
+#define SHADE_PIXELS shade_pixels_combined
+#endif
 
 /* K per span (rows as lanes): the largest K <= SEG_K_MAX with |D| 2^K <= psi_limit * min|N|, min|N|
  * the smallest unnormalized normal length over [xl, xr + 2^SEG_K_MAX] (the last segment reaches past

@@ -87,6 +87,10 @@ INLINE void keep(intV pass, floatV sr, floatV sg, floatV sb, floatV* cr, floatV*
 #if COMBINED
 #include "combined_walk.h"
 #endif
+/* The per-pixel shading of the plain path: the method's, or the combined method's choice per triangle. */
+#ifndef SHADE_PIXELS
+#define SHADE_PIXELS shade_pixels
+#endif
 
 /* One row segment of VEC pixels: depth test, shade, keep. */
 INLINE void shade_segment(__global const TriangleGeometry* t, __global const float* attr, int dy, intV rel,
@@ -103,7 +107,7 @@ INLINE void shade_segment(__global const TriangleGeometry* t, __global const flo
 #if SHADE_SPAN
   shade_pixels_span(attr, dy, frel, span_ptr, xl, xr, &sr, &sg, &sb, lights, materials, viewer);
 #else
-  shade_pixels(attr, dy, frel, &sr, &sg, &sb, lights, materials, viewer);
+  SHADE_PIXELS(attr, dy, frel, &sr, &sg, &sb, lights, materials, viewer);
 #endif
   keep(pass, sr, sg, sb, &cr[slot], &cg[slot], &cb[slot]);
 }
@@ -234,8 +238,9 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
 #else
 #if COMBINED
     /* Combined Gouraud/Phong: by whole spans, segment ends counted from each span's left pixel; narrow
-     * triangles, where it cannot save, by Phong per pixel below. */
-    if (combined_walks(t)) {
+     * triangles, where it cannot save, by Phong per pixel below, and so are the triangles the per-triangle
+     * choice gives to Gouraud (SHADE_PIXELS, method_combined.h). */
+    if (combined_walks(t, attr)) {
       shade_triangle_combined(t, attr, tile_x, tile_y, row_first, row_last, lo, hi, depth, cr, cg, cb, lights, materials,
                               viewer);
       continue;

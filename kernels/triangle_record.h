@@ -40,9 +40,13 @@ typedef struct {
 /* Per-method attribute records: ATTR_* floats per triangle, indexed like TriangleGeometry. */
 #define FLAT_ATTR_FLOATS 4      /* r, g, b (levels), unused */
 #define GOURAUD_ATTR_FLOATS 12  /* ref r,g,b; ddx r,g,b (the constant span increment dI_G); ddy r,g,b; 3 unused */
-/* Phong: normal ref xyz, ddx xyz, ddy xyz; position ref xyz, ddx xyz, ddy xyz; material; 3 unused */
+/* Phong: normal ref xyz, ddx xyz, ddy xyz; position ref xyz, ddx xyz, ddy xyz; material; 3 spare slots
+ * that the combined method's per-triangle choice uses (triangle_choice.hpp). A triangle it gives to
+ * Gouraud holds its colour planes (Gouraud's layout) in slots 0..8 instead of the normal planes. */
 #define PHONG_ATTR_FLOATS 22
 #define PHONG_MATERIAL_SLOT 18
 #define PHONG_HIGHLIGHT_SLOT 19 /* combined --highlight-test: lights whose specular term is evaluated (mask) */
+#define PHONG_METHOD_SLOT 20    /* combined with a triangle choice: 0 Phong per pixel, 1 Gouraud, 2 segments */
+#define PHONG_PSI_SLOT 21       /* combined:auto with a triangle choice: the triangle's limit on the normal change */
 
 #endif

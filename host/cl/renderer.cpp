@@ -154,7 +154,8 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
   cl::CommandQueue& q = device_.queue();
 
   auto t0 = Clock::now();
-  build_screen_geometry(scene, {method, false}, geometry_);
+  const bool choose = method == Method::combined && options_.combined.rule != TriangleRule::none;
+  build_screen_geometry(scene, {method, false, choose}, geometry_);
   // The extra-triangulation unit needs its midpoints on pixel corners: vertex parity normalization.
   const UnitConfig unit = options_.unit();
   const bool split = options_.unit_path() && unit.kind == UnitKind::sierpinski;
@@ -207,8 +208,20 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
                                          attr_ptr, fixed_ptr, leaf_ptr);
     q.enqueueUnmapMemObject(leaves_, leaf_ptr);
   } else {
-    s.triangles_without_pixels = setup_triangles(geometry_, method, tri_ptr, attr_ptr, fixed_ptr).without_pixels;
-    if (method == Method::combined && options_.combined.highlight_test)
+    if (choose)
+      s.choice = choose_triangle_methods(scene, geometry_, options_.combined, combined_shading_budget(options_.combined),
+                                         choice_);
+    s.triangles_without_pixels =
+        setup_triangles(geometry_, method, tri_ptr, attr_ptr, fixed_ptr, choose ? choice_.data() : nullptr).without_pixels;
+    if (choose) {
+      apply_triangle_choice(choice_, attr_ptr, PHONG_ATTR_FLOATS);
+      if (uses_highlight_mask(options_.combined)) {
+        s.highlight = {s.choice->triangles, s.choice->without_highlight, 0};
+        for (const TriangleShading& c : choice_)
+          s.highlight.light_terms_skipped += scene.lights.size() - std::size_t(__builtin_popcount(c.specular_mask));
+      }
+    }
+    else if (method == Method::combined && options_.combined.highlight_test)
       s.highlight = mark_highlights(scene, geometry_, attr_ptr, PHONG_ATTR_FLOATS, PHONG_HIGHLIGHT_SLOT,
                                     options_.combined.negligible_specular);
     if (options_.dda_coverage) {

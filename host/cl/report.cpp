@@ -49,7 +49,15 @@ nlohmann::json to_json(const FrameStats& s) {
           {"parity_dropped", s.parity_dropped}, {"sierpinski_whole", s.sierpinski_whole},
           {"highlight_test", {{"triangles", s.highlight.triangles},
                               {"without_highlight", s.highlight.without_highlight},
-                              {"light_terms_skipped", s.highlight.light_terms_skipped}}}};
+                              {"light_terms_skipped", s.highlight.light_terms_skipped}}},
+          {"triangle_choice", s.choice ? nlohmann::json{{"triangles", s.choice->triangles},
+                                                        {"gouraud", s.choice->gouraud},
+                                                        {"segments", s.choice->segments},
+                                                        {"phong", s.choice->triangles - s.choice->gouraud - s.choice->segments},
+                                                        {"without_highlight", s.choice->without_highlight},
+                                                        {"terminator", s.choice->terminator},
+                                                        {"largest_expected_gouraud_levels", s.choice->largest_expected_levels}}
+                                       : nlohmann::json(nullptr)}};
 }
 
 nlohmann::json to_json(const ModeledClocks& c) {

@@ -30,7 +30,7 @@ namespace {
 
 struct RenderArgs {
   std::string scene, output, method = "gouraud", device, size, report, units, arith = "float", division = "constant",
-              coverage = "centre", specular = "exact", normalize = "exact";
+              coverage = "centre", specular = "exact", normalize = "exact", triangle_choice;
   int frames = 5, warmup = 1, tile = 16, work_items = 0;
   double max_error = 0;  // 0: not given
   int combined_min_width = -1;
@@ -90,6 +90,12 @@ int run_render(const RenderArgs& a) {
       throw UsageError("--max-error chooses the segments of --method combined:auto; method '" + a.method + "' has none");
     if (!(a.max_error > 0 && a.max_error <= 255)) throw UsageError("--max-error must be in (0, 255] levels");
     options.combined.max_error = a.max_error;
+  }
+  if (!a.triangle_choice.empty()) {
+    if (method != Method::combined)
+      throw UsageError("--triangle-choice chooses between Gouraud and the segments of --method combined:K|auto "
+                       "(combined:0 is Phong); not in '" + a.method + "'");
+    parse_triangle_rule(a.triangle_choice, options.combined);
   }
   if (!a.units.empty()) options.units = parse_units(a.units);
   options.arith = parse_arith(a.arith);
@@ -192,7 +198,8 @@ int run_render(const RenderArgs& a) {
     report["method"] = combined_name(options.combined);
     if (options.combined.automatic) report["max_error_levels"] = options.combined.max_error;
     report["combined_min_width"] = combined_min_width(options.combined);
-    report["highlight_test"] = options.combined.highlight_test;
+    report["highlight_test"] = uses_highlight_mask(options.combined);
+    report["triangle_choice_rule"] = triangle_rule_name(options.combined);
   }
   if (options.unit_path()) {
     report["units"] = unit_name(options.unit());
@@ -241,7 +248,13 @@ int run_render(const RenderArgs& a) {
     std::printf("phong: normals %s (%llu span setups, %llu fell back to the exact normal), specular %s\n",
                 normalize_name(options.normalize).c_str(), (unsigned long long)frame.stats.normalize_span_setups,
                 (unsigned long long)frame.stats.normalize_fallback_spans, specular_name(options.specular).c_str());
-  if (options.combined.highlight_test)
+  if (const auto& c = frame.stats.choice)
+    std::printf("triangle choice %s: of %llu triangles %llu by Gouraud (largest expected error %.2f levels), %llu by "
+                "segments, %llu by Phong per pixel; %llu where a terminator may cross\n",
+                triangle_rule_name(options.combined).c_str(), (unsigned long long)c->triangles,
+                (unsigned long long)c->gouraud, c->largest_expected_levels, (unsigned long long)c->segments,
+                (unsigned long long)(c->triangles - c->gouraud - c->segments), (unsigned long long)c->terminator);
+  if (method == Method::combined && uses_highlight_mask(options.combined))
     std::printf("highlight test: %llu of %llu triangles without a highlight, %llu (triangle, light) specular terms skipped\n",
                 (unsigned long long)frame.stats.highlight.without_highlight,
                 (unsigned long long)frame.stats.highlight.triangles,
@@ -264,7 +277,8 @@ Command add_render_command(CLI::App& app) {
                   "combined:auto (K per span from --max-error)")
       ->capture_default_str();
   cmd->add_option("--max-error", a->max_error,
-                  "combined:auto: error budget in 8-bit levels against Phong (default 1; 0.5 of it is the image's rounding)");
+                  "combined:auto: error budget in 8-bit levels against Phong (default 1; 0.5 of it is the image's rounding); "
+                  "chooses Gouraud per triangle and K per span to meet it");
   cmd->add_option("--specular", a->specular,
                   "Phong specular model: exact, cosk:taylor:2|4, cosk:lobe:2|4, quadratic, 7n16[:P] (docs/phong-methods.md)")
       ->capture_default_str();
@@ -302,6 +316,10 @@ Command add_render_command(CLI::App& app) {
   cmd->add_flag("--no-tuned", a->no_tuned, "Ignore the tune cache: the default configuration");
   cmd->add_option("--combined-min-width", a->combined_min_width,
                   "combined:*: triangles with a narrower box (pixels) go by Phong per pixel (default 2^(K+1), auto 8; 0: none)");
+  cmd->add_option("--triangle-choice", a->triangle_choice,
+                  "combined:*: per triangle Gouraud or the segments: bound (combined:auto's default: Gouraud where its "
+                  "expected error meets --max-error), sources[:M,Q,P] (the thesis's thresholds 0.9,0.004,0.008), "
+                  "sources-literal[:M,Q,P] (its listing as printed), none (combined:K's default); docs/triangle-choice.md");
   cmd->add_flag("--highlight-test", a->highlight_test,
                 "combined:*: skip the specular term per triangle and light where no highlight can fall (SEEDS §8)");
   cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 #include "parashade/errors.hpp"
@@ -16,6 +17,7 @@ CombinedConfig parse_combined(const std::string& text) {
   const std::string arg = text.substr(prefix.size());
   if (arg == "auto") {
     c.automatic = true;
+    c.rule = TriangleRule::bound;
     return c;
   }
   char* end = nullptr;
@@ -26,13 +28,55 @@ CombinedConfig parse_combined(const std::string& text) {
   return c;
 }
 
+void parse_triangle_rule(const std::string& text, CombinedConfig& c) {
+  const std::size_t colon = text.find(':');
+  const std::string name = text.substr(0, colon);
+  if (name == "none") c.rule = TriangleRule::none;
+  else if (name == "bound") c.rule = TriangleRule::bound;
+  else if (name == "sources") c.rule = TriangleRule::sources;
+  else if (name == "sources-literal") c.rule = TriangleRule::sources_literal;
+  else throw UsageError("--triangle-choice '" + text + "': expected none, bound, sources[:M,Q,P] or sources-literal[:M,Q,P]");
+  c.rule_given = true;
+  if (colon == std::string::npos) return;
+  const bool sources = c.rule == TriangleRule::sources || c.rule == TriangleRule::sources_literal;
+  double v[3];
+  char tail = 0;
+  if (!sources || std::sscanf(text.c_str() + colon + 1, "%lf,%lf,%lf%c", &v[0], &v[1], &v[2], &tail) != 3 ||
+      !(v[0] >= -1.0 && v[0] <= 1.0) || !(v[1] >= 0.0) || !(v[2] >= 0.0) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
+    throw UsageError("--triangle-choice '" + text +
+                     "': thresholds go with sources only, as M,Q,P (M in [-1, 1], Q and P >= 0), e.g. sources:0.9,0.004,0.008");
+  c.source_m = v[0];
+  c.source_q = v[1];
+  c.source_p = v[2];
+}
+
+std::string triangle_rule_name(const CombinedConfig& c) {
+  switch (c.rule) {
+    case TriangleRule::none: return "none";
+    case TriangleRule::bound: return "bound";
+    case TriangleRule::sources: return "sources";
+    case TriangleRule::sources_literal: return "sources-literal";
+  }
+  return "none";
+}
+
+bool uses_highlight_mask(const CombinedConfig& c) { return c.highlight_test || c.rule == TriangleRule::bound; }
+
+int combined_min_width(const CombinedConfig& c) {
+  if (c.min_width >= 0) return c.min_width;
+  return c.automatic ? 8 : 2 << c.k;
+}
+
+double combined_shading_budget(const CombinedConfig& c) { return std::max(0.0, c.max_error - 0.5); }
+
 std::string combined_name(const CombinedConfig& c) {
   return c.automatic ? "combined:auto" : "combined:" + std::to_string(c.k);
 }
 
-double chord_error_bound(double phi, double n) {
+double chord_error_bound(double phi, double n, bool crosses_zero) {
   // Symmetric peak: exact 1 at the middle, chord cos^n(phi/2) (the sources' formula).
   const double peak = 1.0 - std::pow(std::cos(0.5 * phi), n);
+  if (!crosses_zero) return peak;
   // A segment across the zero of the clamped term (the terminator, or N.H = 0): for n = 1 the kink
   // gives first-order error <= max_a a*sin(phi - a)/phi <= phi/4; for n < 2 (steeper or less smooth
   // zero) the looser (phi/2)^n; for n >= 2 the peak case is the worst (checked numerically).
@@ -54,7 +98,11 @@ double nonuniform_angle(double phi) {
   return std::atan(u * t) - u * a;
 }
 
-double segment_term_bound(double psi, double n) {
+double angle_shift_error(double shift, double n) {
+  return n >= 1.0 ? term_slope_bound(n) * shift : std::pow(shift, n);
+}
+
+double segment_term_bound(double psi, double n, bool crosses_zero) {
   if (!(psi < 1.0)) return 1.0;
   const double phi = std::asin(psi);
   const double root = std::sqrt(1.0 + psi);
@@ -63,8 +111,7 @@ double segment_term_bound(double psi, double n) {
   // that moves the angle by at most 2 delta tan(phi/2). Normalizing a point of the chord is not uniform
   // in angle either: theta(u) = atan(u tan(phi/2)) against u phi/2 (u = 2s - 1), at most nonuniform_angle.
   const double shift = 2.0 * delta * std::tan(0.5 * phi) + nonuniform_angle(phi);
-  const double moved = n >= 1.0 ? term_slope_bound(n) * shift : std::pow(shift, n);
-  return std::min(1.0, chord_error_bound(phi, n) + moved);
+  return std::min(1.0, chord_error_bound(phi, n, crosses_zero) + angle_shift_error(shift, n));
 }
 
 double segment_error_levels(const Scene& s, const Material& m, double psi) {

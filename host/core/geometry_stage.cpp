@@ -290,7 +290,7 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
   const Method method = request.method;
   const bool per_pixel = method == Method::phong || method == Method::combined;
   const Needs needs{method == Method::flat || per_pixel || request.for_reference,
-                    per_pixel || request.for_reference, method == Method::gouraud,
+                    per_pixel || request.for_reference, method == Method::gouraud || request.vertex_colours,
                     method == Method::flat};
   const VertexLighting lighting(scene);
   const glm::mat4 vp = view_projection(scene);

@@ -96,7 +96,7 @@ std::int64_t to_plane_register(double levels) {
 }
 
 SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeometry* geometry, float* attributes,
-                           FixedPlanes* fixed) {
+                           FixedPlanes* fixed, const TriangleShading* gouraud) {
   const std::int64_t count = std::int64_t(g.triangles.size());
   const std::size_t stride = attribute_floats(method);
   const bool has_position = !g.world.empty();
@@ -149,6 +149,19 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
     r.z_ddx = float(z.ddx);
     r.z_ddy = float(z.ddy);
 
+    struct Colours {
+      Plane c[3];
+    };
+    const auto colour_planes = [&] {
+      Colours ch;
+      const ConstantSpanIncrement span_increment(s[0], s[1], s[2]);
+      for (int k = 0; k < 3; ++k) {
+        const double ia = g.color[vid[0]][k], ib = g.color[vid[1]][k], ic = g.color[vid[2]][k];
+        ch.c[k] = plane(ia, ib, ic);
+        ch.c[k].ddx = span_increment(ia, ib, ic);  // dI_G, once per triangle (formula 2.16)
+      }
+      return ch;
+    };
     switch (method) {
       case Method::flat: {
         const glm::vec3 c = g.flat_color[t];
@@ -159,20 +172,14 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
         break;
       }
       case Method::gouraud: {
-        Plane ch[3];
-        const ConstantSpanIncrement span_increment(s[0], s[1], s[2]);
-        for (int k = 0; k < 3; ++k) {
-          const double ia = g.color[vid[0]][k], ib = g.color[vid[1]][k], ic = g.color[vid[2]][k];
-          ch[k] = plane(ia, ib, ic);
-          ch[k].ddx = span_increment(ia, ib, ic);  // dI_G, once per triangle (formula 2.16)
-        }
-        store(attr, 0, ch[0], ch[1], ch[2]);
+        const Colours ch = colour_planes();
+        store(attr, 0, ch.c[0], ch.c[1], ch.c[2]);
         attr[9] = attr[10] = attr[11] = 0.0f;
         if (fixed) {
           for (int k = 0; k < 3; ++k) {
-            fixed[t].ref[k] = to_plane_register(ch[k].ref);
-            fixed[t].ddx[k] = to_plane_register(ch[k].ddx);
-            fixed[t].ddy[k] = to_plane_register(ch[k].ddy);
+            fixed[t].ref[k] = to_plane_register(ch.c[k].ref);
+            fixed[t].ddx[k] = to_plane_register(ch.c[k].ddx);
+            fixed[t].ddy[k] = to_plane_register(ch.c[k].ddy);
           }
         }
         break;
@@ -184,7 +191,12 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
           n[k] = plane(g.normal[vid[0]][k], g.normal[vid[1]][k], g.normal[vid[2]][k]);
           q[k] = has_position ? plane(g.world[vid[0]][k], g.world[vid[1]][k], g.world[vid[2]][k]) : Plane{0, 0, 0};
         }
-        store(attr, 0, n[0], n[1], n[2]);
+        if (gouraud && gouraud[t].method == TriangleMethod::gouraud) {  // the combined method's per-triangle choice: Gouraud's planes
+          const Colours ch = colour_planes();
+          store(attr, 0, ch.c[0], ch.c[1], ch.c[2]);
+        } else {
+          store(attr, 0, n[0], n[1], n[2]);
+        }
         store(attr, 9, q[0], q[1], q[2]);
         if (fixed) {  // the normal's components for a unit's registers (fixed_point.h)
           for (int k = 0; k < 3; ++k) {

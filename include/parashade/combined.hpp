@@ -8,6 +8,9 @@
 
 namespace parashade {
 
+// Per-triangle choice between Gouraud and the segments (triangle_choice.hpp).
+enum class TriangleRule { none, bound, sources, sources_literal };
+
 struct CombinedConfig {
   int k = 2;               // segment length 2^k pixels (fixed k)
   bool automatic = false;  // k per span from the error bound (combined:auto)
@@ -18,18 +21,38 @@ struct CombinedConfig {
   // Triangles with a narrower bounding box go by Phong per pixel (-1: 2^(k+1), 8 for auto; 0: none).
   int min_width = -1;
   double negligible_specular = 0.05;
+  // Per-triangle Gouraud choice: none for combined:K unless asked, bound for combined:auto.
+  TriangleRule rule = TriangleRule::none;
+  bool rule_given = false;                       // --triangle-choice was on the command line
+  double source_m = 0.9, source_q = 0.004, source_p = 0.008;  // the sources' thresholds
+  // combined:auto with a choice: triangles whose segments could not reach 2^walk_min_k pixels go by Phong
+  // per pixel (the walk's fixed costs exceed what shorter segments save).
+  int walk_min_k = 2;
 };
+
+// "none", "bound", "sources[:M,Q,P]", "sources-literal[:M,Q,P]"; throws UsageError naming the text.
+void parse_triangle_rule(const std::string& text, CombinedConfig& c);
+std::string triangle_rule_name(const CombinedConfig& c);
 
 constexpr int kCombinedMaxK = 6;  // longest segment 64 pixels
 
 // "combined:K" (K = 0..kCombinedMaxK) or "combined:auto"; throws UsageError otherwise.
 CombinedConfig parse_combined(const std::string& method_text);
 std::string combined_name(const CombinedConfig& c);
+// The kernel skips the specular terms a per-triangle mask leaves out (--highlight-test, or the bound rule
+// of the per-triangle choice, which computes the mask anyway).
+bool uses_highlight_mask(const CombinedConfig& c);
+// Triangles narrower than this (bounding box, pixels) are shaded by Phong per pixel (combined:K, and
+// combined:auto without a per-triangle choice).
+int combined_min_width(const CombinedConfig& c);
+// The shading error allowed to the segments: the budget minus the 8-bit image's rounding (0.5 level).
+double combined_shading_budget(const CombinedConfig& c);
 
 // Worst-case |exact - chord| of one segment for a term max(0, A cos(theta - theta0))^n (A <= 1) whose
 // end normals are phi apart on a great circle, the chord linear in the angle (docs/combined.md §2).
-// n = 1 is the diffuse term.
-double chord_error_bound(double phi, double n);
+// n = 1 is the diffuse term. crosses_zero = false: the term's clamp (the terminator for n = 1) is known
+// not to lie inside the segment, so only the smooth peak case remains.
+double chord_error_bound(double phi, double n, bool crosses_zero = true);
 // Largest |d/dtheta max(0, cos theta)^n| (n >= 1): how fast a misplaced angle changes the term.
 double term_slope_bound(double n);
 // Largest |atan(u tan(phi/2)) - u phi/2| over u in [-1, 1]: how far the normalized chord point is from
@@ -39,7 +62,9 @@ double nonuniform_angle(double phi);
 // |w| <= psi * min|N| over the segment: phi <= asin(psi), and the chord's parameter is off the
 // angle's by at most delta = (sqrt(rho) - 1) / (sqrt(rho) + 1), rho = 1 + psi (docs/combined.md §3).
 // Returns 1 (the whole range of a term) for psi >= 1.
-double segment_term_bound(double psi, double n);
+double segment_term_bound(double psi, double n, bool crosses_zero = true);
+// The error of a term (in [0, 1]) whose argument angle is off by at most `shift`: slope times shift.
+double angle_shift_error(double shift, double n);
 // Worst-case error in 8-bit levels (largest channel) of one pixel of material m under the scene's
 // lights when every segment has relative normal change <= psi; L and H are taken as constant along a
 // segment (exact for directional lights and a distant viewer).

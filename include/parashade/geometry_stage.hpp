@@ -14,6 +14,9 @@ struct GeometryRequest {
   // false: only the attributes the method's kernel needs (the timed path); true: every attribute the
   // exact reference needs too (world positions, normals, inv_w).
   bool for_reference = false;
+  // Also the vertex intensities (Gouraud's), for a method that gives some triangles to Gouraud
+  // (combined with a per-triangle choice).
+  bool vertex_colours = false;
 };
 
 // Projection x view of the scene's camera for its resolution (OpenGL clip-space conventions).

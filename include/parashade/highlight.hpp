@@ -5,9 +5,11 @@
 // constant, and the largest N.H over that spherical triangle bounds the specular term.
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include <glm/glm.hpp>
 
+#include "parashade/light_bounds.hpp"
 #include "parashade/scene.hpp"
 #include "parashade/screen_geometry.hpp"
 
@@ -27,9 +29,10 @@ struct HighlightMarks {
 HighlightMarks mark_highlights(const Scene& s, const ScreenGeometry& g, float* attributes, std::size_t stride, int slot,
                                double negligible_levels);
 
-// max over N = normalize(b0 n0 + b1 n1 + b2 n2), b >= 0, of N.h (n0..n2 and h unit vectors). The maximum
-// is at a vertex, on an edge's great arc (where h's projection on the arc's plane falls between its
-// ends), or 1 when h itself lies in the spherical triangle.
-double max_cosine_over_normals(const glm::dvec3& n0, const glm::dvec3& n1, const glm::dvec3& n2, const glm::dvec3& h);
+// The largest N.H at which light l's specular term on material m stays <= negligible_levels (8-bit
+// levels, largest channel); 1 when it never exceeds them.
+double negligible_cosine(const Light& l, const Material& m, double negligible_levels);
+// negligible_cosine for every (material, light), light-major within a material: [m * lights + l].
+std::vector<double> negligible_cosines(const Scene& s, double negligible_levels);
 
 }  // namespace parashade

@@ -19,6 +19,7 @@
 #include "parashade/scene.hpp"
 #include "parashade/screen_geometry.hpp"
 #include "parashade/specular_models.hpp"
+#include "parashade/triangle_choice.hpp"
 #include "parashade/units.hpp"
 
 namespace parashade {
@@ -73,6 +74,7 @@ struct FrameStats {
   std::uint64_t sierpinski_whole = 0;  // sierpinski :touch/:overlap: too small to halve, shaded whole
   std::optional<PlanReport> plan;    // with a plan: the modeled per-unit load
   HighlightMarks highlight;          // combined with the highlight-presence test
+  std::optional<TriangleChoiceStats> choice;  // combined with a per-triangle method choice
 };
 
 struct Frame {
@@ -110,6 +112,7 @@ class Renderer {
   Device& device_;
   RenderOptions options_;
   ScreenGeometry geometry_;
+  std::vector<TriangleShading> choice_;  // combined: the per-triangle method choice of this frame
   Frame frame_;
   Binner binner_;
   cl::Buffer tris_, attrs_, tile_start_, tile_tris_, lights_, materials_, out_rgba_, out_float_, counts_, fixed_,

@@ -9,6 +9,7 @@
 
 #include "parashade/method.hpp"
 #include "parashade/screen_geometry.hpp"
+#include "parashade/triangle_choice.hpp"
 #include "fixed_point.h"
 #include "triangle_record.h"
 
@@ -25,8 +26,10 @@ struct SetupStats {
 // Triangles that cannot cover a pixel centre get an empty box (x0 > x1) and are skipped by binning.
 // With `fixed` (Gouraud: the intensities; Phong: the normal components x NORMAL_REGISTER_LEVELS), also fills fixed[i] with the planes in setup's fixed-point format
 // (kernels/fixed_point.h) for the fixed-point units.
+// With `gouraud` (combined: triangle_choice.hpp), the triangles it gives to Gouraud get their colour
+// planes (g.color needed) in the normal planes' slots.
 SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeometry* geometry, float* attributes,
-                           FixedPlanes* fixed = nullptr);
+                           FixedPlanes* fixed = nullptr, const TriangleShading* gouraud = nullptr);
 
 // Copies a Gouraud record's depth plane, float attribute planes and (when both are given) fixed planes,
 // re-anchored from `from`'s box corner to pixel (x0, y0); the planes themselves are unchanged. `to`'s

@@ -1,0 +1,41 @@
+// Host cost of the combined method's per-triangle choice (triangle_choice.hpp): the setup-side work that
+// decides Gouraud or segments, the specular mask and the segment limit for every screen triangle, per rule,
+// on one host thread (items/s = triangles/s). The kernel's saving must exceed this for the choice to pay.
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+
+#include "parashade/geometry_stage.hpp"
+#include "parashade/parallel.hpp"
+#include "parashade/triangle_choice.hpp"
+
+namespace {
+
+using namespace parashade;
+
+void choose(benchmark::State& state, const char* scene_file, TriangleRule rule) {
+  set_host_threads(1);
+  const Scene scene = load_scene(std::string(PARASHADE_SOURCE_DIR) + "/" + scene_file);
+  ScreenGeometry g;
+  build_screen_geometry(scene, {Method::combined, false, true}, g);
+  CombinedConfig c = parse_combined("combined:auto");
+  c.rule = rule;
+  std::vector<TriangleShading> out;
+  for (auto _ : state) {
+    const TriangleChoiceStats st = choose_triangle_methods(scene, g, c, 0.5, out);
+    benchmark::DoNotOptimize(st.gouraud);
+  }
+  state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(g.triangles.size()));
+}
+
+BENCHMARK_CAPTURE(choose, teapot_bound, "scenes/teapot.json", TriangleRule::bound)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(choose, teapot_sources, "scenes/teapot.json", TriangleRule::sources)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(choose, sphere_bound, "scenes/sphere.json", TriangleRule::bound)->Unit(benchmark::kMillisecond);
+// The bunny's scene reads its mesh from PARASHADE_MESH_DIR (registered only when that is set).
+const bool bunny = std::getenv("PARASHADE_MESH_DIR") &&
+                   benchmark::RegisterBenchmark("choose/bunny_bound", choose, "scenes/bunny.json", TriangleRule::bound)
+                       ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

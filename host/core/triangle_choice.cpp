@@ -1,0 +1,326 @@
+#include "parashade/triangle_choice.hpp"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <cstring>
+
+#include "parashade/errors.hpp"
+#include "parashade/highlight.hpp"
+#include "parashade/light_bounds.hpp"
+#include "parashade/parallel.hpp"
+#include "triangle_record.h"
+
+namespace parashade {
+
+double gouraud_term_bound(double phi, double n, bool crosses_zero) {
+  if (!(phi > 0.0)) return 0.0;
+  if (!(phi < 0.5 * M_PI)) return 1.0;
+  const double chord = chord_error_bound(phi, n, crosses_zero);
+  // Along an edge the ends are unit normals: only normalization's non-uniform angle adds. Along a span
+  // the ends are interpolations of length >= cos(phi/2), so the chord parameter is off by delta too.
+  const double root = std::sqrt(1.0 / std::cos(0.5 * phi));
+  const double delta = (root - 1.0) / (root + 1.0);
+  const double edge = chord + angle_shift_error(nonuniform_angle(phi), n);
+  const double span = chord + angle_shift_error(2.0 * delta * std::tan(0.5 * phi) + nonuniform_angle(phi), n);
+  return std::min(1.0, edge + span);
+}
+
+double psi_limit_for(const Scene& s, const Material& m, double budget_levels, bool terminator, bool specular) {
+  const auto levels = [&](double psi) {
+    const double diffuse = segment_term_bound(psi, 1.0, terminator);
+    const double spec = specular ? segment_term_bound(psi, m.shininess) : 0.0;
+    double worst = 0.0;
+    for (int c = 0; c < 3; ++c) {
+      double sum = 0.0;
+      for (const Light& l : s.lights) sum += 255.0 * l.color[c] * (m.diffuse[c] * diffuse + m.specular[c] * spec);
+      worst = std::max(worst, sum);
+    }
+    return worst;
+  };
+  if (levels(0.0) > budget_levels) return 0.0;
+  double lo = 0.0, hi = 1.0;  // the error grows with psi
+  for (int i = 0; i < 40; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (levels(mid) <= budget_levels ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+namespace {
+
+glm::dvec3 unit(const glm::dvec3& v) { return v / glm::length(v); }
+
+// The listing's selectMetod(): true = Gouraud. Light 0's direction and the view direction are taken at
+// the triangle's centroid (the listing's scene has a directional light and a distant viewer).
+bool sources_choose_gouraud(const Scene& s, const TriangleFrame& f, const CombinedConfig& c) {
+  if (!f.usable) return false;
+  const double m[3] = {glm::dot(f.n[0], f.n[1]), glm::dot(f.n[0], f.n[2]), glm::dot(f.n[1], f.n[2])};
+  for (double mij : m) {
+    if (c.rule == TriangleRule::sources_literal ? std::abs(mij) > c.source_m : !(mij > c.source_m)) return false;
+  }
+  if (s.lights.empty()) return true;
+  const Light& l = s.lights[0];
+  const glm::dvec3 light = l.type == LightType::directional ? -unit(glm::dvec3(l.direction))
+                                                            : unit(glm::dvec3(l.position) - f.centroid);
+  const glm::dvec3& view = f.view_centre;
+  const glm::dvec3 h = light + view;  // unnormalized, as in the listing
+  const auto spread = [&](const glm::dvec3& d) {
+    const double a = glm::dot(f.n[0], d), b = glm::dot(f.n[1], d), e = glm::dot(f.n[2], d);
+    return std::max({std::abs(a - b), std::abs(a - e), std::abs(b - e)});
+  };
+  return spread(h) <= c.source_q && spread(light) <= c.source_p;
+}
+
+}  // namespace
+
+namespace {
+
+// An increasing function tabulated on [0, hi]: at() returns the value at the next grid point at or above x,
+// never less than f(x) (the bounds stay bounds). The per-triangle pass calls pow and the chord bound for
+// many triangles; a lookup is ~20x cheaper.
+class IncreasingTable {
+ public:
+  IncreasingTable() = default;
+  template <typename F>
+  IncreasingTable(double hi, const F& f) : step_(hi / double(kSize - 1)) {
+    for (int i = 0; i < kSize; ++i) value_[i] = f(step_ * double(i));
+  }
+  double at(double x) const {
+    if (!(x > 0.0)) return value_[0];
+    const double i = std::ceil(x / step_);
+    return i < double(kSize) ? value_[std::size_t(i)] : value_[kSize - 1];
+  }
+
+ private:
+  static constexpr int kSize = 1024;
+  double step_ = 1.0;
+  std::array<double, kSize> value_{};
+};
+
+// Distance from the origin to the triangle (a, b, c): the smallest |N'| of the interpolated normals
+// (Ericson, Real-Time Collision Detection 5.1.5, with the point at the origin).
+double distance_to_origin(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+  const glm::dvec3 ab = b - a, ac = c - a, ap = -a;
+  const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0) return glm::length(a);
+  const glm::dvec3 bp = -b;
+  const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3) return glm::length(b);
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return glm::length(a + ab * (d1 / (d1 - d3)));
+  const glm::dvec3 cp = -c;
+  const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6) return glm::length(c);
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return glm::length(a + ac * (d2 / (d2 - d6)));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) return glm::length(b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))));
+  const double denom = 1.0 / (va + vb + vc);
+  return glm::length(a + ab * (vb * denom) + ac * (vc * denom));
+}
+
+// One light's diffuse term over a triangle whose interpolated normals N' = sum b_i n_i and light vectors
+// D' = sum b_i d_i (d_i = P - w_i, or L for a directional light) are screen-linear, as in the kernel.
+struct DiffuseBound {
+  enum { lit, dark, crosses } state;
+  double levels_unit;  // bound on |Gouraud - Phong| of max(0, N.L) (lit: docs/triangle-choice.md §2)
+};
+DiffuseBound diffuse_bound(const TriangleFrame& f, double normal_chord, double min_normal, const Light& l,
+                           const LightBounds& b) {
+  // N'.D' = sum b_i b_j n_i.d_j: positive (negative) where every pair is.
+  bool all_positive = true, all_nonpositive = true;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double v = glm::dot(f.n[i], l.type == LightType::directional ? b.light_centre : glm::dvec3(l.position) - f.w[j]);
+      all_positive &= v > 0.0;
+      all_nonpositive &= v <= 0.0;
+    }
+  if (all_nonpositive) return {DiffuseBound::dark, 0.0};
+  if (!all_positive) return {DiffuseBound::crosses, 1.0};
+  // Any two L within two chords of the centroid's; the distances to the light within [dist - r, dist + r].
+  const double light_chord = std::min(2.0, 2.0 * b.light_chord);
+  const double rho = b.light_distance > 0.0 ? (b.light_distance + f.radius) / (b.light_distance - f.radius) : 1.0;
+  const double min_light = std::sqrt(std::max(1e-6, 1.0 - light_chord * light_chord / 3.0));
+  // Gouraud - Phong = [sum b_i n_i.L_i - N'.L'] + [N'.L' - N^.L'] + [N^.L' - N^.L^], L' = sum b_i L_i:
+  // the first is (1/2) sum b_i b_j (n_i - n_j).(L_i - L_j), the second (N^.L')(|N'| - 1), the third
+  // at most (1 - |L'|) plus the turn from reweighting L' by the distances (ratio rho).
+  const double bound = normal_chord * light_chord / 3.0 + (1.0 - min_normal) + (1.0 - min_light) +
+                       (rho - 1.0) * light_chord / min_light;
+  return {DiffuseBound::lit, std::min(1.0, bound)};
+}
+
+}  // namespace
+
+TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry& g, const CombinedConfig& c,
+                                            double shading_budget, std::vector<TriangleShading>& out) {
+  const std::size_t count = g.triangles.size();
+  out.resize(count);
+  const bool bound = c.rule == TriangleRule::bound;
+  const unsigned all_lights = (1u << s.lights.size()) - 1u;
+  // Specular terms the mask drops add up to negligible_specular each.
+  const bool masked = uses_highlight_mask(c);
+  const double segment_budget =
+      std::max(0.0, shading_budget - (masked ? c.negligible_specular * double(s.lights.size()) : 0.0));
+  // psi limits per material and (terminator, specular) class.
+  std::vector<float> psi(s.materials.size() * 4, 0.0f);
+  if (c.automatic)
+    for (std::size_t mi = 0; mi < s.materials.size(); ++mi)
+      for (int cls = 0; cls < 4; ++cls)
+        psi[4 * mi + cls] = bound || cls == 3 ? float(psi_limit_for(s, s.materials[mi], segment_budget, cls & 1, cls & 2))
+                                              : 0.0f;
+  // The masks travel as floats in the records: exact up to 24 bits.
+  if (s.lights.size() > 24) throw InputError("the per-triangle choice handles at most 24 lights");
+  const std::size_t lights = s.lights.size();
+  const std::vector<double> thresholds = negligible_cosines(s, c.negligible_specular);
+  // Levels per unit of a light's diffuse and specular term, largest channel, per (material, light).
+  std::vector<double> diffuse_levels, specular_levels;
+  for (const Material& m : s.materials)
+    for (const Light& l : s.lights) {
+      double d = 0.0, sp = 0.0;
+      for (int ch = 0; ch < 3; ++ch) {
+        d = std::max(d, 255.0 * double(l.color[ch]) * double(m.diffuse[ch]));
+        sp = std::max(sp, 255.0 * double(l.color[ch]) * double(m.specular[ch]));
+      }
+      diffuse_levels.push_back(d);
+      specular_levels.push_back(sp);
+    }
+  // Per material: x^n on [0, 1], and the chord bounds of the specular (n) and diffuse (1) terms beyond
+  // pi/2 the bound is 1 anyway.
+  std::vector<IncreasingTable> power(s.materials.size()), specular_chord(s.materials.size());
+  const IncreasingTable diffuse_chord(0.5 * M_PI, [](double phi) { return gouraud_term_bound(phi, 1.0, true); });
+  if (bound)
+    for (std::size_t mi = 0; mi < s.materials.size(); ++mi) {
+      const double n = s.materials[mi].shininess;
+      power[mi] = IncreasingTable(1.0, [n](double x) { return std::pow(x, n); });
+      specular_chord[mi] = IncreasingTable(0.5 * M_PI, [n](double phi) { return gouraud_term_bound(phi, n, true); });
+    }
+  const auto chord_bound = [](const IncreasingTable& t, double phi) { return phi < 0.5 * M_PI ? t.at(phi) : 1.0; };
+  const int fixed_walk_width = combined_min_width(c);
+  std::atomic<std::uint64_t> gouraud{0}, segments{0}, without{0}, terminator{0};
+  std::atomic<std::uint64_t> largest_bits{0};  // largest expected error among Gouraud triangles (double bits)
+  parallel_for_ranges(count, 1024, [&](std::size_t first, std::size_t last) {
+    std::uint64_t n_gouraud = 0, n_segments = 0, n_without = 0, n_terminator = 0;
+    double largest = 0.0;
+    for (std::size_t t = first; t < last; ++t) {
+      TriangleShading& o = out[t];
+      const TriangleFrame f = triangle_frame(s, g, t);
+      const std::size_t mat = g.material[t];
+      const glm::uvec3 idx = g.triangles[t];
+      const glm::dvec2 p[3] = {glm::dvec2(g.xy[idx.x]) / double(kSubpixel), glm::dvec2(g.xy[idx.y]) / double(kSubpixel),
+                               glm::dvec2(g.xy[idx.z]) / double(kSubpixel)};
+      const double width = std::max({p[0].x, p[1].x, p[2].x}) - std::min({p[0].x, p[1].x, p[2].x});
+      // Per light: the specular bound (cheap cone test first), and from it the mask.
+      const double* threshold = &thresholds[mat * lights];
+      LightBounds bounds[24];
+      unsigned mask = all_lights;
+      if (masked && f.usable) {
+        mask = 0;
+        for (std::size_t i = 0; i < lights; ++i) {
+          bounds[i] = light_bounds(f, s.lights[i], 2.0);  // the cone test alone: the exact one costs more than it saves
+          if (bounds[i].max_n_dot_h > threshold[i]) mask |= 1u << i;
+        }
+      }
+      o.specular_mask = mask;
+      n_without += mask == 0;
+      double min_normal = 0.0;
+      if (f.usable) min_normal = distance_to_origin(f.n[0], f.n[1], f.n[2]);
+      // Diffuse bounds per light, computed when first needed.
+      DiffuseBound diffuse[24];
+      std::size_t analysed = 0;
+      const double normal_chord = std::sqrt(std::max(0.0, 2.0 - 2.0 * f.cos_normal_spread));
+      const auto diffuse_of = [&](std::size_t i) -> const DiffuseBound& {
+        for (; analysed <= i; ++analysed)
+          diffuse[analysed] = diffuse_bound(f, normal_chord, min_normal, s.lights[analysed], bounds[analysed]);
+        return diffuse[i];
+      };
+      if (!bound) {
+        o.method = c.rule != TriangleRule::none && sources_choose_gouraud(s, f, c) ? TriangleMethod::gouraud
+                                                                                     : TriangleMethod::phong;
+      } else {
+        // Clip-made vertices carry interpolated colours and normals: no Gouraud bound for them.
+        const bool clipped = idx.x >= g.clip.size() || idx.y >= g.clip.size() || idx.z >= g.clip.size();
+        // Expected |Gouraud - Phong| in levels, summed term by term (largest channel each), cheapest and most
+        // often decisive first; a light whose specular term the mask drops adds at most negligible_specular.
+        double expected = c.negligible_specular * double(lights - std::size_t(__builtin_popcount(mask)));
+        bool fits = f.usable && !clipped && expected <= shading_budget;
+        for (std::size_t i = 0; i < lights && fits; ++i) {
+          if (!(mask & (1u << i))) continue;
+          // Both images lie in [0, peak]: the chord bound only when the peak alone does not fit.
+          const double peak = specular_levels[mat * lights + i] * power[mat].at(bounds[i].max_n_dot_h);
+          expected += expected + peak <= shading_budget
+                          ? peak
+                          : std::min(peak, specular_levels[mat * lights + i] *
+                                               chord_bound(specular_chord[mat], f.normal_spread() + bounds[i].h_spread()));
+          fits = expected <= shading_budget;
+        }
+        for (std::size_t i = 0; i < lights && fits; ++i) {
+          const DiffuseBound& d = diffuse_of(i);
+          expected += diffuse_levels[mat * lights + i] *
+                      (d.state == DiffuseBound::crosses
+                           ? chord_bound(diffuse_chord, f.normal_spread() + bounds[i].l_spread())
+                           : d.levels_unit);
+          fits = expected <= shading_budget;
+        }
+        if (fits) {
+          o.method = TriangleMethod::gouraud;
+          largest = std::max(largest, expected);
+        }
+      }
+      if (o.method != TriangleMethod::gouraud) {
+        if (!c.automatic) {
+          o.method = width + 1.0 >= double(fixed_walk_width) ? TriangleMethod::segments : TriangleMethod::phong;
+        } else if (f.usable && width + 1.0 >= double(2 << c.walk_min_k)) {
+          // Which terms can show decides the segment limit psi (a terminator, a highlight).
+          bool crosses_any = !bound;
+          for (std::size_t i = 0; i < lights && !crosses_any; ++i) crosses_any = diffuse_of(i).state == DiffuseBound::crosses;
+          n_terminator += crosses_any;
+          const int cls = (crosses_any ? 1 : 0) | (mask || !bound ? 2 : 0);
+          o.psi_limit = psi[4 * mat + cls];
+          // The segment length the kernel can use on this triangle: |dN/dx| 2^K <= psi min|N'|.
+          const glm::dvec2 e1 = p[1] - p[0], e2 = p[2] - p[0];
+          const double det = e1.x * e2.y - e2.x * e1.y;
+          const glm::dvec3 ddx = ((f.n[1] - f.n[0]) * e2.y - (f.n[2] - f.n[0]) * e1.y) / det;
+          const double allowed = double(o.psi_limit) * min_normal, change = glm::length(ddx);
+          int k = 0;
+          while (k < kCombinedMaxK && change * double(2 << k) <= allowed) ++k;
+          o.method = k >= c.walk_min_k && width + 1.0 >= double(2 << k) ? TriangleMethod::segments : TriangleMethod::phong;
+        } else {
+          o.method = TriangleMethod::phong;
+        }
+      }
+      n_gouraud += o.method == TriangleMethod::gouraud;
+      n_segments += o.method == TriangleMethod::segments;
+    }
+    gouraud += n_gouraud;
+    segments += n_segments;
+    without += n_without;
+    terminator += n_terminator;
+    // A positive double's bits order like the double: an atomic max on the bits.
+    std::uint64_t bits, seen = largest_bits.load();
+    std::memcpy(&bits, &largest, sizeof bits);
+    while (bits > seen && !largest_bits.compare_exchange_weak(seen, bits)) {
+    }
+  });
+  TriangleChoiceStats st;
+  st.triangles = count;
+  st.gouraud = gouraud.load();
+  st.segments = segments.load();
+  st.without_highlight = without.load();
+  st.terminator = terminator.load();
+  const std::uint64_t bits = largest_bits.load();
+  std::memcpy(&st.largest_expected_levels, &bits, sizeof bits);
+  return st;
+}
+
+void apply_triangle_choice(const std::vector<TriangleShading>& choice, float* attributes, std::size_t stride) {
+  for (std::size_t t = 0; t < choice.size(); ++t) {
+    float* a = attributes + t * stride;
+    a[PHONG_HIGHLIGHT_SLOT] = float(choice[t].specular_mask);
+    a[PHONG_METHOD_SLOT] = float(int(choice[t].method));
+    a[PHONG_PSI_SLOT] = choice[t].psi_limit;
+  }
+}
+
+}  // namespace parashade
