@@ -127,6 +127,11 @@ Renderer::Renderer(Device& device, RenderOptions options) : device_(device), opt
     throw UsageError("--specular " + specular_name(options_.specular) + " needs --method phong (the other methods light on the host)");
   if (options_.normalize.kind != NormalizeKind::exact && options_.method != Method::phong)
     throw UsageError("--normalize " + normalize_name(options_.normalize) + " needs --method phong");
+  // The units' Phong normalizes every pixel (method_phong_units.h) and their counters share tile_clocks
+  // with the normalization's: the option would be ignored and its report wrong.
+  if (options_.span_normalize() && options_.unit_path())
+    throw UsageError("--normalize " + normalize_name(options_.normalize) +
+                     " has no shading-unit model (--units, --arith fixed): the units normalize per pixel");
   if (options_.dda_coverage && options_.method != Method::gouraud)
     throw UsageError("--coverage dda is modeled for Gouraud's units only");
   if (options_.method == Method::combined && options_.unit_path())

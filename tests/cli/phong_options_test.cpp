@@ -33,6 +33,8 @@ TEST_F(CliPhongOptions, OptionsNeedPhong) {
                          {"--normalize", "phong"}));
   EXPECT_TRUE(fails_with(render(scene_, {"--method", "phong", "--normalize", "dichotomy:linear:7"}), kUsage,
                          {"--normalize", "dichotomy:linear:7", "K in 1..6"}));
+  EXPECT_TRUE(fails_with(render(scene_, {"--method", "phong", "--units", "classic", "--normalize", "slerp"}), kUsage,
+                         {"--normalize", "slerp", "--units"}));
   EXPECT_TRUE(nothing_written());
 }
 
