@@ -19,6 +19,7 @@ typedef uint16 uintV;
 #define convert_uintV convert_uint16
 #define convert_ucharV_sat_rte convert_uchar16_sat_rte
 #define vstoreV vstore16
+#define vloadV vload16
 #define as_intV as_int16
 #define as_uintV as_uint16
 #define as_floatV as_float16

@@ -45,9 +45,18 @@ INLINE float3 plane_normal_at(__global const float* a, float fdy, float x) {
   return (float3)(a[0] + a[6] * fdy + a[3] * x, a[1] + a[7] * fdy + a[4] * x, a[2] + a[8] * fdy + a[5] * x);
 }
 
-INLINE SpanNormals span_setup(__global const float* a, int dy, int xl, int xr) {
+/* The span's setup in one tile, which shades its pixels first..last (relative to x0; the tile's
+ * column 0 at column0): for the recurrence, the sequential unit's run over them. Returns the unit's
+ * steps (0 for the per-lane methods). */
+INLINE uint span_setup(SpanNormals* s, __global const float* a, int dy, int xl, int xr, int first, int last,
+                       int column0) {
   const float fdy = (float)dy;
-  return span_normals_setup(plane_normal_at(a, fdy, (float)xl), plane_normal_at(a, fdy, (float)xr));
+  span_normals_setup(s, plane_normal_at(a, fdy, (float)xl), plane_normal_at(a, fdy, (float)xr));
+#if NORMALIZE_METHOD == 4
+  return span_normals_walk(s, xr - xl + 1, first - xl, last - xl, column0 - xl);
+#else
+  return 0u;
+#endif
 }
 
 INLINE void shade_pixels_span(__global const float* a, int dy, floatV rel, const SpanNormals* s, int xl, int xr,
@@ -57,10 +66,8 @@ INLINE void shade_pixels_span(__global const float* a, int dy, floatV rel, const
     shade_pixels(a, dy, rel, r, g, b, lights, materials, viewer);
     return;
   }
-  const float fdy = (float)dy;
-  const floatV t = xr > xl ? (rel - (float)xl) * (1.0f / (float)(xr - xl)) : (floatV)0.0f;
   floatV nx, ny, nz;
-  span_normal_at(s, t, &nx, &ny, &nz);
-  shade_unit_normal(a, fdy, rel, nx, ny, nz, r, g, b, lights, materials, viewer);
+  span_pixel_normals(s, convert_intV(rel) - xl, xr - xl + 1, &nx, &ny, &nz);
+  shade_unit_normal(a, (float)dy, rel, nx, ny, nz, r, g, b, lights, materials, viewer);
 }
 #endif

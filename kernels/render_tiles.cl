@@ -73,15 +73,17 @@ INLINE void keep(intV pass, floatV sr, floatV sg, floatV sb, floatV* cr, floatV*
 }
 
 #if SHADE_SPAN
-/* Per-span normalization (method_phong.h): a span's setup, once per span and tile; its end normals and
- * the fallback count (spans, fallbacks) go to tile_clocks. */
-#define SPAN_SETUP(attr, dy, xl, xr) \
-  const SpanNormals span_n = span_setup(attr, dy, xl, xr); \
+/* Per-span normalization (method_phong.h): a span's setup, once per span and tile, for the tile's
+ * pixels first..last of it; its end normals, the fallback count and a sequential unit's steps (spans,
+ * fallbacks, steps) go to tile_clocks. */
+#define SPAN_SETUP(attr, dy, xl, xr, first, last) \
+  SpanNormals span_n; \
+  span_steps += span_setup(&span_n, attr, dy, xl, xr, first, last, tile_x - x0); \
   span_setups += 1; \
   span_fallbacks += span_n.fallback;
 #define SPAN_ARGS , &span_n, span_xl, span_xr
 #else
-#define SPAN_SETUP(attr, dy, xl, xr)
+#define SPAN_SETUP(attr, dy, xl, xr, first, last)
 #define SPAN_ARGS
 #endif
 #if COMBINED
@@ -160,7 +162,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
   ulong spans = 0, span_pixels = 0, clocks = 0;
 #endif
 #if SHADE_SPAN
-  ulong span_setups = 0, span_fallbacks = 0;
+  ulong span_setups = 0, span_fallbacks = 0, span_steps = 0;
 #endif
   const intV lane = LANE_INDEX;
   int span_lo[VEC], span_hi[VEC];
@@ -256,7 +258,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
         row_spans_small(t, (intV)dy, &sl_v, &sr_v, 0, t->x1 - x0);
         const int span_xl = sl_v.s0, span_xr = sr_v.s0;
         if (span_xl > span_xr) continue;
-        SPAN_SETUP(attr, dy, span_xl, span_xr)
+        SPAN_SETUP(attr, dy, span_xl, span_xr, max(span_xl, lo), min(span_xr, hi))
 #endif
         for (int s = seg_first; s <= seg_last; ++s) {
           const intV rel = lane + (tile_x + s * VEC - x0);
@@ -286,7 +288,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
 #endif
         if (xl > xr) continue;
         const int py = block + j;
-        SPAN_SETUP(attr, py - y0, span_xl, span_xr)
+        SPAN_SETUP(attr, py - y0, span_xl, span_xr, xl, xr)
         for (int s = (xl + x0 - tile_x) / VEC; s <= (xr + x0 - tile_x) / VEC; ++s) {
           const intV rel = lane + (tile_x + s * VEC - x0);
           shade_segment(t, attr, py - y0, rel, (rel >= xl) & (rel <= xr), (py - tile_y) * SEGMENTS + s, depth, cr, cg,
@@ -338,6 +340,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
 #if SHADE_SPAN && PLAN_PASS != 1
   tile_clocks[3 * tile] = span_setups;
   tile_clocks[3 * tile + 1] = span_fallbacks;
+  tile_clocks[3 * tile + 2] = span_steps;
 #endif
 #if UNIT_PATH && PLAN_PASS != 1
   tile_clocks[3 * tile] = spans;

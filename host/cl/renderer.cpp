@@ -76,9 +76,22 @@ std::string kernel_options(const Scene& s, const RenderOptions& o) {
     opt << " -D SPECULAR_MODEL=" << model << " -D SPECULAR_K=" << o.specular.k << " -D SPECULAR_P=" << std::to_string(o.specular.p)
         << "f -D SPECULAR_P_IS_2=" << (o.specular.p == 2.0 ? 1 : 0);
   }
-  if (o.span_normalize())
-    opt << " -D NORMALIZE_METHOD=" << (o.normalize.kind == NormalizeKind::slerp ? 1 : 2)
-        << " -D NORMALIZE_MID=" << int(o.normalize.mid);
+  if (o.span_normalize()) {
+    const NormalizeMethod& n = o.normalize;
+    switch (n.kind) {
+      case NormalizeKind::slerp: opt << " -D NORMALIZE_METHOD=1"; break;
+      case NormalizeKind::quadratic: opt << " -D NORMALIZE_METHOD=2 -D NORMALIZE_MID=" << int(n.mid); break;
+      case NormalizeKind::dichotomy:
+        opt << " -D NORMALIZE_METHOD=3 -D NORMALIZE_BISECTOR=" << int(n.bisector) << " -D NORMALIZE_SEGMENT_LOG2="
+            << n.segment_log2 << " -D NORMALIZE_EXTRAPOLATE=" << (n.extrapolate_last ? 1 : 0);
+        break;
+      case NormalizeKind::recurrence:
+        opt << " -D NORMALIZE_METHOD=4 -D NORMALIZE_ARCCOS=" << int(n.arccos) << " -D NORMALIZE_REANCHOR=" << n.reanchor
+            << " -D NORMALIZE_DIFFERENCE=" << (n.difference_form ? 1 : 0);
+        break;
+      case NormalizeKind::exact: break;
+    }
+  }
   if (o.method == Method::combined) opt << combined_kernel_options(o.combined);
   if (o.unit_path()) {
     const UnitConfig u = o.unit();
@@ -114,10 +127,11 @@ Renderer::Renderer(Device& device, RenderOptions options) : device_(device), opt
     throw UsageError("--specular " + specular_name(options_.specular) + " needs --method phong (the other methods light on the host)");
   if (options_.normalize.kind != NormalizeKind::exact && options_.method != Method::phong)
     throw UsageError("--normalize " + normalize_name(options_.normalize) + " needs --method phong");
-  if (options_.normalize.kind == NormalizeKind::dichotomy || options_.normalize.kind == NormalizeKind::recurrence)
+  // The units' Phong normalizes every pixel (method_phong_units.h) and their counters share tile_clocks
+  // with the normalization's: the option would be ignored and its report wrong.
+  if (options_.span_normalize() && options_.unit_path())
     throw UsageError("--normalize " + normalize_name(options_.normalize) +
-                     ": the kernel shades a span's pixels as parallel lanes; this sequential method is in the host "
-                     "library and 'parashade phong-study' only (kernel: exact, slerp, quadratic:*)");
+                     " has no shading-unit model (--units, --arith fixed): the units normalize per pixel");
   if (options_.dda_coverage && options_.method != Method::gouraud)
     throw UsageError("--coverage dda is modeled for Gouraud's units only");
   if (options_.method == Method::combined && options_.unit_path())
@@ -390,6 +404,7 @@ const Frame& Renderer::render(const Scene& scene) {
       for (int tile = 0; tile < frame.stats.tiles && options_.span_normalize(); ++tile) {
         frame.stats.normalize_span_setups += tile_clocks[3 * tile];
         frame.stats.normalize_fallback_spans += tile_clocks[3 * tile + 1];
+        frame.stats.normalize_sequential_steps += tile_clocks[3 * tile + 2];
       }
       for (int tile = 0; tile < frame.stats.tiles && options_.unit_path(); ++tile) {
         c.spans += tile_clocks[3 * tile];

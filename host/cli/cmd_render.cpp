@@ -178,7 +178,8 @@ int run_render(const RenderArgs& a) {
       {"specular", specular_name(options.specular)},
       {"normalize", {{"method", normalize_name(options.normalize)},
                      {"span_setups", frame.stats.normalize_span_setups},
-                     {"fallback_spans", frame.stats.normalize_fallback_spans}}},
+                     {"fallback_spans", frame.stats.normalize_fallback_spans},
+                     {"sequential_steps", frame.stats.normalize_sequential_steps}}},
       {"width", scene.width},
       {"height", scene.height},
       {"tile_size", options.tile_size},
@@ -244,10 +245,15 @@ int run_render(const RenderArgs& a) {
     std::printf("planned frame: planning %.3f ms, units' depth pass %.3f ms, resolve kernel %.3f ms (medians)\n",
                 med.planning_ms, med.unit_pass_ms, med.kernel_ms);
   }
-  if (options.span_normalize() || options.specular.kind != SpecularKind::exact)
-    std::printf("phong: normals %s (%llu span setups, %llu fell back to the exact normal), specular %s\n",
+  if (options.span_normalize() || options.specular.kind != SpecularKind::exact) {
+    const std::string steps = frame.stats.normalize_sequential_steps
+                                  ? ", " + std::to_string(frame.stats.normalize_sequential_steps) + " sequential steps"
+                                  : "";
+    std::printf("phong: normals %s (%llu span setups, %llu fell back to the exact normal%s), specular %s\n",
                 normalize_name(options.normalize).c_str(), (unsigned long long)frame.stats.normalize_span_setups,
-                (unsigned long long)frame.stats.normalize_fallback_spans, specular_name(options.specular).c_str());
+                (unsigned long long)frame.stats.normalize_fallback_spans, steps.c_str(),
+                specular_name(options.specular).c_str());
+  }
   if (const auto& c = frame.stats.choice)
     std::printf("triangle choice %s: of %llu triangles %llu by Gouraud (largest expected error %.2f levels), %llu by "
                 "segments, %llu by Phong per pixel; %llu where a terminator may cross\n",
@@ -283,7 +289,10 @@ Command add_render_command(CLI::App& app) {
                   "Phong specular model: exact, cosk:taylor:2|4, cosk:lobe:2|4, quadratic, 7n16[:P] (docs/phong-methods.md)")
       ->capture_default_str();
   cmd->add_option("--normalize", a->normalize,
-                  "Phong unit normals: exact, slerp, quadratic:exact|quad|cubic|cubic-fit (docs/phong-methods.md)")
+                  "Phong unit normals: exact, slerp, quadratic:exact|quad|cubic|cubic-fit, "
+                  "dichotomy:exact|linear|quadratic|linear-fit|quadratic-fit[:K][:extrapolate] (segments of 2^K, K = 1..6, "
+                  "default 4), recurrence[-diff][:exact|table|table-fixed][:R] (a sequential unit per span, re-anchored "
+                  "every R pixels) (docs/phong-methods.md)")
       ->capture_default_str();
   cmd->add_option("--device", a->device,
                   "OpenCL device: index or name substring (see 'parashade devices'); 'all' or a comma list splits the "

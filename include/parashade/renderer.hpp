@@ -68,8 +68,9 @@ struct FrameStats {
   std::uint64_t bin_entries = 0;
   int tiles = 0;
   ModeledClocks clocks;  // on the unit path only (RenderOptions::unit_path)
-  // Per-span normalization: span setups (per span and tile) and those that fell back to the exact normal.
-  std::uint64_t normalize_span_setups = 0, normalize_fallback_spans = 0;
+  // Per-span normalization: span setups (per span and tile), those that fell back to the exact normal,
+  // and a sequential method's unit steps (the recurrence: pixels stepped, including those before a tile).
+  std::uint64_t normalize_span_setups = 0, normalize_fallback_spans = 0, normalize_sequential_steps = 0;
   std::uint64_t parity_dropped = 0;  // sierpinski: triangles degenerate after vertex parity normalization
   std::uint64_t sierpinski_whole = 0;  // sierpinski :touch/:overlap: too small to halve, shaded whole
   std::optional<PlanReport> plan;    // with a plan: the modeled per-unit load

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_fixture.hpp"
+#include "parashade/image.hpp"
 
 namespace parashade {
 namespace {
@@ -28,9 +29,34 @@ TEST_F(CliPhongOptions, UnknownNormalizeOrSpecularIsNamed) {
 TEST_F(CliPhongOptions, OptionsNeedPhong) {
   EXPECT_TRUE(fails_with(render(scene_, {"--method", "gouraud", "--specular", "quadratic"}), kUsage, {"--specular", "phong"}));
   EXPECT_TRUE(fails_with(render(scene_, {"--method", "flat", "--normalize", "slerp"}), kUsage, {"--normalize", "phong"}));
-  // Sequential methods are host-library only.
-  EXPECT_TRUE(fails_with(render(scene_, {"--method", "phong", "--normalize", "recurrence"}), kUsage, {"recurrence", "phong-study"}));
+  EXPECT_TRUE(fails_with(render(scene_, {"--method", "gouraud", "--normalize", "recurrence"}), kUsage,
+                         {"--normalize", "phong"}));
+  EXPECT_TRUE(fails_with(render(scene_, {"--method", "phong", "--normalize", "dichotomy:linear:7"}), kUsage,
+                         {"--normalize", "dichotomy:linear:7", "K in 1..6"}));
+  EXPECT_TRUE(fails_with(render(scene_, {"--method", "phong", "--units", "classic", "--normalize", "slerp"}), kUsage,
+                         {"--normalize", "slerp", "--units"}));
   EXPECT_TRUE(nothing_written());
+}
+
+// The sequential methods render in the kernel: an image of the scene's size with the sphere in it, and
+// the report's normalize section (the recurrence's unit steps; no fallbacks on a smooth sphere).
+TEST_F(CliPhongOptions, DichotomyAndRecurrenceRender) {
+  for (const std::string m : {"dichotomy:linear:3", "recurrence-diff:exact:64"}) {
+    SCOPED_TRACE(m);
+    const RunResult r = render(scene_, {"--method", "phong", "--normalize", m}, ErrorFigures::compute);
+    ASSERT_TRUE(succeeds(r)) << r;
+    const RenderedImage img = read_image(image());
+    EXPECT_EQ(img.width, 64);
+    EXPECT_EQ(img.height, 48);
+    EXPECT_NE(img.rgba[4 * (24 * 64 + 32)], img.rgba[0]) << "the sphere at the centre";
+    const nlohmann::json rep = read_report();
+    EXPECT_EQ(field(rep, "/normalize/method"), m);
+    EXPECT_GT(field(rep, "/normalize/span_setups"), 0);
+    EXPECT_EQ(field(rep, "/normalize/fallback_spans"), 0);
+    EXPECT_EQ(field(rep, "/normalize/sequential_steps") > 0, m.rfind("recurrence", 0) == 0);
+    // Against exact Phong: small normal differences on a smooth sphere of 64 x 48 pixels.
+    EXPECT_LT(field(rep, "/error/method/max_abs"), 16.0) << rep.dump(2);
+  }
 }
 
 TEST_F(CliPhongOptions, StudyWritesClaims) {
