@@ -44,6 +44,16 @@ double sine_of(double cosine) { return std::sqrt(std::max(0.0, 1.0 - cosine * co
 // A chord c between unit vectors is the angle 2 asin(c/2).
 double chord_angle(double chord) { return chord < 2.0 ? 2.0 * std::asin(0.5 * chord) : M_PI; }
 
+// Largest N.D for N in the normals' cone and D within the angle beta (sin beta = sin_radius, beta < pi/2)
+// of the unit d: cos(gap), gap = angle(c_N, d) - a_N - beta, when positive; else 1. By cosines: no acos.
+double max_cosine_between_cones(const TriangleFrame& f, const glm::dvec3& d, double sin_radius) {
+  if (!(f.normal_cos_half > 0.0) || !(sin_radius < 1.0)) return 1.0;
+  const double cos_n = f.normal_cos_half, sin_n = sine_of(cos_n), cos_b = std::sqrt(1.0 - sin_radius * sin_radius);
+  const double cos_r = cos_n * cos_b - sin_n * sin_radius, sin_r = sin_n * cos_b + cos_n * sin_radius;  // a_N + beta
+  const double cos_t = glm::dot(f.normal_centre, d), sin_t = sine_of(cos_t);
+  return cos_t < cos_r ? cos_t * cos_r + sin_t * sin_r : 1.0;  // the gap is positive where cos_t < cos_r
+}
+
 }  // namespace
 
 double TriangleFrame::normal_spread() const { return angle(cos_normal_spread); }
@@ -102,6 +112,9 @@ LightBounds light_bounds(const TriangleFrame& f, const Light& l, double enough) 
     b.light_chord = 2.0 * f.radius / dist;
     b.light_distance = dist;
   }
+  // L is within the angle 2 asin(chord/2) of c_L, whose sine is chord sqrt(1 - chord^2/4).
+  b.max_n_dot_l = max_cosine_between_cones(f, b.light_centre,
+                                           b.light_chord * std::sqrt(std::max(0.0, 1.0 - 0.25 * b.light_chord * b.light_chord)));
   // |(L + V) - (c_L + c_V)| <= chord_L + chord_V, so H is within asin(that / |c_L + c_V|) of
   // H_c = normalize(c_L + c_V).
   const glm::dvec3 sum = b.light_centre + f.view_centre;
@@ -110,14 +123,8 @@ LightBounds light_bounds(const TriangleFrame& f, const Light& l, double enough) 
   if (!(ratio < 1.0)) return b;
   b.sin_h_radius = ratio;
   const glm::dvec3 hc = sum / sum_len;
-  // Cheap first: the normals' cone against H's cone. The gap angle(c_N, H_c) - a_N - beta, by its cosines:
-  // N.H <= cos(gap) when the gap is positive.
-  if (f.normal_cos_half > 0.0) {
-    const double cos_n = f.normal_cos_half, sin_n = sine_of(cos_n), cos_b = std::sqrt(1.0 - ratio * ratio);
-    const double cos_r = cos_n * cos_b - sin_n * ratio, sin_r = sin_n * cos_b + cos_n * ratio;  // a_N + beta < pi
-    const double cos_t = glm::dot(f.normal_centre, hc), sin_t = sine_of(cos_t);
-    if (cos_t < cos_r) b.max_n_dot_h = cos_t * cos_r + sin_t * sin_r;  // the gap is positive
-  }
+  // Cheap first: the normals' cone against H's cone.
+  b.max_n_dot_h = max_cosine_between_cones(f, hc, ratio);
   if (b.max_n_dot_h <= enough || !(f.normal_cos_half > 0.0)) return b;
   const double distance = angle(max_cosine_over_normals(f.n[0], f.n[1], f.n[2], hc));
   const double spread = std::asin(ratio);

@@ -144,10 +144,11 @@ DiffuseBound diffuse_bound(const TriangleFrame& f, double normal_chord, double m
   const double rho = b.light_distance > 0.0 ? (b.light_distance + f.radius) / (b.light_distance - f.radius) : 1.0;
   const double min_light = std::sqrt(std::max(1e-6, 1.0 - light_chord * light_chord / 3.0));
   // Gouraud - Phong = [sum b_i n_i.L_i - N'.L'] + [N'.L' - N^.L'] + [N^.L' - N^.L^], L' = sum b_i L_i:
-  // the first is (1/2) sum b_i b_j (n_i - n_j).(L_i - L_j), the second (N^.L')(|N'| - 1), the third
+  // the first is (1/2) sum b_i b_j (n_i - n_j).(L_i - L_j), the second (N^.L')(|N'| - 1) with
+  // N^.L' <= |L'| max N.L over the cones, the third
   // at most (1 - |L'|) plus the turn from reweighting L' by the distances (ratio rho).
-  const double bound = normal_chord * light_chord / 3.0 + (1.0 - min_normal) + (1.0 - min_light) +
-                       (rho - 1.0) * light_chord / min_light;
+  const double bound = normal_chord * light_chord / 3.0 + (1.0 - min_normal) * std::clamp(b.max_n_dot_l, 0.0, 1.0) +
+                       (1.0 - min_light) + (rho - 1.0) * light_chord / min_light;
   return {DiffuseBound::lit, std::min(1.0, bound)};
 }
 

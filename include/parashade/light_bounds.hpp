@@ -37,6 +37,7 @@ TriangleFrame triangle_frame(const Scene& s, const ScreenGeometry& g, std::size_
 // chords are too wide, the bounds are the trivial ones (1, chord 2, radius pi/2).
 struct LightBounds {
   double max_n_dot_h = 1.0;
+  double max_n_dot_l = 1.0;     // every shaded point's N.L is at most this (the normals' cone against L's)
   glm::dvec3 light_centre{0.0, 0.0, 1.0};
   double light_chord = 2.0;
   double light_distance = 0.0;  // point light: from the centroid (0 for a directional light)

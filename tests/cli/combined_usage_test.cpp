@@ -36,5 +36,32 @@ TEST_F(CliCombinedUsage, HighlightTestNeedsCombined) {
   EXPECT_TRUE(nothing_written());
 }
 
+TEST_F(CliCombinedUsage, TriangleChoiceIsCheckedAndNamed) {
+  EXPECT_TRUE(fails_with(render(scene_, {"--method", "phong", "--triangle-choice", "bound"}), kUsage, {"--triangle-choice"}));
+  EXPECT_TRUE(fails_with(render(scene_, {"--method", "combined:2", "--triangle-choice", "best"}), kUsage,
+                         {"--triangle-choice", "best"}));
+  EXPECT_TRUE(fails_with(render(scene_, {"--method", "combined:0", "--triangle-choice", "sources:2,0.004,0.008"}), kUsage,
+                         {"sources:2,0.004,0.008"}));
+  EXPECT_TRUE(fails_with(render(scene_, {"--method", "combined:0", "--triangle-choice", "bound:1,1,1"}), kUsage,
+                         {"bound:1,1,1"}));
+  EXPECT_TRUE(fails_with(render(scene_, {"--method", "combined:0", "--triangle-choice", "sources:0.9,0.004"}), kUsage,
+                         {"sources:0.9,0.004"}));
+  EXPECT_TRUE(nothing_written());
+}
+
+// combined:auto chooses per triangle by default; the report gives the mix, and it adds up.
+TEST_F(CliCombinedUsage, ReportGivesTheMix) {
+  ASSERT_TRUE(succeeds(render(scene_, {"--method", "combined:auto", "--max-error", "2"})));
+  const auto r = read_report();
+  ASSERT_TRUE(r.contains("stats") && r["stats"].contains("triangle_choice"));
+  const auto& c = r["stats"]["triangle_choice"];
+  EXPECT_EQ(r["triangle_choice_rule"], "bound");
+  EXPECT_EQ(c["gouraud"].get<long>() + c["segments"].get<long>() + c["phong"].get<long>(), c["triangles"].get<long>());
+  EXPECT_GT(c["triangles"].get<long>(), 0);
+  EXPECT_LE(c["largest_expected_gouraud_levels"].get<double>(), 1.5);
+  ASSERT_TRUE(succeeds(render(scene_, {"--method", "combined:0", "--triangle-choice", "sources:0.95,0.01,0.02"})));
+  EXPECT_EQ(read_report()["triangle_choice_rule"], "sources");
+}
+
 }  // namespace
 }  // namespace parashade

@@ -1,0 +1,212 @@
+// The combined method's per-triangle choice (triangle_choice.hpp): a triangle given to Gouraud must stay
+// within the shading budget of Phong (screen-linear normals and positions, as the kernel interpolates),
+// checked by dense sampling in double precision; the sources' listing as printed and as intended.
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "parashade/geometry_stage.hpp"
+#include "parashade/lighting.hpp"
+#include "parashade/shapes.hpp"
+#include "parashade/triangle_choice.hpp"
+
+namespace parashade {
+namespace {
+
+// A tessellated sphere and a teapot in perspective with a local viewer, a directional and a nearby
+// point light; `jitter` perturbs the vertex normals so that some triangles shade unevenly.
+Scene lit_scene(std::uint32_t seed, float jitter, float shininess) {
+  Scene s;
+  s.name = "choice";
+  s.width = 480;
+  s.height = 360;
+  s.camera.position = {0.0f, 1.0f, 6.0f};
+  s.camera.target = {0.0f, 0.2f, 0.0f};
+  s.camera.fov_y_degrees = 40.0f;
+  s.camera.near_plane = 0.5f;
+  s.camera.far_plane = 30.0f;
+  s.local_viewer = true;
+  Light sun;
+  sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, -0.6f));
+  sun.color = {0.9f, 0.9f, 0.85f};
+  Light lamp;
+  lamp.type = LightType::point;
+  lamp.position = {-2.5f, 1.5f, 2.5f};
+  lamp.color = {0.4f, 0.45f, 0.6f};
+  s.lights = {sun, lamp};
+  Material m;
+  m.ambient = {0.1f, 0.1f, 0.1f};
+  m.diffuse = {0.7f, 0.6f, 0.5f};
+  m.specular = {0.5f, 0.5f, 0.5f};
+  m.shininess = shininess;
+  s.materials = {m};
+  std::mt19937 rng(seed);
+  std::normal_distribution<float> noise(0.0f, jitter);
+  auto sphere = std::make_shared<Mesh>(make_sphere(48, 24));
+  auto teapot = std::make_shared<Mesh>(make_teapot(6));
+  for (auto* mesh : {sphere.get(), teapot.get()})
+    for (glm::vec3& n : mesh->normals) n = glm::normalize(n + glm::vec3(noise(rng), noise(rng), noise(rng)));
+  Object a, b;
+  a.name = "sphere";
+  a.mesh = sphere;
+  a.model = glm::translate(glm::mat4(1.0f), glm::vec3(-1.2f, 0.0f, 0.0f));
+  b.name = "teapot";
+  b.mesh = teapot;
+  b.model = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(1.2f, -0.5f, 0.0f)), glm::vec3(0.5f));
+  s.objects = {a, b};
+  return s;
+}
+
+// Largest |Gouraud - Phong| over the triangle (largest channel, clamped to the 8-bit range as the image
+// is), sampled on a barycentric grid in screen space.
+double sampled_error(const Scene& s, const ScreenGeometry& g, std::size_t t) {
+  const glm::uvec3 idx = g.triangles[t];
+  const std::uint32_t v[3] = {idx.x, idx.y, idx.z};
+  const Material& m = s.materials[g.material[t]];
+  glm::dvec3 vertex[3], n[3], w[3];
+  for (int k = 0; k < 3; ++k) {
+    n[k] = glm::dvec3(g.normal[v[k]]);
+    w[k] = glm::dvec3(g.world[v[k]]);
+    vertex[k] = blinn_phong(s, m, w[k], glm::normalize(n[k]));
+  }
+  const auto clamp8 = [](glm::dvec3 c) { return glm::clamp(c, glm::dvec3(0.0), glm::dvec3(255.0)); };
+  double worst = 0.0;
+  const int steps = 24;
+  for (int a = 0; a <= steps; ++a)
+    for (int b = 0; a + b <= steps; ++b) {
+      const double b0 = double(a) / steps, b1 = double(b) / steps, b2 = 1.0 - b0 - b1;
+      const glm::dvec3 gouraud = b0 * vertex[0] + b1 * vertex[1] + b2 * vertex[2];
+      const glm::dvec3 normal = glm::normalize(b0 * n[0] + b1 * n[1] + b2 * n[2]);
+      const glm::dvec3 phong = blinn_phong(s, m, b0 * w[0] + b1 * w[1] + b2 * w[2], normal);
+      const glm::dvec3 d = glm::abs(clamp8(gouraud) - clamp8(phong));
+      worst = std::max({worst, d.x, d.y, d.z});
+    }
+  return worst;
+}
+
+struct Case {
+  std::uint32_t seed;
+  float jitter, shininess;
+  double budget;
+};
+
+class TriangleChoiceBound : public ::testing::TestWithParam<Case> {};
+
+TEST_P(TriangleChoiceBound, GouraudOnlyWhereTheSampledErrorFits) {
+  const Case k = GetParam();
+  const Scene s = lit_scene(k.seed, k.jitter, k.shininess);
+  ScreenGeometry g;
+  build_screen_geometry(s, {Method::combined, true, true}, g);
+  CombinedConfig c;
+  c.automatic = true;
+  c.rule = TriangleRule::bound;
+  std::vector<TriangleShading> out;
+  const TriangleChoiceStats st = choose_triangle_methods(s, g, c, k.budget, out);
+  ASSERT_EQ(out.size(), g.triangles.size());
+  std::size_t gouraud = 0, refused_but_fitting = 0;
+  double worst = 0.0, worst_over_expected = 0.0;
+  for (std::size_t t = 0; t < g.triangles.size(); ++t) {
+    const double err = sampled_error(s, g, t);
+    if (out[t].method == TriangleMethod::gouraud) {
+      ++gouraud;
+      worst = std::max(worst, err);
+    } else {
+      refused_but_fitting += err <= 0.5 * k.budget;
+    }
+  }
+  worst_over_expected = st.largest_expected_levels > 0 ? worst / st.largest_expected_levels : 0.0;
+  RecordProperty("gouraud", std::to_string(gouraud));
+  RecordProperty("worst_sampled_levels", std::to_string(worst));
+  RecordProperty("refused_with_half_the_budget", std::to_string(refused_but_fitting));
+  EXPECT_EQ(st.gouraud, gouraud);
+  EXPECT_GT(gouraud, g.triangles.size() / 20) << "the scene has smooth triangles: some must go to Gouraud";
+  EXPECT_LE(worst, k.budget + 1e-6) << "a Gouraud triangle exceeded the budget";
+  EXPECT_LE(worst_over_expected, 1.0 + 1e-6);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, TriangleChoiceBound,
+                         ::testing::Values(Case{1, 0.0f, 40.0f, 0.5}, Case{2, 0.0f, 40.0f, 2.0},
+                                           Case{3, 0.02f, 10.0f, 1.0}, Case{4, 0.05f, 200.0f, 1.0},
+                                           Case{5, 0.0f, 1000.0f, 0.25}));
+
+// The listing as printed returns Phong when two vertex normals are close (|n_i.n_j| > 0.9): a flat
+// triangle goes to Phong and a triangle whose normals lie on a cone around L = V (equal N.L, N.h) to
+// Gouraud. As intended (close normals -> Gouraud candidates), the other way round.
+TEST(TriangleChoiceSources, TheListingsFirstTestIsInverted) {
+  Scene s;
+  s.width = s.height = 64;
+  s.camera.projection = Projection::orthographic;
+  s.camera.position = {0.0f, 0.0f, 10.0f};
+  s.camera.target = {0.0f, 0.0f, 0.0f};
+  s.camera.ortho_height = 64.0f;
+  s.local_viewer = false;
+  Light l;
+  l.direction = {0.0f, 0.0f, -1.0f};  // L = V = +z: h = L + V = (0, 0, 2)
+  s.lights = {l};
+  s.materials = {Material{}};
+  ScreenGeometry g;
+  g.width = g.height = 64;
+  const float a = 0.6981317f;  // 40 degrees: pairwise n_i.n_j = 0.38 on the cone
+  const glm::vec3 cone[3] = {{std::sin(a), 0.0f, std::cos(a)},
+                             {std::sin(a) * -0.5f, std::sin(a) * 0.8660254f, std::cos(a)},
+                             {std::sin(a) * -0.5f, std::sin(a) * -0.8660254f, std::cos(a)}};
+  for (int t = 0; t < 2; ++t)
+    for (int k = 0; k < 3; ++k) {
+      g.xy.push_back(glm::ivec2(256 * (10 + 20 * t + 10 * k), 256 * (10 + 15 * (k == 2))));
+      g.world.push_back(glm::vec3(float(t), float(k), 0.0f));
+      g.normal.push_back(t == 0 ? glm::vec3(0.0f, 0.0f, 1.0f) : cone[k]);
+      g.depth.push_back(0.5f);
+      g.clip.push_back(glm::vec4(0.0f));
+    }
+  g.triangles = {{0, 1, 2}, {3, 4, 5}};
+  g.material = {0, 0};
+  std::vector<TriangleShading> out;
+  CombinedConfig c;
+  c.rule = TriangleRule::sources_literal;
+  choose_triangle_methods(s, g, c, 0.5, out);
+  EXPECT_NE(out[0].method, TriangleMethod::gouraud) << "flat triangle, literal listing";
+  EXPECT_EQ(out[1].method, TriangleMethod::gouraud) << "normals 40 degrees from L, literal listing";
+  c.rule = TriangleRule::sources;
+  choose_triangle_methods(s, g, c, 0.5, out);
+  EXPECT_EQ(out[0].method, TriangleMethod::gouraud) << "flat triangle, intended rule";
+  EXPECT_NE(out[1].method, TriangleMethod::gouraud) << "normals 40 degrees apart, intended rule";
+}
+
+TEST(TriangleChoiceBound, ChordBoundHoldsOverSampledTriangles) {
+  // gouraud_term_bound(phi, n) against the sampled Gouraud error of max(0, N.d)^n on random triangles of
+  // unit normals within phi of each other and a fixed direction d, with no zero crossing inside.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  double tightest = 0.0;
+  for (int i = 0; i < 2000; ++i) {
+    const double n_exp = i % 4 == 0 ? 1.0 : std::pow(10.0, 0.3 + 2.5 * (0.5 + 0.5 * u(rng)));
+    const glm::dvec3 centre = glm::normalize(glm::dvec3(u(rng), u(rng), 1.5 + u(rng)));
+    const double size = 0.02 + 0.3 * (0.5 + 0.5 * u(rng));
+    glm::dvec3 n[3];
+    for (auto& v : n) v = glm::normalize(centre + size * glm::dvec3(u(rng), u(rng), u(rng)));
+    const glm::dvec3 d = i % 2 ? glm::normalize(centre + 0.2 * glm::dvec3(u(rng), u(rng), u(rng))) : glm::dvec3(0, 0, 1);
+    double phi = 0.0;
+    for (int a = 0; a < 3; ++a) phi = std::max(phi, std::acos(std::clamp(glm::dot(n[a], n[(a + 1) % 3]), -1.0, 1.0)));
+    const auto term = [&](const glm::dvec3& m) { return std::pow(std::max(0.0, glm::dot(m, d)), n_exp); };
+    double worst = 0.0, lowest = 1.0;
+    const int steps = 30;
+    for (int a = 0; a <= steps; ++a)
+      for (int b = 0; a + b <= steps; ++b) {
+        const double b0 = double(a) / steps, b1 = double(b) / steps, b2 = 1.0 - b0 - b1;
+        const glm::dvec3 m = glm::normalize(b0 * n[0] + b1 * n[1] + b2 * n[2]);
+        lowest = std::min(lowest, glm::dot(m, d));
+        worst = std::max(worst, std::abs(b0 * term(n[0]) + b1 * term(n[1]) + b2 * term(n[2]) - term(m)));
+      }
+    const double bound = gouraud_term_bound(phi, n_exp, !(lowest > 0.0));
+    ASSERT_LE(worst, bound + 1e-12) << "n " << n_exp << " phi " << phi;
+    if (bound > 1e-4) tightest = std::max(tightest, worst / bound);
+  }
+  RecordProperty("largest_sampled_over_bound", std::to_string(tightest));
+  EXPECT_GT(tightest, 0.2) << "the bound should not be uselessly loose";
+}
+
+}  // namespace
+}  // namespace parashade
