@@ -21,7 +21,7 @@ double max_on_arc(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& h)
   return best;
 }
 
-glm::dvec3 unit(const glm::dvec3& v) { return v / glm::length(v); }
+glm::dvec3 unit(const glm::dvec3& v) { return v * (1.0 / glm::length(v)); }
 
 double angle(double cosine) { return std::acos(std::clamp(cosine, -1.0, 1.0)); }
 
@@ -48,10 +48,12 @@ double chord_angle(double chord) { return chord < 2.0 ? 2.0 * std::asin(0.5 * ch
 // of the unit d: cos(gap), gap = angle(c_N, d) - a_N - beta, when positive; else 1. By cosines: no acos.
 double max_cosine_between_cones(const TriangleFrame& f, const glm::dvec3& d, double sin_radius) {
   if (!(f.normal_cos_half > 0.0) || !(sin_radius < 1.0)) return 1.0;
-  const double cos_n = f.normal_cos_half, sin_n = sine_of(cos_n), cos_b = std::sqrt(1.0 - sin_radius * sin_radius);
+  const double cos_n = f.normal_cos_half, sin_n = f.normal_sin_half;
+  const double cos_b = sin_radius > 0.0 ? std::sqrt(1.0 - sin_radius * sin_radius) : 1.0;
   const double cos_r = cos_n * cos_b - sin_n * sin_radius, sin_r = sin_n * cos_b + cos_n * sin_radius;  // a_N + beta
-  const double cos_t = glm::dot(f.normal_centre, d), sin_t = sine_of(cos_t);
-  return cos_t < cos_r ? cos_t * cos_r + sin_t * sin_r : 1.0;  // the gap is positive where cos_t < cos_r
+  const double cos_t = glm::dot(f.normal_centre, d);
+  if (!(cos_t < cos_r)) return 1.0;  // the gap is not positive
+  return cos_t * cos_r + sine_of(cos_t) * sin_r;
 }
 
 }  // namespace
@@ -70,7 +72,7 @@ TriangleFrame triangle_frame(const Scene& s, const ScreenGeometry& g, std::size_
     glm::dvec3 n(g.normal[vid[k]]);
     const double len2 = glm::dot(n, n);
     // Scene vertices carry unit normals (to float precision); clip-made ones are interpolations.
-    if (std::abs(len2 - 1.0) > 1e-6) n /= std::sqrt(len2);
+    if (std::abs(len2 - 1.0) > 1e-6) n *= 1.0 / std::sqrt(len2);
     f.usable = f.usable && len2 > 1e-24 && std::isfinite(len2);
     f.n[k] = f.usable ? n : glm::dvec3(0.0);
     f.w[k] = vid[k] < g.world.size() ? glm::dvec3(g.world[vid[k]]) : glm::dvec3(0.0);
@@ -79,9 +81,10 @@ TriangleFrame triangle_frame(const Scene& s, const ScreenGeometry& g, std::size_
   const glm::dvec3 sum = f.n[0] + f.n[1] + f.n[2];
   const double len = glm::length(sum);
   if (len > 1e-12) {
-    f.normal_centre = sum / len;
+    f.normal_centre = sum * (1.0 / len);
     f.normal_cos_half = std::min({glm::dot(f.normal_centre, f.n[0]), glm::dot(f.normal_centre, f.n[1]),
                                   glm::dot(f.normal_centre, f.n[2])});
+    f.normal_sin_half = sine_of(f.normal_cos_half);
   }
   f.centroid = (f.w[0] + f.w[1] + f.w[2]) / 3.0;
   f.radius = std::sqrt(std::max({glm::dot(f.w[0] - f.centroid, f.w[0] - f.centroid),
@@ -92,8 +95,9 @@ TriangleFrame triangle_frame(const Scene& s, const ScreenGeometry& g, std::size_
   } else {
     const glm::dvec3 d = glm::dvec3(s.camera.position) - f.centroid;
     const double dist = glm::length(d);
-    f.view_centre = dist > 0.0 ? d / dist : glm::dvec3(0.0, 0.0, 1.0);
-    f.view_chord = dist > 0.0 ? std::min(2.0, 2.0 * f.radius / dist) : 2.0;
+    const double inv = 1.0 / dist;
+    f.view_centre = dist > 0.0 ? d * inv : glm::dvec3(0.0, 0.0, 1.0);
+    f.view_chord = dist > 0.0 ? std::min(2.0, 2.0 * f.radius * inv) : 2.0;
   }
   return f;
 }
@@ -108,8 +112,9 @@ LightBounds light_bounds(const TriangleFrame& f, const Light& l, double enough) 
     const glm::dvec3 d = glm::dvec3(l.position) - f.centroid;
     const double dist = glm::length(d);
     if (!(dist > 2.0 * f.radius)) return b;  // the light within the triangle's reach: no useful bound
-    b.light_centre = d / dist;
-    b.light_chord = 2.0 * f.radius / dist;
+    const double inv = 1.0 / dist;
+    b.light_centre = d * inv;
+    b.light_chord = 2.0 * f.radius * inv;
     b.light_distance = dist;
   }
   // L is within the angle 2 asin(chord/2) of c_L, whose sine is chord sqrt(1 - chord^2/4).
@@ -119,10 +124,10 @@ LightBounds light_bounds(const TriangleFrame& f, const Light& l, double enough) 
   // H_c = normalize(c_L + c_V).
   const glm::dvec3 sum = b.light_centre + f.view_centre;
   const double sum_len = glm::length(sum);
-  const double ratio = (b.light_chord + f.view_chord) / sum_len;
+  const double inv_sum = 1.0 / sum_len, ratio = (b.light_chord + f.view_chord) * inv_sum;
   if (!(ratio < 1.0)) return b;
   b.sin_h_radius = ratio;
-  const glm::dvec3 hc = sum / sum_len;
+  const glm::dvec3 hc = sum * inv_sum;
   // Cheap first: the normals' cone against H's cone.
   b.max_n_dot_h = max_cosine_between_cones(f, hc, ratio);
   if (b.max_n_dot_h <= enough || !(f.normal_cos_half > 0.0)) return b;

@@ -50,7 +50,7 @@ double psi_limit_for(const Scene& s, const Material& m, double budget_levels, bo
 
 namespace {
 
-glm::dvec3 unit(const glm::dvec3& v) { return v / glm::length(v); }
+glm::dvec3 unit(const glm::dvec3& v) { return v * (1.0 / glm::length(v)); }
 
 // The listing's selectMetod(): true = Gouraud. Light 0's direction and the view direction are taken at
 // the triangle's centroid (the listing's scene has a directional light and a distant viewer).
@@ -209,8 +209,8 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
       const TriangleFrame f = triangle_frame(s, g, t);
       const std::size_t mat = g.material[t];
       const glm::uvec3 idx = g.triangles[t];
-      const glm::dvec2 p[3] = {glm::dvec2(g.xy[idx.x]) / double(kSubpixel), glm::dvec2(g.xy[idx.y]) / double(kSubpixel),
-                               glm::dvec2(g.xy[idx.z]) / double(kSubpixel)};
+      const double px = 1.0 / double(kSubpixel);
+      const glm::dvec2 p[3] = {glm::dvec2(g.xy[idx.x]) * px, glm::dvec2(g.xy[idx.y]) * px, glm::dvec2(g.xy[idx.z]) * px};
       const double width = std::max({p[0].x, p[1].x, p[2].x}) - std::min({p[0].x, p[1].x, p[2].x});
       // Per light: the specular bound (cheap cone test first), and from it the mask.
       const double* threshold = &thresholds[mat * lights];
@@ -282,7 +282,7 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
           // The segment length the kernel can use on this triangle: |dN/dx| 2^K <= psi min|N'|.
           const glm::dvec2 e1 = p[1] - p[0], e2 = p[2] - p[0];
           const double det = e1.x * e2.y - e2.x * e1.y;
-          const glm::dvec3 ddx = ((f.n[1] - f.n[0]) * e2.y - (f.n[2] - f.n[0]) * e1.y) / det;
+          const glm::dvec3 ddx = ((f.n[1] - f.n[0]) * e2.y - (f.n[2] - f.n[0]) * e1.y) * (1.0 / det);
           const double allowed = double(o.psi_limit) * min_normal, change = glm::length(ddx);
           int k = 0;
           while (k < kCombinedMaxK && change * double(2 << k) <= allowed) ++k;

@@ -23,6 +23,7 @@ struct TriangleFrame {
   bool usable = false;  // false: a zero or non-finite vertex normal, or no world positions for a local viewer
   glm::dvec3 normal_centre{0.0, 0.0, 1.0};
   double normal_cos_half = -1.0;    // every shaded normal N has N.normal_centre >= this (<= 0: no useful cone)
+  double normal_sin_half = 1.0;
   double cos_normal_spread = 1.0;   // cosine of the largest angle between two vertex normals
   glm::dvec3 centroid{0.0};
   double radius = 0.0;              // every point of the triangle is within this of the centroid (world)
