@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <sstream>
 
 #include "parashade/errors.hpp"
@@ -72,6 +73,14 @@ std::vector<Found> enumerate() {
   return found;
 }
 
+// " -D PARASHADE_FAIL_BUILD" when PARASHADE_FAIL_DEVICE is a substring of the device's name (any case):
+// common.h then stops the build with #error, so a test can make one of several devices fail.
+std::string injected_failure(const DeviceInfo& info) {
+  const char* want = std::getenv("PARASHADE_FAIL_DEVICE");
+  if (!want || !*want || lower(info.name).find(lower(want)) == std::string::npos) return "";
+  return " -D PARASHADE_FAIL_BUILD";
+}
+
 std::string device_list(const std::vector<Found>& found) {
   std::ostringstream s;
   for (const Found& f : found) s << "\n  " << f.info.index << ": " << f.info.platform << " / " << f.info.name;
@@ -99,8 +108,9 @@ Device::Device(cl::Device device, DeviceInfo info) : device_(device), info_(std:
   }
 }
 
-cl::Program& Device::program(const std::vector<std::string>& files, const std::string& options) {
-  const auto key = std::make_pair(files, options);
+cl::Program& Device::program(const std::vector<std::string>& files, const std::string& given) {
+  const auto key = std::make_pair(files, given);
+  const std::string options = given + injected_failure(info_);
   const auto it = programs_.find(key);
   if (it != programs_.end()) return it->second;
   const std::string source = kernel_source(files);

@@ -102,7 +102,7 @@ SplitRenderer::SplitRenderer(std::vector<std::unique_ptr<Device>> devices, Rende
   if (options_.plan) throw UsageError("--cu/--partition do not combine with a device list yet");
   if (options_.float_output) throw UsageError("--float does not combine with a device list yet");
   speed_.assign(devices_.size(), 0.0);
-  dropped_.assign(devices_.size(), false);
+  dropped_.assign(devices_.size(), "");
 }
 
 const Frame& SplitRenderer::render(const Scene& scene, std::string* warning) {
@@ -111,7 +111,7 @@ const Frame& SplitRenderer::render(const Scene& scene, std::string* warning) {
   const int tile_rows = (scene.height + tile - 1) / tile;
   std::vector<std::size_t> active;
   for (std::size_t i = 0; i < devices_.size(); ++i)
-    if (!dropped_[i]) active.push_back(i);
+    if (dropped_[i].empty()) active.push_back(i);
   if (active.empty()) throw DeviceError("every device of the list failed");
   // Band sizes in proportion to the measured speeds (equal until every active device was measured).
   const bool measured = std::all_of(active.begin(), active.end(), [&](std::size_t i) { return speed_[i] > 0; });
@@ -131,7 +131,11 @@ const Frame& SplitRenderer::render(const Scene& scene, std::string* warning) {
     shares_[i].rows = std::max(0, end - row);
     row = std::max(row, end);
   }
-  for (std::size_t i = 0; i < devices_.size(); ++i) shares_[i].device = devices_[i]->info().name;
+  for (std::size_t i = 0; i < devices_.size(); ++i) {
+    shares_[i].device = devices_[i]->info().name;
+    shares_[i].failed = !dropped_[i].empty();
+    shares_[i].error = dropped_[i];
+  }
 
   RenderedImage& img = frame_.image;
   img.width = scene.width;
@@ -171,11 +175,9 @@ const Frame& SplitRenderer::render(const Scene& scene, std::string* warning) {
     try {
       std::rethrow_exception(errors[i]);
     } catch (const std::exception& e) {
-      shares_[i].failed = true;
-      shares_[i].error = e.what();
       if (!keep_going_) throw DeviceError("device '" + devices_[i]->info().name + "' failed: " + e.what());
       if (warning) *warning += "device '" + devices_[i]->info().name + "' failed (" + e.what() + "); continuing on the others\n";
-      dropped_[i] = true;
+      dropped_[i] = *e.what() ? e.what() : "failed";
       failed = true;
     }
   }

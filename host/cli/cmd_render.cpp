@@ -110,6 +110,9 @@ int run_render(const RenderArgs& a) {
   check_image_destination(out_path);
   if (!a.report.empty()) check_report_destination(a.report);
 
+  if (a.keep_going && !is_device_list(a.device))
+    throw UsageError("--keep-going drops failing devices of a list (--device all, A,B or sub:NAME:N); " +
+                     (a.device.empty() ? std::string("the default device") : "'" + a.device + "'") + " is one device");
   if (is_device_list(a.device))
     return run_split_render(scene, options, {a.device, a.output, a.report, a.scene, a.frames, a.warmup, a.keep_going, a.quiet});
   auto device = open_device(a.device);

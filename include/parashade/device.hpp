@@ -40,7 +40,9 @@ class Device {
   cl::Device& device() { return device_; }
   // Builds the concatenation of `files` of kernels/ (their #include "..." lines resolved from the
   // embedded sources) with -cl-std=CL1.2 and `options`, once per (files, options). Throws DeviceError
-  // with the device name and the build log.
+  // with the device name and the build log. Fault injection for tests: when the environment variable
+  // PARASHADE_FAIL_DEVICE is a substring of this device's name (any case), every build fails there
+  // (kernels/common.h stops it with #error), through the same path as a real build failure.
   cl::Program& program(const std::vector<std::string>& files, const std::string& options);
 
  private:
