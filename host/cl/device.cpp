@@ -99,9 +99,12 @@ std::vector<DeviceInfo> list_devices() {
   }
 }
 
-Device::Device(cl::Device device, DeviceInfo info) : device_(device), info_(std::move(info)) {
+Device::Device(cl::Device device, DeviceInfo info) : Device(device, std::move(info), cl::Context()) {}
+
+Device::Device(cl::Device device, DeviceInfo info, cl::Context context)
+    : device_(device), info_(std::move(info)), context_(std::move(context)) {
   try {
-    context_ = cl::Context(device_);
+    if (!context_()) context_ = cl::Context(device_);
     queue_ = cl::CommandQueue(context_, device_, CL_QUEUE_PROFILING_ENABLE);
   } catch (const cl::Error&) {
     rethrow_cl_error("opening device '" + info_.name + "'");

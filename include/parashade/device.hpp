@@ -34,6 +34,9 @@ std::vector<DeviceInfo> list_devices();
 class Device {
  public:
   Device(cl::Device device, DeviceInfo info);
+  // A device of a context it shares with other devices (a parent and its sub-devices: sub_devices.hpp);
+  // its own queue, its own program cache.
+  Device(cl::Device device, DeviceInfo info, cl::Context context);
   const DeviceInfo& info() const { return info_; }
   cl::Context& context() { return context_; }
   cl::CommandQueue& queue() { return queue_; }
