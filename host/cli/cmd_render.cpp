@@ -296,8 +296,10 @@ Command add_render_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--device", a->device,
                   "OpenCL device: index or name substring (see 'parashade devices'); 'all' or a comma list splits the "
-                  "frame across devices by measured speed");
-  cmd->add_flag("--keep-going", a->keep_going, "With a device list: drop a failing device (named) and go on with the others");
+                  "frame across devices by measured speed; sub:NAME:N or sub:NAME:N1+N2 uses NAME's sub-devices (bands "
+                  "of the frame; with --cu, the units' depth pass on them)");
+  cmd->add_flag("--keep-going", a->keep_going,
+                "With a device list (bands): drop a failing device (named) and go on with the others");
   cmd->add_option("--size", a->size, "Resolution WIDTHxHEIGHT (at most 4096x4096), overriding the scene's");
   cmd->add_option("--report", a->report, "Write a JSON report (timings, stages, error figures)");
   cmd->add_option("--frames", a->frames, "Timed frames; the median is reported")->capture_default_str();
