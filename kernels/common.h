@@ -2,6 +2,12 @@
 #ifndef PARASHADE_COMMON_H
 #define PARASHADE_COMMON_H
 
+/* Fault injection for tests: the host defines this for a device named by PARASHADE_FAIL_DEVICE
+ * (device.hpp), so that device's builds fail through the real build-failure path. */
+#ifdef PARASHADE_FAIL_BUILD
+#error "build failure injected by PARASHADE_FAIL_DEVICE"
+#endif
+
 /* No silent fused multiply-adds: results must not depend on what the compiler contracts. */
 #pragma OPENCL FP_CONTRACT OFF
 

@@ -22,7 +22,9 @@ STRATEGIES = ["round-robin", "lpt", "tiles", "dynamic"]
 
 
 def render(binary, scene, size, frames, threads, extra, out, report):
-    env = dict(os.environ, POCL_MAX_PTHREAD_COUNT=str(threads))
+    env = dict(os.environ)
+    if threads:  # 0: PoCL's default
+        env["POCL_MAX_PTHREAD_COUNT"] = str(threads)
     cmd = [binary, "render", scene, "--size", size, "-o", out, "--frames", str(frames), "--no-error", "-q",
            "--no-tuned", "--report", report] + extra
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, env=env)
@@ -30,8 +32,8 @@ def render(binary, scene, size, frames, threads, extra, out, report):
         r = json.load(f)
     st = r["stages_ms"]
     return {"frame_ms": r["frame_ms"], "kernel_ms": st.get("kernel_ms"), "unit_pass_ms": st.get("unit_pass_ms"),
-            "planning_ms": st.get("planning_ms"), "device": r["device"]["name"],
-            "compute_units": r["device"]["compute_units"]}
+            "planning_ms": st.get("planning_ms"), "key_merge_ms": st.get("key_merge_ms"), "device": r["device"]["name"],
+            "compute_units": r["device"]["compute_units"], "mapping": r.get("plan", {}).get("mapping")}
 
 
 def main():

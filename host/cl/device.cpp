@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <sstream>
 
 #include "parashade/errors.hpp"
@@ -72,6 +73,14 @@ std::vector<Found> enumerate() {
   return found;
 }
 
+// " -D PARASHADE_FAIL_BUILD" when PARASHADE_FAIL_DEVICE is a substring of the device's name (any case):
+// common.h then stops the build with #error, so a test can make one of several devices fail.
+std::string injected_failure(const DeviceInfo& info) {
+  const char* want = std::getenv("PARASHADE_FAIL_DEVICE");
+  if (!want || !*want || lower(info.name).find(lower(want)) == std::string::npos) return "";
+  return " -D PARASHADE_FAIL_BUILD";
+}
+
 std::string device_list(const std::vector<Found>& found) {
   std::ostringstream s;
   for (const Found& f : found) s << "\n  " << f.info.index << ": " << f.info.platform << " / " << f.info.name;
@@ -90,17 +99,21 @@ std::vector<DeviceInfo> list_devices() {
   }
 }
 
-Device::Device(cl::Device device, DeviceInfo info) : device_(device), info_(std::move(info)) {
+Device::Device(cl::Device device, DeviceInfo info) : Device(device, std::move(info), cl::Context()) {}
+
+Device::Device(cl::Device device, DeviceInfo info, cl::Context context)
+    : device_(device), info_(std::move(info)), context_(std::move(context)) {
   try {
-    context_ = cl::Context(device_);
+    if (!context_()) context_ = cl::Context(device_);
     queue_ = cl::CommandQueue(context_, device_, CL_QUEUE_PROFILING_ENABLE);
   } catch (const cl::Error&) {
     rethrow_cl_error("opening device '" + info_.name + "'");
   }
 }
 
-cl::Program& Device::program(const std::vector<std::string>& files, const std::string& options) {
-  const auto key = std::make_pair(files, options);
+cl::Program& Device::program(const std::vector<std::string>& files, const std::string& given) {
+  const auto key = std::make_pair(files, given);
+  const std::string options = given + injected_failure(info_);
   const auto it = programs_.find(key);
   if (it != programs_.end()) return it->second;
   const std::string source = kernel_source(files);

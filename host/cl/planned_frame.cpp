@@ -1,12 +1,19 @@
 // The planned frame (docs/planner.md): the planner's work lists for U modeled units, the units' depth
 // pass (render_tiles.cl with PLAN_PASS=1: a work-item per unit, or units pulling batches from a
-// counter), then the usual tile kernel as the resolve (PLAN_PASS=2), shading only each pixel's winner.
+// counter; on one device or spread over its sub-devices), then the usual tile kernel as the resolve
+// (PLAN_PASS=2), shading only each pixel's winner.
+#include <algorithm>
 #include <chrono>
 
 #include "parashade/errors.hpp"
 #include "parashade/renderer.hpp"
 
 namespace parashade {
+namespace {
+
+double event_span_ms(cl_ulong start, cl_ulong end) { return end > start ? double(end - start) * 1e-6 : 0.0; }
+
+}  // namespace
 
 void Renderer::plan_frame(const TriangleGeometry* tris, std::size_t n, const std::uint32_t* tile_list, FrameTimings& t,
                           FrameStats& s) {
@@ -17,18 +24,39 @@ void Renderer::plan_frame(const TriangleGeometry* tris, std::size_t n, const std
   const TileBins bins{binner_.tile_start().data(), tile_list, binner_.tiles_x(), binner_.tiles_y(), binner_.tile_size()};
   plan_ = make_plan(tris, n, bins, options_.unit(), o);
   s.plan = plan_.report;
+  s.unit_pass = unit_pass_shares();
+  s.unit_pass_on_sub_devices = !unit_devices_.empty();
   t.planning_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// Units to sub-devices in contiguous blocks, in proportion to their compute units (unit u runs on the
+// sub-device whose block holds u). dynamic: the batches too, in proportion to each one's units: a
+// counter is shared only by the work-items of one device (the spec promises atomics on a buffer to the
+// work-items of one device, not across devices), so each sub-device's units pull from their own range.
+std::vector<UnitPassShare> Renderer::unit_pass_shares() const {
+  const int units = plan_.report.units, packets = plan_.work.packets();
+  if (unit_devices_.empty()) return {{device_.info().name, device_.info().compute_units, 0, units, 0, packets}};
+  std::vector<int> cus;
+  for (const Device* d : unit_devices_) cus.push_back(std::max(1, d->info().compute_units));
+  const std::vector<int> unit_first = proportional_blocks(units, cus);
+  std::vector<int> unit_count;
+  for (std::size_t k = 0; k < cus.size(); ++k) unit_count.push_back(unit_first[k + 1] - unit_first[k]);
+  const bool dynamic = plan_.report.partition == Partition::dynamic;
+  const std::vector<int> packet_first = dynamic ? proportional_blocks(packets, unit_count) : unit_first;
+  std::vector<UnitPassShare> out;
+  for (std::size_t k = 0; k < cus.size(); ++k)
+    out.push_back({unit_devices_[k]->info().name, unit_devices_[k]->info().compute_units, unit_first[k], unit_count[k],
+                   packet_first[k], packet_first[k + 1] - packet_first[k]});
+  return out;
+}
+
 void Renderer::enqueue_unit_pass(cl::Kernel& resolve, const std::vector<std::string>& files, const std::string& options,
-                                 cl_float4 viewer, cl_float4 background, const Scene& scene, cl::Event& done) {
+                                 cl_float4 viewer, cl_float4 background, const Scene& scene,
+                                 const std::vector<UnitPassShare>& shares, UnitPassEvents& events) {
   cl::CommandQueue& q = device_.queue();
   const WorkLists& w = plan_.work;
-  const std::size_t pixels = std::size_t(scene.width) * scene.height;
-  ensure(keys_, keys_cap_, pixels * sizeof(cl_ulong), CL_MEM_READ_WRITE);
-  q.enqueueFillBuffer(keys_, ~cl_ulong(0), 0, pixels * sizeof(cl_ulong));
-  ensure(plan_counter_, plan_counter_cap_, sizeof(cl_int), CL_MEM_READ_WRITE);
-  q.enqueueFillBuffer(plan_counter_, cl_int(0), 0, sizeof(cl_int));
+  const std::size_t pixels = std::size_t(scene.width) * scene.height, key_bytes = pixels * sizeof(cl_ulong);
+  ensure(keys_, keys_cap_, key_bytes, CL_MEM_READ_WRITE);
   auto upload = [&](cl::Buffer& b, std::size_t& cap, const std::vector<std::uint32_t>& v) {
     ensure(b, cap, v.size() * sizeof(std::uint32_t), CL_MEM_READ_ONLY);
     if (!v.empty()) q.enqueueWriteBuffer(b, CL_FALSE, 0, v.size() * sizeof(std::uint32_t), v.data());
@@ -37,39 +65,116 @@ void Renderer::enqueue_unit_pass(cl::Kernel& resolve, const std::vector<std::str
   upload(plan_vtiles_, plan_vtiles_cap_, w.vtile_tile);
   upload(plan_starts_, plan_starts_cap_, w.vtile_start);
   upload(plan_list_, plan_list_cap_, w.list);
+  ensure(plan_counter_, plan_counter_cap_, sizeof(cl_int), CL_MEM_READ_WRITE);
+  resolve.setArg(19, keys_);
+  resolve.setArg(20, plan_packets_);
+  resolve.setArg(21, plan_vtiles_);
+  resolve.setArg(22, plan_counter_);
+  resolve.setArg(23, cl_int(w.packets()));
 
   const bool dynamic = plan_.report.partition == Partition::dynamic;
-  cl::Program& units = device_.program(files, options + " -D PLAN_PASS=1 -D PLAN_DYNAMIC=" + (dynamic ? "1" : "0"));
-  cl::Kernel k(units, "render_tiles");
-  // The resolve kernel's arguments, with the plan's virtual tiles and lists in place of the bins.
-  k.setArg(0, tris_);
-  k.setArg(1, attrs_);
-  k.setArg(2, plan_starts_);
-  k.setArg(3, plan_list_);
-  k.setArg(4, lights_);
-  k.setArg(5, materials_);
-  k.setArg(6, viewer);
-  k.setArg(7, background);
-  k.setArg(8, cl_int(binner_.tiles_x()));
-  k.setArg(9, cl_int(binner_.tiles_x() * binner_.tiles_y()));
-  k.setArg(10, cl_int(scene.width));
-  k.setArg(11, cl_int(scene.height));
-  k.setArg(12, out_rgba_);
-  k.setArg(13, out_float_);
-  k.setArg(14, fixed_);
-  k.setArg(15, tile_clocks_);
-  k.setArg(16, leaves_);
-  k.setArg(17, dda_first_);
-  k.setArg(18, dda_rows_);
-  for (cl::Kernel* kernel : {&k, &resolve}) {
-    kernel->setArg(19, keys_);
-    kernel->setArg(20, plan_packets_);
-    kernel->setArg(21, plan_vtiles_);
-    kernel->setArg(22, plan_counter_);
-    kernel->setArg(23, cl_int(w.packets()));
+  const std::string unit_options = options + " -D PLAN_PASS=1 -D PLAN_DYNAMIC=" + (dynamic ? "1" : "0");
+  // The resolve kernel's arguments, with the plan's virtual tiles and lists in place of the bins, for
+  // units [first_unit, first_unit + units) as work-items (global offset first_unit) that run packets up to
+  // `end` (static: packet = unit; dynamic: pulled from `counter`, which starts at the share's first packet).
+  auto unit_kernel = [&](Device& d, cl::Buffer& keys, cl::Buffer& counter, int end) {
+    cl::Kernel k(d.program(files, unit_options), "render_tiles");
+    k.setArg(0, tris_);
+    k.setArg(1, attrs_);
+    k.setArg(2, plan_starts_);
+    k.setArg(3, plan_list_);
+    k.setArg(4, lights_);
+    k.setArg(5, materials_);
+    k.setArg(6, viewer);
+    k.setArg(7, background);
+    k.setArg(8, cl_int(binner_.tiles_x()));
+    k.setArg(9, cl_int(binner_.tiles_x() * binner_.tiles_y()));
+    k.setArg(10, cl_int(scene.width));
+    k.setArg(11, cl_int(scene.height));
+    k.setArg(12, out_rgba_);
+    k.setArg(13, out_float_);
+    k.setArg(14, fixed_);
+    k.setArg(15, tile_clocks_);
+    k.setArg(16, leaves_);
+    k.setArg(17, dda_first_);
+    k.setArg(18, dda_rows_);
+    k.setArg(19, keys);
+    k.setArg(20, plan_packets_);
+    k.setArg(21, plan_vtiles_);
+    k.setArg(22, counter);
+    k.setArg(23, cl_int(end));
+    return k;
+  };
+  events = UnitPassEvents{};
+  if (unit_devices_.empty()) {
+    // One work-item per modeled unit: U units run as U work-items whatever the device's cores.
+    q.enqueueFillBuffer(keys_, ~cl_ulong(0), 0, key_bytes);
+    q.enqueueFillBuffer(plan_counter_, cl_int(0), 0, sizeof(cl_int));
+    cl::Kernel k = unit_kernel(device_, keys_, plan_counter_, w.packets());
+    q.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(std::size_t(plan_.report.units)), cl::NDRange(1), nullptr,
+                           &events.share.emplace_back());
+    return;
   }
-  // One work-item per modeled unit: U units run as U work-items whatever the device's cores.
-  q.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(std::size_t(plan_.report.units)), cl::NDRange(1), nullptr, &done);
+
+  // Sub-devices: each runs its block of units on its own queue, after the frame's uploads on the parent's
+  // queue (a marker), into keys of its own (the first share with units into the resolve's keys), so
+  // no two devices write one buffer at once; then the parent's queue waits for all of them and takes
+  // the minimum of the keys, which is the same whatever order the units ran in.
+  share_keys_.resize(shares.size());
+  share_counters_.resize(shares.size());
+  share_keys_cap_.resize(shares.size(), 0);
+  share_counters_cap_.resize(shares.size(), 0);
+  std::vector<cl::Event> uploaded(1);
+  q.enqueueMarkerWithWaitList(nullptr, &uploaded[0]);
+  q.flush();
+  std::vector<cl::Buffer*> to_merge;
+  bool first = true;
+  for (std::size_t k = 0; k < shares.size(); ++k) {
+    const UnitPassShare& s = shares[k];
+    if (s.units == 0) continue;
+    Device& d = *unit_devices_[k];
+    cl::Buffer& keys = first ? keys_ : ensure(share_keys_[k], share_keys_cap_[k], key_bytes, CL_MEM_READ_WRITE);
+    if (!first) to_merge.push_back(&keys);
+    first = false;
+    cl::Buffer& counter = ensure(share_counters_[k], share_counters_cap_[k], sizeof(cl_int), CL_MEM_READ_WRITE);
+    cl::CommandQueue& sq = d.queue();
+    sq.enqueueFillBuffer(keys, ~cl_ulong(0), 0, key_bytes, &uploaded);
+    sq.enqueueFillBuffer(counter, cl_int(s.first_packet), 0, sizeof(cl_int));
+    cl::Kernel kernel = unit_kernel(d, keys, counter, s.first_packet + s.packets);
+    sq.enqueueNDRangeKernel(kernel, cl::NDRange(std::size_t(s.first_unit)), cl::NDRange(std::size_t(s.units)),
+                            cl::NDRange(1), nullptr, &events.share.emplace_back());
+    sq.flush();  // start now, concurrently with the other sub-devices
+  }
+  q.enqueueBarrierWithWaitList(&events.share);
+  cl::Kernel merge(device_.program({"plan_merge.cl"}, ""), "plan_merge_keys");
+  for (cl::Buffer* other : to_merge) {
+    merge.setArg(0, keys_);
+    merge.setArg(1, *other);
+    merge.setArg(2, cl_uint(pixels));
+    q.enqueueNDRangeKernel(merge, cl::NullRange, cl::NDRange(pixels), cl::NullRange, nullptr, &events.merge.emplace_back());
+  }
+}
+
+void Renderer::unit_pass_times(const UnitPassEvents& events, FrameTimings& t) const {
+  cl_ulong first = ~cl_ulong(0), last = 0;
+  std::size_t e = 0;
+  for (const UnitPassShare& s : frame_.stats.unit_pass) {
+    if (s.units == 0) {
+      t.unit_pass_share_ms.push_back(0.0);
+      continue;
+    }
+    const cl_ulong start = events.share[e].getProfilingInfo<CL_PROFILING_COMMAND_START>();
+    const cl_ulong end = events.share[e++].getProfilingInfo<CL_PROFILING_COMMAND_END>();
+    first = std::min(first, start);
+    last = std::max(last, end);
+    t.unit_pass_share_ms.push_back(event_span_ms(start, end));
+  }
+  // PoCL's CPU devices stamp every queue's events from the host's one monotonic clock, so the span
+  // across sub-devices is meaningful there.
+  t.unit_pass_ms = event_span_ms(first, last);
+  for (const cl::Event& m : events.merge)
+    t.key_merge_ms += event_span_ms(m.getProfilingInfo<CL_PROFILING_COMMAND_START>(),
+                                    m.getProfilingInfo<CL_PROFILING_COMMAND_END>());
 }
 
 }  // namespace parashade

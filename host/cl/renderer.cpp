@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstring>
 #include <sstream>
+#include <utility>
 
 #include "parashade/combined_kernel.hpp"
 #include "parashade/errors.hpp"
@@ -112,7 +113,14 @@ double event_ms(const cl::Event& e) {
 
 }  // namespace
 
-Renderer::Renderer(Device& device, RenderOptions options) : device_(device), options_(options) {
+Renderer::Renderer(Device& device, RenderOptions options, std::vector<Device*> unit_devices)
+    : device_(device), options_(options), unit_devices_(std::move(unit_devices)) {
+  if (!unit_devices_.empty() && !options_.plan)
+    throw UsageError("sub-devices for the units' depth pass need modeled units (--cu / --partition)");
+  for (Device* d : unit_devices_)
+    if (d->context()() != device_.context()())
+      throw DeviceError("'" + d->info().name + "' does not share the context of '" + device_.info().name +
+                        "': open the units' sub-devices with a shared context (sub_devices.hpp)");
   if (options_.tile_size != 16 && options_.tile_size != 32 && options_.tile_size != 64)
     throw InputError("tile size " + std::to_string(options_.tile_size) + " is not supported (16, 32 or 64)");
   if (options_.unit_path() && options_.method == Method::flat)
@@ -294,6 +302,7 @@ Renderer::~Renderer() {
   try {
     release_frame();
     device_.queue().finish();
+    for (Device* d : unit_devices_) d->queue().finish();
   } catch (...) {  // nothing sensible to do while tearing down
   }
 }
@@ -375,10 +384,10 @@ const Frame& Renderer::render(const Scene& scene) {
     }
     kernel.setArg(17, dda_first_);
     kernel.setArg(18, dda_rows_);
-    cl::Event unit_pass;
+    UnitPassEvents unit_pass;
     if (options_.plan)
       enqueue_unit_pass(kernel, files, options, {{viewer.x, viewer.y, viewer.z, 0.0f}}, {{bg.x, bg.y, bg.z, 0.0f}}, scene,
-                        unit_pass);
+                        frame.stats.unit_pass, unit_pass);
     // The kernel, then the map that makes the frame valid in the image's memory (on a CPU device the
     // kernel wrote it there already): one wait for both. The frame stays mapped until the next render.
     auto t0 = Clock::now();
@@ -415,7 +424,7 @@ const Frame& Renderer::render(const Scene& scene) {
     }
     t.launch_ms = ms_since(t0);
     t.kernel_ms = event_ms(done);
-    if (options_.plan) t.unit_pass_ms = event_ms(unit_pass);
+    if (options_.plan) unit_pass_times(unit_pass, t);
     t0 = Clock::now();
     if (rgba != rgba_host_)
       std::memcpy(img.rgba.data(), rgba, pixels * 4);  // the spec says it is the host pointer; be safe

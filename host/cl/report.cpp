@@ -32,7 +32,8 @@ nlohmann::json to_json(const ErrorMetrics& m) {
 nlohmann::json to_json(const FrameTimings& t) {
   return {{"geometry_ms", t.geometry_ms}, {"setup_ms", t.setup_ms},       {"binning_ms", t.binning_ms},
           {"kernel_ms", t.kernel_ms},     {"launch_ms", t.launch_ms},     {"readback_ms", t.readback_ms},
-          {"total_ms", t.total_ms},       {"planning_ms", t.planning_ms}, {"unit_pass_ms", t.unit_pass_ms}};
+          {"total_ms", t.total_ms},       {"planning_ms", t.planning_ms}, {"unit_pass_ms", t.unit_pass_ms},
+          {"key_merge_ms", t.key_merge_ms}};
 }
 
 nlohmann::json to_json(const FrameStats& s) {
@@ -77,6 +78,27 @@ nlohmann::json to_json(const PlanReport& r) {
           {"modeled_total_clocks", r.total_clocks()},
           {"imbalance", r.imbalance()},
           {"per_unit", units}};
+}
+
+nlohmann::json unit_mapping_json(const FrameStats& s, const FrameTimings& t) {
+  nlohmann::json shares = nlohmann::json::array();
+  for (std::size_t k = 0; k < s.unit_pass.size(); ++k) {
+    const UnitPassShare& u = s.unit_pass[k];
+    shares.push_back({{"device", u.device}, {"compute_units", u.compute_units}, {"first_unit", u.first_unit},
+                      {"units", u.units}, {"first_packet", u.first_packet}, {"packets", u.packets},
+                      {"pass_ms", k < t.unit_pass_share_ms.size() ? t.unit_pass_share_ms[k] : 0.0}});
+  }
+  nlohmann::json j = {{"kind", s.unit_pass_on_sub_devices ? "sub-devices" : "work-items"}, {"shares", shares},
+                      {"unit_pass_ms", t.unit_pass_ms}};
+  if (s.unit_pass_on_sub_devices) {
+    j["note"] = "units in contiguous blocks in proportion to the sub-devices' compute units (dynamic: batches in "
+                "proportion to their units), run concurrently on the sub-devices' queues into keys of their own, "
+                "min-merged on the parent; unit_pass_ms from the first start to the last end";
+    j["key_merge_ms"] = t.key_merge_ms;
+  } else {
+    j["note"] = "one work-item per unit (work-group size 1) of one kernel on the device";
+  }
+  return j;
 }
 
 void write_text_atomically(const std::filesystem::path& path, const std::string& text) {

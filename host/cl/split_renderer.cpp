@@ -9,69 +9,16 @@
 #include <thread>
 
 #include "parashade/errors.hpp"
+#include "parashade/sub_devices.hpp"
 
 namespace parashade {
 
 bool is_device_list(const std::string& selector) {
-  return selector == "all" || selector.find(',') != std::string::npos || selector.rfind("sub:", 0) == 0;
+  return selector == "all" || selector.find(',') != std::string::npos || is_sub_device_selector(selector);
 }
-
-namespace {
-
-// "sub:NAME:N": device NAME partitioned by clCreateSubDevices(CL_DEVICE_PARTITION_EQUALLY, N);
-// "sub:NAME:N1+N2+...": by counts (CL_DEVICE_PARTITION_BY_COUNTS), one sub-device of Nk compute units each.
-std::vector<std::unique_ptr<Device>> open_sub_devices(const std::string& selector) {
-  const std::size_t colon = selector.rfind(':');
-  const std::string name = selector.substr(4, colon > 4 ? colon - 4 : 0);
-  std::vector<int> counts;
-  const std::string spec = colon > 4 ? selector.substr(colon + 1) : "";
-  for (std::size_t from = 0; from <= spec.size();) {
-    const std::size_t plus = std::min(spec.find('+', from), spec.size());
-    int n = 0;
-    try {
-      std::size_t used = 0;
-      n = std::stoi(spec.substr(from, plus - from), &used);
-      if (used != plus - from) n = 0;
-    } catch (const std::exception&) {
-    }
-    counts.push_back(n);
-    from = plus + 1;
-  }
-  const bool bad = name.empty() || counts.empty() || std::any_of(counts.begin(), counts.end(), [](int n) { return n < 1; });
-  if (bad)
-    throw UsageError("--device '" + selector +
-                     "': expected sub:NAME:N (N compute units per sub-device) or sub:NAME:N1+N2+... (by counts)");
-  auto parent = open_device(name);
-  const bool by_counts = counts.size() > 1;
-  std::vector<cl_device_partition_property> props;
-  if (by_counts) {
-    props.push_back(CL_DEVICE_PARTITION_BY_COUNTS);
-    for (int n : counts) props.push_back(cl_device_partition_property(n));
-    props.push_back(CL_DEVICE_PARTITION_BY_COUNTS_LIST_END);
-  } else {
-    props = {CL_DEVICE_PARTITION_EQUALLY, cl_device_partition_property(counts[0])};
-  }
-  props.push_back(0);
-  std::vector<cl::Device> subs;
-  try {
-    parent->device().createSubDevices(props.data(), &subs);
-  } catch (const cl::Error&) {
-    rethrow_cl_error("partitioning '" + parent->info().name + "' into sub-devices of " + spec + " compute unit(s)");
-  }
-  std::vector<std::unique_ptr<Device>> out;
-  for (std::size_t i = 0; i < subs.size(); ++i) {
-    DeviceInfo info = parent->info();
-    info.name += " [sub-device " + std::to_string(i) + "]";
-    info.compute_units = by_counts ? counts[i] : counts[0];
-    out.push_back(std::make_unique<Device>(subs[i], info));
-  }
-  return out;
-}
-
-}  // namespace
 
 std::vector<std::unique_ptr<Device>> open_devices(const std::string& selector) {
-  if (selector.rfind("sub:", 0) == 0) return open_sub_devices(selector);
+  if (is_sub_device_selector(selector)) return open_sub_devices(selector, SubDeviceContext::own).subs;
   std::vector<std::string> names;
   if (selector == "all") {
     for (const DeviceInfo& d : list_devices()) names.push_back(std::to_string(d.index));
@@ -99,10 +46,12 @@ std::vector<std::unique_ptr<Device>> open_devices(const std::string& selector) {
 SplitRenderer::SplitRenderer(std::vector<std::unique_ptr<Device>> devices, RenderOptions options, bool keep_going)
     : devices_(std::move(devices)), options_(options), keep_going_(keep_going) {
   if (devices_.empty()) throw UsageError("no device to render on");
-  if (options_.plan) throw UsageError("--cu/--partition do not combine with a device list yet");
+  if (options_.plan)
+    throw UsageError("--cu/--partition run the units on one device, or on the sub-devices of one (--device sub:NAME:N); "
+                     "not across a device list");
   if (options_.float_output) throw UsageError("--float does not combine with a device list yet");
   speed_.assign(devices_.size(), 0.0);
-  dropped_.assign(devices_.size(), false);
+  dropped_.assign(devices_.size(), "");
 }
 
 const Frame& SplitRenderer::render(const Scene& scene, std::string* warning) {
@@ -111,7 +60,7 @@ const Frame& SplitRenderer::render(const Scene& scene, std::string* warning) {
   const int tile_rows = (scene.height + tile - 1) / tile;
   std::vector<std::size_t> active;
   for (std::size_t i = 0; i < devices_.size(); ++i)
-    if (!dropped_[i]) active.push_back(i);
+    if (dropped_[i].empty()) active.push_back(i);
   if (active.empty()) throw DeviceError("every device of the list failed");
   // Band sizes in proportion to the measured speeds (equal until every active device was measured).
   const bool measured = std::all_of(active.begin(), active.end(), [&](std::size_t i) { return speed_[i] > 0; });
@@ -131,7 +80,11 @@ const Frame& SplitRenderer::render(const Scene& scene, std::string* warning) {
     shares_[i].rows = std::max(0, end - row);
     row = std::max(row, end);
   }
-  for (std::size_t i = 0; i < devices_.size(); ++i) shares_[i].device = devices_[i]->info().name;
+  for (std::size_t i = 0; i < devices_.size(); ++i) {
+    shares_[i].device = devices_[i]->info().name;
+    shares_[i].failed = !dropped_[i].empty();
+    shares_[i].error = dropped_[i];
+  }
 
   RenderedImage& img = frame_.image;
   img.width = scene.width;
@@ -171,11 +124,9 @@ const Frame& SplitRenderer::render(const Scene& scene, std::string* warning) {
     try {
       std::rethrow_exception(errors[i]);
     } catch (const std::exception& e) {
-      shares_[i].failed = true;
-      shares_[i].error = e.what();
       if (!keep_going_) throw DeviceError("device '" + devices_[i]->info().name + "' failed: " + e.what());
       if (warning) *warning += "device '" + devices_[i]->info().name + "' failed (" + e.what() + "); continuing on the others\n";
-      dropped_[i] = true;
+      dropped_[i] = *e.what() ? e.what() : "failed";
       failed = true;
     }
   }

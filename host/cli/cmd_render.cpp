@@ -13,6 +13,7 @@
 #include "tune_cache.hpp"
 #include "split_render_cli.hpp"
 #include "parashade/split_renderer.hpp"
+#include "parashade/sub_devices.hpp"
 #include "parashade/combined.hpp"
 #include "parashade/combined_kernel.hpp"
 #include "parashade/errors.hpp"
@@ -57,6 +58,12 @@ FrameTimings median_timings(const std::vector<FrameTimings>& f) {
   m.total_ms = med(&FrameTimings::total_ms);
   m.planning_ms = med(&FrameTimings::planning_ms);
   m.unit_pass_ms = med(&FrameTimings::unit_pass_ms);
+  m.key_merge_ms = med(&FrameTimings::key_merge_ms);
+  for (std::size_t k = 0; !f.empty() && k < f.front().unit_pass_share_ms.size(); ++k) {
+    std::vector<double> v;
+    for (const auto& t : f) v.push_back(k < t.unit_pass_share_ms.size() ? t.unit_pass_share_ms[k] : 0.0);
+    m.unit_pass_share_ms.push_back(median(v));
+  }
   return m;
 }
 
@@ -116,9 +123,23 @@ int run_render(const RenderArgs& a) {
   check_image_destination(out_path);
   if (!a.report.empty()) check_report_destination(a.report);
 
-  if (is_device_list(a.device))
+  // --cu with sub:NAME:N: the units' depth pass spread over the sub-devices, not bands (docs/planner.md).
+  const bool units_on_sub_devices = options.plan && is_sub_device_selector(a.device);
+  if (a.keep_going && units_on_sub_devices)
+    throw UsageError("--keep-going drops devices of a split frame; the units of --cu on sub-devices ('" + a.device +
+                     "') have no fallback: a failing sub-device ends the run");
+  if (a.keep_going && !is_device_list(a.device))
+    throw UsageError("--keep-going drops failing devices of a list (--device all, A,B or sub:NAME:N); " +
+                     (a.device.empty() ? std::string("the default device") : "'" + a.device + "'") + " is one device");
+  if (is_device_list(a.device) && !units_on_sub_devices)
     return run_split_render(scene, options, {a.device, a.output, a.report, a.scene, a.frames, a.warmup, a.keep_going, a.quiet});
-  auto device = open_device(a.device);
+  SubDevices sub;  // with units_on_sub_devices: the parent (renders) and the sub-devices (run the units)
+  std::vector<Device*> unit_devices;
+  if (units_on_sub_devices) {
+    sub = open_sub_devices(a.device, SubDeviceContext::shared);
+    for (const auto& d : sub.subs) unit_devices.push_back(d.get());
+  }
+  auto device = units_on_sub_devices ? std::move(sub.parent) : open_device(a.device);
   const DeviceInfo& dev = device->info();
   if (a.work_items < 0) throw UsageError("--work-items must not be negative");
   nlohmann::json tuned = nullptr;
@@ -136,7 +157,7 @@ int run_render(const RenderArgs& a) {
       std::cerr << "parashade: warning: tune cache not used: " << e.what() << "\n";
     }
   }
-  Renderer renderer(*device, options);
+  Renderer renderer(*device, options, unit_devices);
   if (!a.quiet)
     std::cerr << "rendering " << scene.name << " (" << scene.width << "x" << scene.height << ", "
               << scene.triangle_count() << " triangles, " << method_name(method) << ") on " << dev.name << " ...\n";
@@ -212,6 +233,7 @@ int run_render(const RenderArgs& a) {
   if (frame.stats.plan) {
     report["plan"] = to_json(*frame.stats.plan);
     report["plan"]["measured_frame_ms"] = med.total_ms;
+    report["plan"]["mapping"] = unit_mapping_json(frame.stats, med);
   }
   if (!a.report.empty()) {
     try {
@@ -244,6 +266,7 @@ int run_render(const RenderArgs& a) {
     print_plan(*frame.stats.plan, !a.quiet);
     std::printf("planned frame: planning %.3f ms, units' depth pass %.3f ms, resolve kernel %.3f ms (medians)\n",
                 med.planning_ms, med.unit_pass_ms, med.kernel_ms);
+    print_unit_mapping(frame.stats, med);
   }
   if (options.span_normalize() || options.specular.kind != SpecularKind::exact) {
     const std::string steps = frame.stats.normalize_sequential_steps
@@ -296,8 +319,10 @@ Command add_render_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--device", a->device,
                   "OpenCL device: index or name substring (see 'parashade devices'); 'all' or a comma list splits the "
-                  "frame across devices by measured speed");
-  cmd->add_flag("--keep-going", a->keep_going, "With a device list: drop a failing device (named) and go on with the others");
+                  "frame across devices by measured speed; sub:NAME:N or sub:NAME:N1+N2 uses NAME's sub-devices (bands "
+                  "of the frame; with --cu, the units' depth pass on them)");
+  cmd->add_flag("--keep-going", a->keep_going,
+                "With a device list (bands): drop a failing device (named) and go on with the others");
   cmd->add_option("--size", a->size, "Resolution WIDTHxHEIGHT (at most 4096x4096), overriding the scene's");
   cmd->add_option("--report", a->report, "Write a JSON report (timings, stages, error figures)");
   cmd->add_option("--frames", a->frames, "Timed frames; the median is reported")->capture_default_str();

@@ -86,4 +86,24 @@ void print_plan(const PlanReport& r, bool per_unit) {
   }
 }
 
+void print_unit_mapping(const FrameStats& s, const FrameTimings& t) {
+  if (!s.unit_pass_on_sub_devices) {
+    if (!s.unit_pass.empty())
+      std::printf("units as %d work-items (work-group size 1) of one kernel on %s\n", s.unit_pass[0].units,
+                  s.unit_pass[0].device.c_str());
+    return;
+  }
+  std::printf("units on %zu sub-devices (contiguous blocks; keys min-merged in %.3f ms):\n", s.unit_pass.size(),
+              t.key_merge_ms);
+  for (std::size_t k = 0; k < s.unit_pass.size(); ++k) {
+    const UnitPassShare& u = s.unit_pass[k];
+    const double ms = k < t.unit_pass_share_ms.size() ? t.unit_pass_share_ms[k] : 0.0;
+    if (u.units == 0)
+      std::printf("  %-48s %d CU: no units\n", u.device.c_str(), u.compute_units);
+    else
+      std::printf("  %-48s %d CU: units %d..%d, %d packet(s) from %d, pass %.3f ms\n", u.device.c_str(),
+                  u.compute_units, u.first_unit, u.first_unit + u.units - 1, u.packets, u.first_packet, ms);
+  }
+}
+
 }  // namespace parashade::cli

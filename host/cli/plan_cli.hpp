@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "parashade/planner.hpp"
+#include "parashade/renderer.hpp"
 
 namespace parashade::cli {
 
@@ -29,5 +30,9 @@ std::vector<PlanOptions> plan_option_list(const PlanArgs& a);
 
 // The per-unit load and its summary, as text.
 void print_plan(const PlanReport& r, bool per_unit);
+
+// How the units' depth pass was mapped (work-items of one device, or which sub-device ran which units)
+// with each share's pass time, as text.
+void print_unit_mapping(const FrameStats& s, const FrameTimings& t);
 
 }  // namespace parashade::cli

@@ -45,9 +45,13 @@ int run_split_render(const Scene& scene, const RenderOptions& options, const Spl
   }
   std::printf("%s: %dx%d split across devices, frame %.3f ms (median of %d)\n", scene.name.c_str(), scene.width,
               scene.height, ms, a.frames);
-  for (const auto& s : renderer.shares())
-    std::printf("  %-40s tile rows %4d..%4d (%d rows) %9.3f ms%s\n", s.device.c_str(), s.first_row,
-                s.first_row + s.rows - 1, s.rows, s.frame_ms, s.failed ? "  FAILED (dropped)" : "");
+  for (const auto& s : renderer.shares()) {
+    if (s.failed)
+      std::printf("  %-40s FAILED, dropped (--keep-going)\n", s.device.c_str());
+    else
+      std::printf("  %-40s tile rows %4d..%4d (%d rows) %9.3f ms\n", s.device.c_str(), s.first_row,
+                  s.first_row + s.rows - 1, s.rows, s.frame_ms);
+  }
   std::printf("wrote %s%s%s\n", a.output.c_str(), a.report.empty() ? "" : " and ", a.report.c_str());
   return 0;
 }

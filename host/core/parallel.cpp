@@ -100,8 +100,12 @@ unsigned default_threads() {
 
 unsigned chosen_threads = 0;  // 0: default_threads()
 std::unique_ptr<Pool> the_pool;
+// The first parallel_for calls may come from several threads at once (SplitRenderer's devices): the
+// pool is made under a lock, else two are made and one is destroyed while the other thread uses it.
+std::mutex pool_mutex;
 
 Pool& pool() {
+  std::lock_guard<std::mutex> lock(pool_mutex);
   if (!the_pool) the_pool = std::make_unique<Pool>(host_threads());
   return *the_pool;
 }
@@ -111,6 +115,7 @@ Pool& pool() {
 unsigned host_threads() { return chosen_threads ? chosen_threads : default_threads(); }
 
 void set_host_threads(unsigned threads) {
+  std::lock_guard<std::mutex> lock(pool_mutex);
   chosen_threads = std::max(1u, threads);
   the_pool.reset();
 }

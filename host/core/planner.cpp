@@ -151,6 +151,17 @@ std::vector<int> assign_in_order(const std::vector<std::uint64_t>& cost, int uni
   return out;
 }
 
+std::vector<int> proportional_blocks(int items, const std::vector<int>& weights) {
+  const std::int64_t total = std::accumulate(weights.begin(), weights.end(), std::int64_t(0));
+  std::vector<int> first{0};
+  std::int64_t before = 0;
+  for (int w : weights) {
+    before += w;
+    first.push_back(total > 0 ? int((2 * std::int64_t(items) * before + total) / (2 * total)) : items);
+  }
+  return first;
+}
+
 std::uint64_t PlanReport::total_clocks() const {
   std::uint64_t sum = 0;
   for (const UnitLoad& l : load) sum += l.clocks;

@@ -34,13 +34,18 @@ std::vector<DeviceInfo> list_devices();
 class Device {
  public:
   Device(cl::Device device, DeviceInfo info);
+  // A device of a context it shares with other devices (a parent and its sub-devices: sub_devices.hpp);
+  // its own queue, its own program cache.
+  Device(cl::Device device, DeviceInfo info, cl::Context context);
   const DeviceInfo& info() const { return info_; }
   cl::Context& context() { return context_; }
   cl::CommandQueue& queue() { return queue_; }
   cl::Device& device() { return device_; }
   // Builds the concatenation of `files` of kernels/ (their #include "..." lines resolved from the
   // embedded sources) with -cl-std=CL1.2 and `options`, once per (files, options). Throws DeviceError
-  // with the device name and the build log.
+  // with the device name and the build log. Fault injection for tests: when the environment variable
+  // PARASHADE_FAIL_DEVICE is a substring of this device's name (any case), every build fails there
+  // (kernels/common.h stops it with #error), through the same path as a real build failure.
   cl::Program& program(const std::vector<std::string>& files, const std::string& options);
 
  private:

@@ -55,6 +55,12 @@ std::vector<int> assign_lpt(const std::vector<std::uint64_t>& cost, int units);
 // model of units pulling work from a shared counter.
 std::vector<int> assign_in_order(const std::vector<std::uint64_t>& cost, int units);
 
+// Contiguous blocks of `items` in proportion to `weights` (the units of --cu over sub-devices by their
+// compute units, or a sub-device's share of the batches by its units): block k is [first[k], first[k + 1]),
+// first[k] = round(items * (w_0 + ... + w_{k-1}) / W) with halves rounded up. weights.size() + 1 entries;
+// a block may be empty when items < weights.size(). Weights must be >= 0 with a positive sum.
+std::vector<int> proportional_blocks(int items, const std::vector<int>& weights);
+
 struct UnitLoad {
   std::uint64_t triangles = 0;  // triangles started (tiles: triangle-tile entries)
   std::uint64_t spans = 0;

@@ -3,6 +3,7 @@
 // "software"), then the shading kernel (the modeled hardware units), then read-back.
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <CL/opencl.hpp>
@@ -59,7 +60,20 @@ struct FrameTimings {
   double readback_ms = 0;  // map the frame and copy it out
   double total_ms = 0;     // the whole frame
   double planning_ms = 0;  // with a plan: costs, assignment and work lists (host)
-  double unit_pass_ms = 0; // with a plan: the units' depth pass (profiling event); kernel_ms is the resolve
+  double unit_pass_ms = 0; // with a plan: the units' depth pass (profiling events); kernel_ms is the resolve
+  // On sub-devices: unit_pass_ms from the first share's start to the last one's end; each share's own
+  // pass (as FrameStats::unit_pass, 0 for a share without units) and the min-merge of their keys.
+  std::vector<double> unit_pass_share_ms;
+  double key_merge_ms = 0;
+};
+
+// Which device ran which modeled units in the units' depth pass (docs/planner.md): the device itself
+// (U work-items of work-group size 1), or one share per sub-device (a contiguous block of units).
+struct UnitPassShare {
+  std::string device;
+  int compute_units = 0;
+  int first_unit = 0, units = 0;      // units [first_unit, first_unit + units), a work-item each
+  int first_packet = 0, packets = 0;  // the work lists' packets they run (static: one per unit; dynamic: batches)
 };
 
 struct FrameStats {
@@ -74,6 +88,8 @@ struct FrameStats {
   std::uint64_t parity_dropped = 0;  // sierpinski: triangles degenerate after vertex parity normalization
   std::uint64_t sierpinski_whole = 0;  // sierpinski :touch/:overlap: too small to halve, shaded whole
   std::optional<PlanReport> plan;    // with a plan: the modeled per-unit load
+  std::vector<UnitPassShare> unit_pass;  // with a plan: how the units were mapped onto the device(s)
+  bool unit_pass_on_sub_devices = false;
   HighlightMarks highlight;          // combined with the highlight-presence test
   std::optional<TriangleChoiceStats> choice;  // combined with a per-triangle method choice
 };
@@ -86,7 +102,9 @@ struct Frame {
 
 class Renderer {
  public:
-  Renderer(Device& device, RenderOptions options);
+  // unit_devices (with a plan only): sub-devices of `device`, in its context (sub_devices.hpp), over
+  // which the units' depth pass is spread; empty: the units run as work-items of `device`.
+  Renderer(Device& device, RenderOptions options, std::vector<Device*> unit_devices = {});
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
@@ -106,12 +124,20 @@ class Renderer {
   void release_frame();  // unmaps the last frame's image
   // planned_frame.cpp: the plan of a frame (in prepare), and the units' pass before the resolve kernel.
   void plan_frame(const TriangleGeometry* tris, std::size_t n, const std::uint32_t* tile_list, FrameTimings& t, FrameStats& s);
+  struct UnitPassEvents {
+    std::vector<cl::Event> share;  // per FrameStats::unit_pass entry (none for a share without units)
+    std::vector<cl::Event> merge;  // sub-devices: the key merges
+  };
+  std::vector<UnitPassShare> unit_pass_shares() const;
   void enqueue_unit_pass(cl::Kernel& resolve, const std::vector<std::string>& files, const std::string& options,
-                         cl_float4 viewer, cl_float4 background, const Scene& scene, cl::Event& done);
+                         cl_float4 viewer, cl_float4 background, const Scene& scene,
+                         const std::vector<UnitPassShare>& shares, UnitPassEvents& events);
+  void unit_pass_times(const UnitPassEvents& events, FrameTimings& t) const;
   cl::Buffer& ensure(cl::Buffer& buffer, std::size_t& capacity, std::size_t bytes, cl_mem_flags flags);
 
   Device& device_;
   RenderOptions options_;
+  std::vector<Device*> unit_devices_;
   ScreenGeometry geometry_;
   std::vector<TriangleShading> choice_;  // combined: the per-triangle method choice of this frame
   Frame frame_;
@@ -121,6 +147,8 @@ class Renderer {
   Plan plan_;
   std::vector<std::uint32_t> band_start_;  // tile_start with the tiles outside the band emptied
   cl::Buffer keys_, plan_packets_, plan_vtiles_, plan_starts_, plan_list_, plan_counter_;
+  std::vector<cl::Buffer> share_keys_, share_counters_;  // sub-devices: each one's keys and batch counter
+  std::vector<std::size_t> share_keys_cap_, share_counters_cap_;
   std::size_t keys_cap_ = 0, plan_packets_cap_ = 0, plan_vtiles_cap_ = 0, plan_starts_cap_ = 0, plan_list_cap_ = 0,
               plan_counter_cap_ = 0;
   DdaRowTable dda_;  // the last frame's row table (uploaded without waiting: it must outlive the copy)

@@ -18,6 +18,9 @@ nlohmann::json to_json(const FrameTimings& t);
 nlohmann::json to_json(const FrameStats& s);
 nlohmann::json to_json(const ModeledClocks& c);
 nlohmann::json to_json(const PlanReport& r);  // per-unit load, frame clocks, imbalance
+// With a plan: how the units' depth pass was mapped (U work-items of one device, or which sub-device ran
+// which units and packets) and each share's measured pass time, from `t` (medians or one frame).
+nlohmann::json unit_mapping_json(const FrameStats& s, const FrameTimings& t);
 // A finite number, or null.
 nlohmann::json number_or_null(double v);
 

@@ -23,7 +23,7 @@ class SplitRenderer {
     std::string device;
     int first_row = 0, rows = 0;  // tile rows
     double frame_ms = 0;          // the device's frame for its band (host clock)
-    bool failed = false;
+    bool failed = false;  // dropped after failing (--keep-going): error says why
     std::string error;
   };
   // keep_going: a device that fails is reported on `warn` and dropped, the frame redone on the others;
@@ -37,7 +37,7 @@ class SplitRenderer {
   RenderOptions options_;
   bool keep_going_;
   std::vector<double> speed_;  // tile rows per kernel ms in the last frame; 0: not measured yet
-  std::vector<bool> dropped_;
+  std::vector<std::string> dropped_;  // why a device was dropped (--keep-going); empty: it renders
   std::vector<Share> shares_;
   Frame frame_;
 };

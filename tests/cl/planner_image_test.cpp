@@ -1,6 +1,9 @@
 // Planned frames (--cu, --partition) against the plain frame: the same bytes for every strategy, unit
-// count and repeated run; and the planner's host span walk against the kernel's modeled clocks.
+// count and repeated run, with the units on one device or on its sub-devices; and the planner's host
+// span walk against the kernel's modeled clocks.
+#include <algorithm>
 #include <cstring>
+#include <memory>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -8,7 +11,9 @@
 #include "cl_fixture.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/renderer.hpp"
+#include "parashade/errors.hpp"
 #include "parashade/setup.hpp"
+#include "parashade/sub_devices.hpp"
 #include "test_support.hpp"
 
 namespace parashade {
@@ -31,8 +36,8 @@ Scene tie_scene(int width, int height) {
 
 using Bytes = std::vector<std::uint8_t>;
 
-Bytes render_bytes(const Scene& scene, RenderOptions o) {
-  Renderer r(test_device(), o);
+Bytes render_bytes(const Scene& scene, RenderOptions o, Device& device = test_device()) {
+  Renderer r(device, o);
   const auto& rgba = r.render(scene).image.rgba;
   return Bytes(rgba.begin(), rgba.end());
 }
@@ -44,8 +49,10 @@ std::size_t differing_pixels(const A& a, const Bytes& b) {
   return n;
 }
 
-void expect_planned_equal(const Scene& scene, RenderOptions base, const std::vector<int>& units) {
-  const Bytes plain = render_bytes(scene, base);
+// On `device`, or with the units' pass spread over `unit_devices` (sub-devices of `device`).
+void expect_planned_equal(const Scene& scene, RenderOptions base, const std::vector<int>& units,
+                          Device& device = test_device(), const std::vector<Device*>& unit_devices = {}) {
+  const Bytes plain = render_bytes(scene, base, device);
   for (Partition p : {Partition::round_robin, Partition::lpt, Partition::tiles, Partition::dynamic})
     for (int u : units) {
       RenderOptions o = base;
@@ -54,14 +61,28 @@ void expect_planned_equal(const Scene& scene, RenderOptions base, const std::vec
       plan.units = u;
       plan.batch = 16;
       o.plan = plan;
-      Renderer r(test_device(), o);
+      Renderer r(device, o, unit_devices);
       for (int run = 0; run < 2; ++run) {
         const Frame& f = r.render(scene);
         ASSERT_EQ(f.image.rgba.size(), plain.size());
         EXPECT_EQ(differing_pixels(f.image.rgba, plain), 0u)
-            << partition_name(p) << " U=" << u << " run " << run << ": pixels differing from the plain frame";
+            << partition_name(p) << " U=" << u << " run " << run << " on " << unit_devices.size()
+            << " sub-device(s): pixels differing from the plain frame";
         ASSERT_TRUE(f.stats.plan.has_value());
         EXPECT_EQ(f.stats.plan->units, u);
+        // Every unit and every packet of the work lists runs on exactly one device, in contiguous blocks.
+        ASSERT_EQ(f.stats.unit_pass.size(), std::max<std::size_t>(1, unit_devices.size()));
+        EXPECT_EQ(f.stats.unit_pass_on_sub_devices, !unit_devices.empty());
+        ASSERT_EQ(f.timings.unit_pass_share_ms.size(), f.stats.unit_pass.size());
+        int next_unit = 0, next_packet = 0;
+        for (const UnitPassShare& s : f.stats.unit_pass) {
+          EXPECT_EQ(s.first_unit, next_unit);
+          EXPECT_EQ(s.first_packet, next_packet);
+          next_unit += s.units;
+          next_packet += s.packets;
+        }
+        EXPECT_EQ(next_unit, u);
+        EXPECT_EQ(next_packet, p == Partition::dynamic ? next_packet : u);
       }
     }
 }
@@ -96,6 +117,30 @@ TEST(PlannedFrame, SameBytesOnASharedMesh) {
   scene.height = 360;
   RenderOptions o;
   expect_planned_equal(scene, o, {1, 3, 8});
+}
+
+// The units' depth pass spread over sub-devices of PoCL's pthread device (parent and sub-devices in one
+// context; each sub-device's units into keys of its own, min-merged on the parent): the same bytes.
+TEST(PlannedFrame, SameBytesWithUnitsOnSubDevices) {
+  std::unique_ptr<Device> pthread;
+  try {
+    pthread = open_device("pthread");
+  } catch (const DeviceError& e) {
+    GTEST_SKIP() << "no PoCL pthread device: " << e.what();
+  }
+  if (pthread->info().compute_units < 2)
+    GTEST_SKIP() << "'" << pthread->info().name << "' offers " << pthread->info().compute_units
+                 << " compute unit(s); two sub-devices of one need 2";
+  const Scene scene = tie_scene(320, 200);
+  const RenderOptions o;
+  for (const char* selector : {"sub:pthread:1", "sub:pthread:1+1"}) {
+    SCOPED_TRACE(selector);
+    const SubDevices sub = open_sub_devices(selector, SubDeviceContext::shared);
+    std::vector<Device*> units_on;
+    for (const auto& d : sub.subs) units_on.push_back(d.get());
+    ASSERT_GE(units_on.size(), 2u);
+    expect_planned_equal(scene, o, {1, 2, 3, 8}, *sub.parent, units_on);
+  }
 }
 
 TEST(PlannedFrame, HostSpanClocksEqualTheKernelsCount) {

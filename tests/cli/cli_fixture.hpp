@@ -16,6 +16,7 @@
 
 #include "run_parashade.hpp"
 #include "scene/temp_dir.hpp"
+#include "test_support.hpp"
 
 namespace parashade::testing_support {
 

@@ -73,20 +73,15 @@ TEST_F(CliDeterminism, TileSizeDoesNotChangeTheImage) {
 // Fixed-point spans are integer arithmetic: PoCL's pthread device (vectorizing, several threads) and its
 // basic device (one thread) must agree to the byte.
 TEST_F(CliDeterminism, PthreadAndBasicDevicesAgreeInFixedPoint) {
-  const char* old = std::getenv("POCL_DEVICES");
-  const std::string saved = old ? old : "";
-  ::setenv("POCL_DEVICES", "pthread basic", 1);
+  const ScopedEnv devices("POCL_DEVICES", "pthread basic");
   const RunResult listing = run_parashade({"devices"});
-  if (listing.out.find("basic") == std::string::npos || listing.out.find("pthread") == std::string::npos) {
-    if (old) ::setenv("POCL_DEVICES", saved.c_str(), 1); else ::unsetenv("POCL_DEVICES");
+  if (listing.out.find("basic") == std::string::npos || listing.out.find("pthread") == std::string::npos)
     GTEST_SKIP() << "PoCL does not offer both devices:" << listing;
-  }
   for (const std::string& units : {"classic", "counter"}) {
     const std::string on_pthread = render_teapot("pthread", {"--arith", "fixed:10.4", "--units", units, "--device", "pthread"});
     const std::string on_basic = render_teapot("basic", {"--arith", "fixed:10.4", "--units", units, "--device", "basic"});
     EXPECT_TRUE(on_pthread == on_basic) << "--units " << units;
   }
-  if (old) ::setenv("POCL_DEVICES", saved.c_str(), 1); else ::unsetenv("POCL_DEVICES");
 }
 
 }  // namespace

@@ -52,6 +52,18 @@ TEST(PlannerAssign, InOrderModelsUnitsPullingFromACounter) {
   EXPECT_EQ(loads_of(order, cost, 2), (std::vector<std::uint64_t>{4, 6}));
 }
 
+TEST(PlannerAssign, ProportionalBlocksOfUnitsOverSubDevices) {
+  // Units over sub-devices by compute units: 8 over 1+1 -> 4 and 4; 3 over 1+1 -> 2 and 1 (1.5 rounds
+  // up); 8 over 1+3 -> 2 and 6; 1 over 1+1 -> 1 and none; 5 over 2+1+1 -> 2.5 -> 3, 3.75 -> 4: 3, 1, 1.
+  EXPECT_EQ(proportional_blocks(8, {1, 1}), (std::vector<int>{0, 4, 8}));
+  EXPECT_EQ(proportional_blocks(3, {1, 1}), (std::vector<int>{0, 2, 3}));
+  EXPECT_EQ(proportional_blocks(8, {1, 3}), (std::vector<int>{0, 2, 8}));
+  EXPECT_EQ(proportional_blocks(1, {1, 1}), (std::vector<int>{0, 1, 1}));
+  EXPECT_EQ(proportional_blocks(5, {2, 1, 1}), (std::vector<int>{0, 3, 4, 5}));
+  // Batches over sub-devices by their units: a sub-device without units gets no batches.
+  EXPECT_EQ(proportional_blocks(99, {1, 0}), (std::vector<int>{0, 99, 99}));
+}
+
 // The right triangle x >= 0, y >= 0, x + y <= 3 on a 4x4 box at (0, 0): rows of 4, 3, 2, 1 pixels.
 TriangleGeometry staircase(int x0, int y0) {
   TriangleGeometry t{};
