@@ -5,11 +5,14 @@
 # then the report (plots, image strip, claims table) when python3-matplotlib is present.
 #   scripts/bench-suite.sh [OUT_DIR]          whole suite (sizes 1920x1080, 512x512, 3840x2160; ~1 h here)
 #   scripts/bench-suite.sh --quick [OUT_DIR]  CI subset: sphere_8k and fullscreen_quad at 512x512 (< 1 min)
+#   scripts/bench-suite.sh --phong [OUT_DIR]  the Phong family (SEEDS §6-§8) and the claims table only (~20 min)
 # Environment: PARASHADE_MESH_DIR (bunny, fandisk; skipped without it), PARASHADE_DEVICE, BUILD (default build).
 set -eu
 cd "$(dirname "$0")/.."
 QUICK=0
+PHONG_ONLY=0
 if [ "${1:-}" = "--quick" ]; then QUICK=1; shift; fi
+if [ "${1:-}" = "--phong" ]; then PHONG_ONLY=1; shift; fi
 OUT="${1:-bench-results}"
 BUILD="${BUILD:-build}"
 case "$BUILD" in /*) ;; *) BUILD="$PWD/$BUILD" ;; esac
@@ -32,6 +35,7 @@ if [ "$QUICK" = 1 ]; then
   exit 0
 fi
 
+if [ "$PHONG_ONLY" = 0 ]; then
 # Every case, one run per size (the 1920x1080 run holds the targets' ratios), 3 repetitions in random
 # order (a noisy spell on this shared machine then does not fall on one case only); medians.
 # A size whose result file exists is not run again (resume after an interruption; delete it to rerun).
@@ -66,17 +70,22 @@ if [ -x "$BUILD/bench/bench_span_setup" ]; then
   "$BUILD/bench/bench_span_setup" --print-ops >"$OUT/span-ops.txt"      # operation counts, example triangle
 fi
 
+fi  # PHONG_ONLY
+
 # Phong family (SEEDS §6-§8): approximation errors (parashade phong-study), the combined method's and the
 # normalization / specular variants' speed and error through render reports, the host normalization
 # methods in scalar C++ (bench_normalize), and the best variant at NMSE <= 1e-4 derived from the two studies.
 "$BUILD/parashade" phong-study --json "$OUT/phong-study.json" >/dev/null
-COMBINED_SCENES="scenes/teapot.json"
-if [ -n "${PARASHADE_MESH_DIR:-}" ]; then COMBINED_SCENES="$COMBINED_SCENES scenes/bunny.json"; fi
+PHONG_SCENES="scenes/sphere.json scenes/teapot.json scenes/robot.json"
+if [ -n "${PARASHADE_MESH_DIR:-}" ]; then PHONG_SCENES="$PHONG_SCENES scenes/bunny.json"; fi
 # shellcheck disable=SC2086
-"$PYTHON" scripts/combined_study.py --binary "$BUILD/parashade" --scenes $COMBINED_SCENES --frames 5 --rounds 2 \
-    --methods phong gouraud combined:2 combined:3 combined:4 combined:auto@1 "combined:auto@1 --highlight-test" \
+"$PYTHON" scripts/combined_study.py --binary "$BUILD/parashade" --scenes $PHONG_SCENES --frames 11 --rounds 3 \
+    --methods phong gouraud combined:2 combined:3 combined:4 combined:auto@1 combined:auto@2 combined:auto@4 \
+              "combined:auto@1 --triangle-choice none" "combined:0 --triangle-choice sources" \
+              "combined:0 --triangle-choice sources-literal" "combined:0 --highlight-test" \
     --json "$OUT/combined-study.json" >"$OUT/combined-study.md"
-"$PYTHON" scripts/phong_methods.py --binary "$BUILD/parashade" --scenes scenes/sphere.json scenes/teapot.json \
+# shellcheck disable=SC2086
+"$PYTHON" scripts/phong_methods.py --binary "$BUILD/parashade" --scenes $PHONG_SCENES \
     --frames 5 --json "$OUT/phong-methods.json" >"$OUT/phong-methods.md"
 "$PYTHON" scripts/best_method.py --combined "$OUT/combined-study.json" --methods "$OUT/phong-methods.json" \
     -o "$OUT/best-method.json"
@@ -86,6 +95,12 @@ if [ -x "$BUILD/bench/bench_normalize" ]; then
       --benchmark_out="$OUT/normalize.json" --benchmark_out_format=json >/dev/null
 fi
 
+if [ "$PHONG_ONLY" = 1 ]; then
+  mkdir -p "$OUT/report"
+  "$PYTHON" scripts/claims.py --results "$OUT" -o "$OUT/report/claims.md"
+  echo "bench-suite: Phong family results in $OUT"
+  exit 0
+fi
 "$PYTHON" scripts/peak_memory.py --binary "$BUILD/parashade" -o "$OUT/memory.json"
 
 if "$PYTHON" -c "import matplotlib" 2>/dev/null; then

@@ -17,6 +17,10 @@ VARIANTS = [
     ("quadratic:cubic", "exact"), ("quadratic:cubic-fit", "exact"),
     ("exact", "cosk:taylor:2"), ("exact", "cosk:taylor:4"), ("exact", "cosk:lobe:2"), ("exact", "cosk:lobe:4"),
     ("exact", "quadratic"), ("exact", "7n16"), ("quadratic:cubic-fit", "quadratic"),
+    ("dichotomy:exact", "exact"), ("dichotomy:linear", "exact"), ("dichotomy:quadratic", "exact"),
+    ("dichotomy:linear-fit", "exact"), ("dichotomy:quadratic-fit", "exact"), ("dichotomy:exact:4:extrapolate", "exact"),
+    ("recurrence", "exact"), ("recurrence:exact:64", "exact"), ("recurrence-diff:exact", "exact"),
+    ("recurrence:table", "exact"), ("recurrence:table-fixed:64", "exact"),
 ]
 
 
