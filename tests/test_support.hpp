@@ -5,7 +5,20 @@
 #include <optional>
 #include <string>
 
+#include "parashade/scene.hpp"
+
 namespace parashade::testing_support {
+
+// A perspective camera (fov in degrees) looking from `position` at `target`.
+inline void set_perspective(Camera& c, glm::vec3 position, glm::vec3 target, float fov_degrees, float near_plane,
+                            float far_plane) {
+  c.projection = Projection::perspective;
+  c.position = position;
+  c.target = target;
+  c.fov_y_degrees = fov_degrees;
+  c.near_plane = near_plane;
+  c.far_plane = far_plane;
+}
 
 // ../shared/meshes as given by PARASHADE_MESH_DIR; nullopt (and the test skips) when unset or absent.
 inline std::optional<std::filesystem::path> mesh_dir() {

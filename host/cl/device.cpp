@@ -33,6 +33,11 @@ struct Found {
 };
 
 std::vector<Found> enumerate() {
+  // PoCL's pthread device lets the OS place its worker threads; on this project's 2-core machines both
+  // workers sometimes stay on one core for a whole process, and every kernel then takes twice as long
+  // (teapot Phong kernel 3.6 or 7.2 ms, per process at random, docs/pipeline.md). Pinning them
+  // (POCL_AFFINITY=1, read when PoCL initializes) removes that; an explicit setting is left alone.
+  ::setenv("POCL_AFFINITY", "1", 0);
   std::vector<cl::Platform> platforms;
   try {
     cl::Platform::get(&platforms);

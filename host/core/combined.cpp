@@ -64,7 +64,9 @@ bool uses_highlight_mask(const CombinedConfig& c) { return c.highlight_test || c
 
 int combined_min_width(const CombinedConfig& c) {
   if (c.min_width >= 0) return c.min_width;
-  return c.automatic ? 8 : 2 << c.k;
+  if (c.automatic) return 8;
+  // Segments of one pixel are Phong's pixels: walking them only adds the walk's fixed costs.
+  return c.k == 0 ? kNeverWalk : 2 << c.k;
 }
 
 double combined_shading_budget(const CombinedConfig& c) { return std::max(0.0, c.max_error - 0.5); }

@@ -35,6 +35,7 @@ void parse_triangle_rule(const std::string& text, CombinedConfig& c);
 std::string triangle_rule_name(const CombinedConfig& c);
 
 constexpr int kCombinedMaxK = 6;  // longest segment 64 pixels
+constexpr int kNeverWalk = 1 << 20;  // a minimum width no triangle reaches (combined:0 goes by Phong per pixel)
 
 // "combined:K" (K = 0..kCombinedMaxK) or "combined:auto"; throws UsageError otherwise.
 CombinedConfig parse_combined(const std::string& method_text);
@@ -43,7 +44,7 @@ std::string combined_name(const CombinedConfig& c);
 // of the per-triangle choice, which computes the mask anyway).
 bool uses_highlight_mask(const CombinedConfig& c);
 // Triangles narrower than this (bounding box, pixels) are shaded by Phong per pixel (combined:K, and
-// combined:auto without a per-triangle choice).
+// combined:auto without a per-triangle choice); combined:0 walks none.
 int combined_min_width(const CombinedConfig& c);
 // The shading error allowed to the segments: the budget minus the 8-bit image's rounding (0.5 level).
 double combined_shading_budget(const CombinedConfig& c);

@@ -10,6 +10,7 @@
 #include "cl_fixture.hpp"
 #include "parashade/renderer.hpp"
 #include "parashade/shapes.hpp"
+#include "test_support.hpp"
 
 namespace parashade {
 namespace {
@@ -67,12 +68,7 @@ TEST(TriangleChoiceKernel, GouraudAndPhongTrianglesAreTheirMethodsPixels) {
 // A smooth sphere and teapot, a directional light and a nearby point light, a local viewer.
 Scene smooth_scene() {
   Scene s = pixel_scene(400, 300);
-  s.camera.projection = Projection::perspective;
-  s.camera.position = {0.0f, 40.0f, 420.0f};
-  s.camera.target = {0.0f, 0.0f, 0.0f};
-  s.camera.fov_y_degrees = 40.0f;
-  s.camera.near_plane = 100.0f;
-  s.camera.far_plane = 900.0f;
+  set_perspective(s.camera, {0.0f, 40.0f, 420.0f}, {0.0f, 0.0f, 0.0f}, 40.0f, 100.0f, 900.0f);
   s.local_viewer = true;
   s.materials[0].shininess = 40.0f;
   Light lamp;

@@ -39,12 +39,7 @@ glm::mat4 random_pose(std::mt19937& rng, float scale) {
 
 Scene camera_scene() {
   Scene s = pixel_scene(160, 120);
-  s.camera.projection = Projection::perspective;
-  s.camera.position = {0.0f, 0.0f, 4.0f};
-  s.camera.target = {0.0f, 0.0f, 0.0f};
-  s.camera.fov_y_degrees = 40.0f;
-  s.camera.near_plane = 0.5f;
-  s.camera.far_plane = 20.0f;
+  set_perspective(s.camera, {0.0f, 0.0f, 4.0f}, {0.0f, 0.0f, 0.0f}, 40.0f, 0.5f, 20.0f);
   s.cull_backfaces = true;
   return s;
 }

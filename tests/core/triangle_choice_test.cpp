@@ -12,6 +12,7 @@
 #include "parashade/lighting.hpp"
 #include "parashade/shapes.hpp"
 #include "parashade/triangle_choice.hpp"
+#include "test_support.hpp"
 
 namespace parashade {
 namespace {
@@ -23,11 +24,7 @@ Scene lit_scene(std::uint32_t seed, float jitter, float shininess) {
   s.name = "choice";
   s.width = 480;
   s.height = 360;
-  s.camera.position = {0.0f, 1.0f, 6.0f};
-  s.camera.target = {0.0f, 0.2f, 0.0f};
-  s.camera.fov_y_degrees = 40.0f;
-  s.camera.near_plane = 0.5f;
-  s.camera.far_plane = 30.0f;
+  testing_support::set_perspective(s.camera, {0.0f, 1.0f, 6.0f}, {0.0f, 0.2f, 0.0f}, 40.0f, 0.5f, 30.0f);
   s.local_viewer = true;
   Light sun;
   sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, -0.6f));
