@@ -126,6 +126,7 @@ double distance_to_origin(const glm::dvec3& a, const glm::dvec3& b, const glm::d
 struct DiffuseBound {
   enum { lit, dark, crosses } state;
   double levels_unit;  // bound on |Gouraud - Phong| of max(0, N.L) (lit: docs/triangle-choice.md §2)
+  double distance = 0.0;  // lit or dark: N.L stays at least this far from 0 over the triangle
 };
 DiffuseBound diffuse_bound(const TriangleFrame& f, double normal_chord, double min_normal, const Light& l,
                            const LightBounds& b) {
@@ -137,8 +138,17 @@ DiffuseBound diffuse_bound(const TriangleFrame& f, double normal_chord, double m
       all_positive &= v > 0.0;
       all_nonpositive &= v <= 0.0;
     }
-  if (all_nonpositive) return {DiffuseBound::dark, 0.0};
-  if (!all_positive) return {DiffuseBound::crosses, 1.0};
+  // N^.L^ >= min_ij n_i.L_j (N'.D' = sum b_i b_j n_i.d_j, |N'| <= 1, |D'| <= sum b_j |d_j|), and every L_j is
+  // within the light's chord of its centre: how far the triangle keeps from the terminator.
+  double lowest = 1.0, highest = -1.0;
+  for (int i = 0; i < 3; ++i) {
+    const double v = glm::dot(f.n[i], b.light_centre);
+    lowest = std::min(lowest, v);
+    highest = std::max(highest, v);
+  }
+  const double chord = l.type == LightType::directional ? 0.0 : b.light_chord;
+  if (all_nonpositive) return {DiffuseBound::dark, 0.0, std::max(0.0, -highest - chord)};
+  if (!all_positive) return {DiffuseBound::crosses, 1.0, 0.0};
   // Any two L within two chords of the centroid's; the distances to the light within [dist - r, dist + r].
   const double light_chord = std::min(2.0, 2.0 * b.light_chord);
   const double rho = b.light_distance > 0.0 ? (b.light_distance + f.radius) / (b.light_distance - f.radius) : 1.0;
@@ -149,7 +159,7 @@ DiffuseBound diffuse_bound(const TriangleFrame& f, double normal_chord, double m
   // at most (1 - |L'|) plus the turn from reweighting L' by the distances (ratio rho).
   const double bound = normal_chord * light_chord / 3.0 + (1.0 - min_normal) * std::clamp(b.max_n_dot_l, 0.0, 1.0) +
                        (1.0 - min_light) + (rho - 1.0) * light_chord / min_light;
-  return {DiffuseBound::lit, std::min(1.0, bound)};
+  return {DiffuseBound::lit, std::min(1.0, bound), std::max(0.0, lowest - chord)};
 }
 
 }  // namespace
@@ -274,8 +284,14 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
           o.method = width + 1.0 >= double(fixed_walk_width) ? TriangleMethod::segments : TriangleMethod::phong;
         } else if (f.usable && width + 1.0 >= double(2 << c.walk_min_k)) {
           // Which terms can show decides the segment limit psi (a terminator, a highlight).
+          // The segments' normals reach beyond the triangle (the last one is extrapolated, docs/combined.md):
+          // the kink-free bound holds only if the terminator stays farther than the normals can turn there.
+          const double reach = std::asin(std::min(1.0, double(psi[4 * mat + (mask || !bound ? 2 : 0)]))) + 1e-3;
           bool crosses_any = !bound;
-          for (std::size_t i = 0; i < lights && !crosses_any; ++i) crosses_any = diffuse_of(i).state == DiffuseBound::crosses;
+          for (std::size_t i = 0; i < lights && !crosses_any; ++i) {
+            const DiffuseBound& d = diffuse_of(i);
+            crosses_any = d.state == DiffuseBound::crosses || d.distance <= reach;
+          }
           n_terminator += crosses_any;
           const int cls = (crosses_any ? 1 : 0) | (mask || !bound ? 2 : 0);
           o.psi_limit = psi[4 * mat + cls];
