@@ -5,7 +5,7 @@
 # then the report (plots, image strip, claims table) when python3-matplotlib is present.
 #   scripts/bench-suite.sh [OUT_DIR]          whole suite (sizes 1920x1080, 512x512, 3840x2160; ~1 h here)
 #   scripts/bench-suite.sh --quick [OUT_DIR]  CI subset: sphere_8k and fullscreen_quad at 512x512 (< 1 min)
-#   scripts/bench-suite.sh --phong [OUT_DIR]  the Phong family (SEEDS §6-§8) and the claims table only (~20 min)
+#   scripts/bench-suite.sh --phong [OUT_DIR]  the Phong family (SEEDS §6-§8) and the claims table only (~5 min)
 # Environment: PARASHADE_MESH_DIR (bunny, fandisk; skipped without it), PARASHADE_DEVICE, BUILD (default build).
 set -eu
 cd "$(dirname "$0")/.."
