@@ -282,7 +282,7 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
       if (o.method != TriangleMethod::gouraud) {
         if (!c.automatic) {
           o.method = width + 1.0 >= double(fixed_walk_width) ? TriangleMethod::segments : TriangleMethod::phong;
-        } else if (f.usable && width + 1.0 >= double(2 << c.walk_min_k)) {
+        } else if (f.usable && c.walk_min_k <= kCombinedMaxK && width + 1.0 >= std::ldexp(2.0, c.walk_min_k)) {
           // Which terms can show decides the segment limit psi (a terminator, a highlight).
           // The segments' normals reach beyond the triangle (the last one is extrapolated, docs/combined.md):
           // the kink-free bound holds only if the terminator stays farther than the normals can turn there.

@@ -26,7 +26,7 @@ struct CombinedConfig {
   bool rule_given = false;                       // --triangle-choice was on the command line
   double source_m = 0.9, source_q = 0.004, source_p = 0.008;  // the sources' thresholds
   // combined:auto with a choice: triangles whose segments could not reach 2^walk_min_k pixels go by Phong
-  // per pixel (the walk's fixed costs exceed what shorter segments save).
+  // per pixel (the walk's fixed costs exceed what shorter segments save); above kCombinedMaxK: none walk.
   int walk_min_k = 2;
 };
 
