@@ -237,15 +237,12 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
         setup_triangles(geometry_, method, tri_ptr, attr_ptr, fixed_ptr, choose ? choice_.data() : nullptr).without_pixels;
     if (choose) {
       apply_triangle_choice(choice_, attr_ptr, PHONG_ATTR_FLOATS);
-      if (uses_highlight_mask(options_.combined)) {
-        s.highlight = {s.choice->triangles, s.choice->without_highlight, 0};
-        for (const TriangleShading& c : choice_)
-          s.highlight.light_terms_skipped += scene.lights.size() - std::size_t(__builtin_popcount(c.specular_mask));
-      }
-    }
-    else if (method == Method::combined && options_.combined.highlight_test)
+      if (uses_highlight_mask(options_.combined))
+        s.highlight = {s.choice->triangles, s.choice->without_highlight, s.choice->light_terms_skipped};
+    } else if (method == Method::combined && options_.combined.highlight_test) {
       s.highlight = mark_highlights(scene, geometry_, attr_ptr, PHONG_ATTR_FLOATS, PHONG_HIGHLIGHT_SLOT,
                                     options_.combined.negligible_specular);
+    }
     if (options_.dda_coverage) {
       q.finish();  // the previous frame's row table may still be in flight
       dda_ = apply_dda_coverage(geometry_, tri_ptr, attr_ptr, fixed_ptr);

@@ -36,7 +36,6 @@ void parse_triangle_rule(const std::string& text, CombinedConfig& c) {
   else if (name == "sources") c.rule = TriangleRule::sources;
   else if (name == "sources-literal") c.rule = TriangleRule::sources_literal;
   else throw UsageError("--triangle-choice '" + text + "': expected none, bound, sources[:M,Q,P] or sources-literal[:M,Q,P]");
-  c.rule_given = true;
   if (colon == std::string::npos) return;
   const bool sources = c.rule == TriangleRule::sources || c.rule == TriangleRule::sources_literal;
   double v[3];
@@ -116,8 +115,9 @@ double segment_term_bound(double psi, double n, bool crosses_zero) {
   return std::min(1.0, chord_error_bound(phi, n, crosses_zero) + angle_shift_error(shift, n));
 }
 
-double segment_error_levels(const Scene& s, const Material& m, double psi) {
-  const double diffuse = segment_term_bound(psi, 1.0), specular = segment_term_bound(psi, m.shininess);
+double segment_error_levels(const Scene& s, const Material& m, double psi, SegmentTerms terms) {
+  const double diffuse = segment_term_bound(psi, 1.0, terms.terminator);
+  const double specular = terms.specular ? segment_term_bound(psi, m.shininess) : 0.0;
   double worst = 0.0;
   for (int c = 0; c < 3; ++c) {
     double sum = 0.0;
@@ -128,12 +128,12 @@ double segment_error_levels(const Scene& s, const Material& m, double psi) {
   return worst;
 }
 
-double psi_limit(const Scene& s, const Material& m, double budget_levels) {
-  if (segment_error_levels(s, m, 0.0) > budget_levels) return 0.0;
+double psi_limit(const Scene& s, const Material& m, double budget_levels, SegmentTerms terms) {
+  if (segment_error_levels(s, m, 0.0, terms) > budget_levels) return 0.0;
   double lo = 0.0, hi = 1.0;  // the error grows with psi
   for (int i = 0; i < 60; ++i) {
     const double mid = 0.5 * (lo + hi);
-    (segment_error_levels(s, m, mid) <= budget_levels ? lo : hi) = mid;
+    (segment_error_levels(s, m, mid, terms) <= budget_levels ? lo : hi) = mid;
   }
   return lo;
 }

@@ -3,6 +3,7 @@
 #include "parashade/parallel.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 
@@ -149,16 +150,14 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
     r.z_ddx = float(z.ddx);
     r.z_ddy = float(z.ddy);
 
-    struct Colours {
-      Plane c[3];
-    };
+    // Gouraud's colour planes (also the combined method's triangles given to Gouraud).
     const auto colour_planes = [&] {
-      Colours ch;
+      std::array<Plane, 3> ch;
       const ConstantSpanIncrement span_increment(s[0], s[1], s[2]);
       for (int k = 0; k < 3; ++k) {
         const double ia = g.color[vid[0]][k], ib = g.color[vid[1]][k], ic = g.color[vid[2]][k];
-        ch.c[k] = plane(ia, ib, ic);
-        ch.c[k].ddx = span_increment(ia, ib, ic);  // dI_G, once per triangle (formula 2.16)
+        ch[k] = plane(ia, ib, ic);
+        ch[k].ddx = span_increment(ia, ib, ic);  // dI_G, once per triangle (formula 2.16)
       }
       return ch;
     };
@@ -172,14 +171,14 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
         break;
       }
       case Method::gouraud: {
-        const Colours ch = colour_planes();
-        store(attr, 0, ch.c[0], ch.c[1], ch.c[2]);
+        const auto ch = colour_planes();
+        store(attr, 0, ch[0], ch[1], ch[2]);
         attr[9] = attr[10] = attr[11] = 0.0f;
         if (fixed) {
           for (int k = 0; k < 3; ++k) {
-            fixed[t].ref[k] = to_plane_register(ch.c[k].ref);
-            fixed[t].ddx[k] = to_plane_register(ch.c[k].ddx);
-            fixed[t].ddy[k] = to_plane_register(ch.c[k].ddy);
+            fixed[t].ref[k] = to_plane_register(ch[k].ref);
+            fixed[t].ddx[k] = to_plane_register(ch[k].ddx);
+            fixed[t].ddy[k] = to_plane_register(ch[k].ddy);
           }
         }
         break;
@@ -192,8 +191,8 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
           q[k] = has_position ? plane(g.world[vid[0]][k], g.world[vid[1]][k], g.world[vid[2]][k]) : Plane{0, 0, 0};
         }
         if (gouraud && gouraud[t].method == TriangleMethod::gouraud) {  // the combined method's per-triangle choice: Gouraud's planes
-          const Colours ch = colour_planes();
-          store(attr, 0, ch.c[0], ch.c[1], ch.c[2]);
+          const auto ch = colour_planes();
+          store(attr, 0, ch[0], ch[1], ch[2]);
         } else {
           store(attr, 0, n[0], n[1], n[2]);
         }

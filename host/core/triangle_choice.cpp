@@ -27,30 +27,7 @@ double gouraud_term_bound(double phi, double n, bool crosses_zero) {
   return std::min(1.0, edge + span);
 }
 
-double psi_limit_for(const Scene& s, const Material& m, double budget_levels, bool terminator, bool specular) {
-  const auto levels = [&](double psi) {
-    const double diffuse = segment_term_bound(psi, 1.0, terminator);
-    const double spec = specular ? segment_term_bound(psi, m.shininess) : 0.0;
-    double worst = 0.0;
-    for (int c = 0; c < 3; ++c) {
-      double sum = 0.0;
-      for (const Light& l : s.lights) sum += 255.0 * l.color[c] * (m.diffuse[c] * diffuse + m.specular[c] * spec);
-      worst = std::max(worst, sum);
-    }
-    return worst;
-  };
-  if (levels(0.0) > budget_levels) return 0.0;
-  double lo = 0.0, hi = 1.0;  // the error grows with psi
-  for (int i = 0; i < 40; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (levels(mid) <= budget_levels ? lo : hi) = mid;
-  }
-  return lo;
-}
-
 namespace {
-
-glm::dvec3 unit(const glm::dvec3& v) { return v * (1.0 / glm::length(v)); }
 
 // The listing's selectMetod(): true = Gouraud. Light 0's direction and the view direction are taken at
 // the triangle's centroid (the listing's scene has a directional light and a distant viewer).
@@ -62,8 +39,8 @@ bool sources_choose_gouraud(const Scene& s, const TriangleFrame& f, const Combin
   }
   if (s.lights.empty()) return true;
   const Light& l = s.lights[0];
-  const glm::dvec3 light = l.type == LightType::directional ? -unit(glm::dvec3(l.direction))
-                                                            : unit(glm::dvec3(l.position) - f.centroid);
+  const glm::dvec3 light = glm::normalize(l.type == LightType::directional ? -glm::dvec3(l.direction)
+                                                                         : glm::dvec3(l.position) - f.centroid);
   const glm::dvec3& view = f.view_centre;
   const glm::dvec3 h = light + view;  // unnormalized, as in the listing
   const auto spread = [&](const glm::dvec3& d) {
@@ -72,10 +49,6 @@ bool sources_choose_gouraud(const Scene& s, const TriangleFrame& f, const Combin
   };
   return spread(h) <= c.source_q && spread(light) <= c.source_p;
 }
-
-}  // namespace
-
-namespace {
 
 // An increasing function tabulated on [0, hi]: at() returns the value at the next grid point at or above x,
 // never less than f(x) (the bounds stay bounds). The per-triangle pass calls pow and the chord bound for
@@ -179,8 +152,8 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
   if (c.automatic)
     for (std::size_t mi = 0; mi < s.materials.size(); ++mi)
       for (int cls = 0; cls < 4; ++cls)
-        psi[4 * mi + cls] = bound || cls == 3 ? float(psi_limit_for(s, s.materials[mi], segment_budget, cls & 1, cls & 2))
-                                              : 0.0f;
+        psi[4 * mi + cls] =
+            bound || cls == 3 ? float(psi_limit(s, s.materials[mi], segment_budget, {bool(cls & 1), bool(cls & 2)})) : 0.0f;
   // The masks travel as floats in the records: exact up to 24 bits.
   if (s.lights.size() > 24) throw InputError("the per-triangle choice handles at most 24 lights");
   const std::size_t lights = s.lights.size();
@@ -209,13 +182,14 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
     }
   const auto chord_bound = [](const IncreasingTable& t, double phi) { return phi < 0.5 * M_PI ? t.at(phi) : 1.0; };
   const int fixed_walk_width = combined_min_width(c);
-  std::atomic<std::uint64_t> gouraud{0}, segments{0}, without{0}, terminator{0};
+  std::atomic<std::uint64_t> gouraud{0}, segments{0}, without{0}, terminator{0}, skipped{0};
   std::atomic<std::uint64_t> largest_bits{0};  // largest expected error among Gouraud triangles (double bits)
   parallel_for_ranges(count, 1024, [&](std::size_t first, std::size_t last) {
-    std::uint64_t n_gouraud = 0, n_segments = 0, n_without = 0, n_terminator = 0;
+    std::uint64_t n_gouraud = 0, n_segments = 0, n_without = 0, n_terminator = 0, n_skipped = 0;
     double largest = 0.0;
     for (std::size_t t = first; t < last; ++t) {
       TriangleShading& o = out[t];
+      o = TriangleShading{};  // the vector is reused frame to frame
       const TriangleFrame f = triangle_frame(s, g, t);
       const std::size_t mat = g.material[t];
       const glm::uvec3 idx = g.triangles[t];
@@ -235,6 +209,7 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
       }
       o.specular_mask = mask;
       n_without += mask == 0;
+      n_skipped += lights - std::size_t(__builtin_popcount(mask));
       double min_normal = 0.0;
       if (f.usable) min_normal = distance_to_origin(f.n[0], f.n[1], f.n[2]);
       // Diffuse bounds per light, computed when first needed.
@@ -314,6 +289,7 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
     segments += n_segments;
     without += n_without;
     terminator += n_terminator;
+    skipped += n_skipped;
     // A positive double's bits order like the double: an atomic max on the bits.
     std::uint64_t bits, seen = largest_bits.load();
     std::memcpy(&bits, &largest, sizeof bits);
@@ -326,6 +302,7 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
   st.segments = segments.load();
   st.without_highlight = without.load();
   st.terminator = terminator.load();
+  st.light_terms_skipped = skipped.load();
   const std::uint64_t bits = largest_bits.load();
   std::memcpy(&st.largest_expected_levels, &bits, sizeof bits);
   return st;

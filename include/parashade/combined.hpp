@@ -23,7 +23,6 @@ struct CombinedConfig {
   double negligible_specular = 0.05;
   // Per-triangle Gouraud choice: none for combined:K unless asked, bound for combined:auto.
   TriangleRule rule = TriangleRule::none;
-  bool rule_given = false;                       // --triangle-choice was on the command line
   double source_m = 0.9, source_q = 0.004, source_p = 0.008;  // the sources' thresholds
   // combined:auto with a choice: triangles whose segments could not reach 2^walk_min_k pixels go by Phong
   // per pixel (the walk's fixed costs exceed what shorter segments save); above kCombinedMaxK: none walk.
@@ -66,11 +65,17 @@ double nonuniform_angle(double phi);
 double segment_term_bound(double psi, double n, bool crosses_zero = true);
 // The error of a term (in [0, 1]) whose argument angle is off by at most `shift`: slope times shift.
 double angle_shift_error(double shift, double n);
+// The terms a segment can show: `terminator` false means no diffuse term crosses its zero (no
+// first-order kink), `specular` false means no specular term (the highlight mask skips it).
+struct SegmentTerms {
+  bool terminator = true;
+  bool specular = true;
+};
 // Worst-case error in 8-bit levels (largest channel) of one pixel of material m under the scene's
 // lights when every segment has relative normal change <= psi; L and H are taken as constant along a
 // segment (exact for directional lights and a distant viewer).
-double segment_error_levels(const Scene& s, const Material& m, double psi);
+double segment_error_levels(const Scene& s, const Material& m, double psi, SegmentTerms terms = {});
 // The largest psi whose segment_error_levels stays <= budget levels (0 when none does).
-double psi_limit(const Scene& s, const Material& m, double budget_levels);
+double psi_limit(const Scene& s, const Material& m, double budget_levels, SegmentTerms terms = {});
 
 }  // namespace parashade

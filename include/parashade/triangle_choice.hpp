@@ -43,6 +43,7 @@ struct TriangleChoiceStats {
   std::uint64_t segments = 0;            // walked by segments (the rest: Phong per pixel)
   std::uint64_t without_highlight = 0;   // no light's specular term can show
   std::uint64_t terminator = 0;          // wide enough to walk, and a light's terminator may cross it
+  std::uint64_t light_terms_skipped = 0; // (triangle, light) specular terms the mask leaves out
   double largest_expected_levels = 0.0;  // largest expected Gouraud error among the Gouraud triangles
 };
 
@@ -52,11 +53,6 @@ struct TriangleChoiceStats {
 // term's zero (the terminator for n = 1) may lie inside. Exact for a directional light and a distant
 // viewer; with varying L or H, phi includes their spread and the figure is an estimate.
 double gouraud_term_bound(double phi, double n, bool crosses_zero);
-
-// The relative normal change psi allowed per segment for material m when the terms present are limited:
-// `terminator` false means no diffuse term crosses its zero, `specular` false means no specular term
-// shows (it is skipped by the mask). Largest psi with segment error <= budget_levels.
-double psi_limit_for(const Scene& s, const Material& m, double budget_levels, bool terminator, bool specular);
 
 // Chooses for every screen triangle of g. `shading_budget` is the budget in levels for the shading
 // error (combined_shading_budget: --max-error minus the 8-bit rounding).
