@@ -79,25 +79,7 @@ void Renderer::enqueue_unit_pass(cl::Kernel& resolve, const std::vector<std::str
   // `end` (static: packet = unit; dynamic: pulled from `counter`, which starts at the share's first packet).
   auto unit_kernel = [&](Device& d, cl::Buffer& keys, cl::Buffer& counter, int end) {
     cl::Kernel k(d.program(files, unit_options), "render_tiles");
-    k.setArg(0, tris_);
-    k.setArg(1, attrs_);
-    k.setArg(2, plan_starts_);
-    k.setArg(3, plan_list_);
-    k.setArg(4, lights_);
-    k.setArg(5, materials_);
-    k.setArg(6, viewer);
-    k.setArg(7, background);
-    k.setArg(8, cl_int(binner_.tiles_x()));
-    k.setArg(9, cl_int(binner_.tiles_x() * binner_.tiles_y()));
-    k.setArg(10, cl_int(scene.width));
-    k.setArg(11, cl_int(scene.height));
-    k.setArg(12, out_rgba_);
-    k.setArg(13, out_float_);
-    k.setArg(14, fixed_);
-    k.setArg(15, tile_clocks_);
-    k.setArg(16, leaves_);
-    k.setArg(17, dda_first_);
-    k.setArg(18, dda_rows_);
+    set_tile_kernel_args(k, plan_starts_, plan_list_, viewer, background, scene);
     k.setArg(19, keys);
     k.setArg(20, plan_packets_);
     k.setArg(21, plan_vtiles_);

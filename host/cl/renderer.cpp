@@ -290,6 +290,29 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
   s.tiles = binner_.tiles_x() * binner_.tiles_y();
 }
 
+void Renderer::set_tile_kernel_args(cl::Kernel& k, const cl::Buffer& tile_start, const cl::Buffer& tile_list,
+                                    cl_float4 viewer, cl_float4 background, const Scene& scene) {
+  k.setArg(0, tris_);
+  k.setArg(1, attrs_);
+  k.setArg(2, tile_start);
+  k.setArg(3, tile_list);
+  k.setArg(4, lights_);
+  k.setArg(5, materials_);
+  k.setArg(6, viewer);
+  k.setArg(7, background);
+  k.setArg(8, cl_int(binner_.tiles_x()));
+  k.setArg(9, cl_int(binner_.tiles_x() * binner_.tiles_y()));
+  k.setArg(10, cl_int(scene.width));
+  k.setArg(11, cl_int(scene.height));
+  k.setArg(12, out_rgba_);
+  k.setArg(13, out_float_);
+  k.setArg(14, fixed_);
+  k.setArg(15, tile_clocks_);
+  k.setArg(16, leaves_);
+  k.setArg(17, dda_first_);
+  k.setArg(18, dda_rows_);
+}
+
 int Renderer::work_items(int tiles) const {
   const int wanted = options_.work_items > 0 ? options_.work_items : 16 * std::max(1, device_.info().compute_units);
   return std::max(1, std::min(tiles, wanted));
@@ -353,38 +376,20 @@ const Frame& Renderer::render(const Scene& scene) {
                                  ? scene.camera.position
                                  : glm::normalize(scene.camera.position - scene.camera.target);
     const glm::vec3 bg = 255.0f * scene.background;
-    kernel.setArg(0, tris_);
-    kernel.setArg(1, attrs_);
-    kernel.setArg(2, tile_start_);
-    kernel.setArg(3, tile_tris_);
-    kernel.setArg(4, lights_);
-    kernel.setArg(5, materials_);
-    kernel.setArg(6, cl_float4{{viewer.x, viewer.y, viewer.z, 0.0f}});
-    kernel.setArg(7, cl_float4{{bg.x, bg.y, bg.z, 0.0f}});
-    kernel.setArg(8, cl_int(binner_.tiles_x()));
-    kernel.setArg(9, cl_int(frame.stats.tiles));
-    kernel.setArg(10, cl_int(scene.width));
-    kernel.setArg(11, cl_int(scene.height));
-    kernel.setArg(12, out_rgba_);
-    kernel.setArg(13, out_float_);
     // Unused by the kernel off the unit path (and the planes without fixed point): a small placeholder.
     if (!options_.arith.fixed) ensure(fixed_, fixed_cap_, 64, CL_MEM_READ_ONLY);
     const bool counts = options_.unit_path() || options_.span_normalize();
     const std::size_t clock_bytes = counts ? 3 * std::size_t(frame.stats.tiles) * sizeof(cl_ulong) : 64;
     ensure(tile_clocks_, tile_clocks_cap_, clock_bytes, CL_MEM_WRITE_ONLY);
-    kernel.setArg(14, fixed_);
-    kernel.setArg(15, tile_clocks_);
-    kernel.setArg(16, leaves_);
     if (!options_.dda_coverage) {
       ensure(dda_first_, dda_first_cap_, 64, CL_MEM_READ_ONLY);
       ensure(dda_rows_, dda_rows_cap_, 64, CL_MEM_READ_ONLY);
     }
-    kernel.setArg(17, dda_first_);
-    kernel.setArg(18, dda_rows_);
+    const cl_float4 viewer4{{viewer.x, viewer.y, viewer.z, 0.0f}}, background{{bg.x, bg.y, bg.z, 0.0f}};
+    set_tile_kernel_args(kernel, tile_start_, tile_tris_, viewer4, background, scene);
     UnitPassEvents unit_pass;
     if (options_.plan)
-      enqueue_unit_pass(kernel, files, options, {{viewer.x, viewer.y, viewer.z, 0.0f}}, {{bg.x, bg.y, bg.z, 0.0f}}, scene,
-                        frame.stats.unit_pass, unit_pass);
+      enqueue_unit_pass(kernel, files, options, viewer4, background, scene, frame.stats.unit_pass, unit_pass);
     // The kernel, then the map that makes the frame valid in the image's memory (on a CPU device the
     // kernel wrote it there already): one wait for both. The frame stays mapped until the next render.
     auto t0 = Clock::now();

@@ -134,6 +134,10 @@ class Renderer {
                          const std::vector<UnitPassShare>& shares, UnitPassEvents& events);
   void unit_pass_times(const UnitPassEvents& events, FrameTimings& t) const;
   cl::Buffer& ensure(cl::Buffer& buffer, std::size_t& capacity, std::size_t bytes, cl_mem_flags flags);
+  // render_tiles' arguments 0..18 (the frame's buffers, with these tile lists): the plain kernel, the
+  // resolve and the units' pass share them.
+  void set_tile_kernel_args(cl::Kernel& k, const cl::Buffer& tile_start, const cl::Buffer& tile_list, cl_float4 viewer,
+                            cl_float4 background, const Scene& scene);
 
   Device& device_;
   RenderOptions options_;
