@@ -13,7 +13,7 @@ namespace {
 
 using namespace parashade;
 
-void choose(benchmark::State& state, const char* scene_file, TriangleRule rule) {
+void choose(benchmark::State& state, const char* scene_file, TriangleRule rule, ChoiceArithmetic arithmetic) {
   set_host_threads(1);
   const Scene scene = load_scene(std::string(PARASHADE_SOURCE_DIR) + "/" + scene_file);
   ScreenGeometry g;
@@ -22,18 +22,35 @@ void choose(benchmark::State& state, const char* scene_file, TriangleRule rule) 
   c.rule = rule;
   std::vector<TriangleShading> out;
   for (auto _ : state) {
-    const TriangleChoiceStats st = choose_triangle_methods(scene, g, c, 0.5, out);
+    const TriangleChoiceStats st = choose_triangle_methods(scene, g, c, 0.5, out, arithmetic);
     benchmark::DoNotOptimize(st.gouraud);
   }
   state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(g.triangles.size()));
 }
 
-BENCHMARK_CAPTURE(choose, teapot_bound, "scenes/teapot.json", TriangleRule::bound)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(choose, teapot_sources, "scenes/teapot.json", TriangleRule::sources)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(choose, sphere_bound, "scenes/sphere.json", TriangleRule::bound)->Unit(benchmark::kMillisecond);
+// The per-frame fixed cost with no triangle, once the tables of the scene's materials are cached (the first
+// frame builds them: ~0.2 ms per material).
+void choose_nothing(benchmark::State& state) {
+  const Scene scene = load_scene(std::string(PARASHADE_SOURCE_DIR) + "/scenes/teapot.json");
+  const ScreenGeometry g;
+  const CombinedConfig c = parse_combined("combined:auto");
+  std::vector<TriangleShading> out;
+  for (auto _ : state) benchmark::DoNotOptimize(choose_triangle_methods(scene, g, c, 0.5, out).gouraud);
+}
+BENCHMARK(choose_nothing)->Unit(benchmark::kMicrosecond);
+
+constexpr auto lanes = ChoiceArithmetic::float_lanes, reference = ChoiceArithmetic::double_reference;
+BENCHMARK_CAPTURE(choose, teapot_bound, "scenes/teapot.json", TriangleRule::bound, lanes)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(choose, teapot_bound_reference, "scenes/teapot.json", TriangleRule::bound, reference)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(choose, teapot_sources, "scenes/teapot.json", TriangleRule::sources, lanes)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(choose, sphere_bound, "scenes/sphere.json", TriangleRule::bound, lanes)->Unit(benchmark::kMillisecond);
 // The bunny's scene reads its mesh from PARASHADE_MESH_DIR (registered only when that is set).
 const bool bunny = std::getenv("PARASHADE_MESH_DIR") &&
-                   benchmark::RegisterBenchmark("choose/bunny_bound", choose, "scenes/bunny.json", TriangleRule::bound)
+                   benchmark::RegisterBenchmark("choose/bunny_bound", choose, "scenes/bunny.json", TriangleRule::bound, lanes)
+                       ->Unit(benchmark::kMillisecond) &&
+                   benchmark::RegisterBenchmark("choose/bunny_bound_reference", choose, "scenes/bunny.json",
+                                                TriangleRule::bound, reference)
                        ->Unit(benchmark::kMillisecond);
 
 }  // namespace

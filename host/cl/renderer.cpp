@@ -230,9 +230,12 @@ void Renderer::prepare(const Scene& scene, FrameTimings& t, FrameStats& s) {
                                          attr_ptr, fixed_ptr, leaf_ptr);
     q.enqueueUnmapMemObject(leaves_, leaf_ptr);
   } else {
-    if (choose)
+    if (choose) {
+      const auto c0 = Clock::now();
       s.choice = choose_triangle_methods(scene, geometry_, options_.combined, combined_shading_budget(options_.combined),
                                          choice_);
+      t.choice_ms = ms_since(c0);
+    }
     s.triangles_without_pixels =
         setup_triangles(geometry_, method, tri_ptr, attr_ptr, fixed_ptr, choose ? choice_.data() : nullptr).without_pixels;
     if (choose) {

@@ -51,6 +51,7 @@ FrameTimings median_timings(const std::vector<FrameTimings>& f) {
   FrameTimings m;
   m.geometry_ms = med(&FrameTimings::geometry_ms);
   m.setup_ms = med(&FrameTimings::setup_ms);
+  m.choice_ms = med(&FrameTimings::choice_ms);
   m.binning_ms = med(&FrameTimings::binning_ms);
   m.kernel_ms = med(&FrameTimings::kernel_ms);
   m.launch_ms = med(&FrameTimings::launch_ms);
@@ -255,6 +256,7 @@ int run_render(const RenderArgs& a) {
               med.total_ms, a.frames, a.warmup, med.geometry_ms, med.setup_ms, med.binning_ms, med.kernel_ms,
               med.readback_ms, 1e3 / med.total_ms, pixels / (med.total_ms * 1e3),
               double(frame.stats.geometry.triangles_in) / (med.total_ms * 1e3));
+  if (med.choice_ms > 0.0) std::printf("setup includes the per-triangle method choice: %.3f ms\n", med.choice_ms);
   if (options.unit_path()) {
     const ModeledClocks& c = frame.stats.clocks;
     std::printf("unit %s, %s arithmetic, span increment %s: %llu modeled clocks (%llu spans, %llu span pixels, %.3f pixels per clock)\n",

@@ -5,10 +5,14 @@
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <memory>
+#include <mutex>
 
 #include "parashade/errors.hpp"
+#include "parashade/gouraud_fit_lanes.hpp"
 #include "parashade/highlight.hpp"
 #include "parashade/light_bounds.hpp"
+#include "parashade/light_bounds_lanes.hpp"
 #include "parashade/parallel.hpp"
 #include "triangle_record.h"
 
@@ -59,16 +63,19 @@ class IncreasingTable {
   template <typename F>
   IncreasingTable(double hi, const F& f) : step_(hi / double(kSize - 1)) {
     for (int i = 0; i < kSize; ++i) value_[i] = f(step_ * double(i));
+    // A multiply instead of a divide, rounded up by far more than its two roundings: x * inverse_ is
+    // never below x / step_, so the grid point found is never below x.
+    inverse_ = (1.0 / step_) * (1.0 + 1e-15);
   }
   double at(double x) const {
     if (!(x > 0.0)) return value_[0];
-    const double i = std::ceil(x / step_);
+    const double i = std::ceil(x * inverse_);
     return i < double(kSize) ? value_[std::size_t(i)] : value_[kSize - 1];
   }
 
  private:
   static constexpr int kSize = 1024;
-  double step_ = 1.0;
+  double step_ = 1.0, inverse_ = 1.0;
   std::array<double, kSize> value_{};
 };
 
@@ -135,31 +142,106 @@ DiffuseBound diffuse_bound(const TriangleFrame& f, double normal_chord, double m
   return {DiffuseBound::lit, std::min(1.0, bound), std::max(0.0, lowest - chord)};
 }
 
-}  // namespace
+// What the bound rule needs of one triangle and each light, from either the scalar double reference
+// (light_bounds.cpp and diffuse_bound above) or the float lanes (light_bounds_lanes.cpp).
+struct LightTerms {
+  double max_n_dot_h = 1.0, sin_h_radius = 1.0, chord = 2.0;
+  int state = 2;  // 0 lit, 1 dark, 2 the terminator may cross
+  double diffuse = 1.0, distance = 0.0;
+  double h_spread() const { return sin_h_radius < 1.0 ? 2.0 * std::asin(sin_h_radius) : M_PI; }
+  double l_spread() const { return chord < 2.0 ? std::min(M_PI, 4.0 * std::asin(0.5 * chord)) : M_PI; }
+};
+struct TriangleTerms {
+  bool usable = false;
+  glm::dvec3 n[3];
+  double cos_spread = 1.0, min_normal = 0.0;
+  LightTerms light[24];
+  // Largest angle between two vertex normals, computed on first use (an acos per triangle otherwise).
+  double normal_spread() {
+    if (spread_ < 0.0) spread_ = std::acos(std::clamp(cos_spread, -1.0, 1.0));
+    return spread_;
+  }
+  void reset_spread() { spread_ = -1.0; }
 
-TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry& g, const CombinedConfig& c,
-                                            double shading_budget, std::vector<TriangleShading>& out) {
-  const std::size_t count = g.triangles.size();
-  out.resize(count);
+ private:
+  double spread_ = -1.0;
+};
+
+void reference_terms(const Scene& s, const TriangleFrame& f, TriangleTerms& out) {
+  out.usable = f.usable;
+  for (int k = 0; k < 3; ++k) out.n[k] = f.n[k];
+  out.cos_spread = f.cos_normal_spread;
+  out.min_normal = f.usable ? distance_to_origin(f.n[0], f.n[1], f.n[2]) : 0.0;
+  const double normal_chord = std::sqrt(std::max(0.0, 2.0 - 2.0 * f.cos_normal_spread));
+  for (std::size_t i = 0; i < s.lights.size(); ++i) {
+    const LightBounds b = light_bounds(f, s.lights[i], 2.0);  // the cone test alone: the exact one costs more than it saves
+    const DiffuseBound d = diffuse_bound(f, normal_chord, out.min_normal, s.lights[i], b);
+    LightTerms& l = out.light[i];
+    l.max_n_dot_h = b.max_n_dot_h;
+    l.sin_h_radius = b.sin_h_radius;
+    l.chord = b.light_chord;
+    l.state = !f.usable || d.state == DiffuseBound::crosses ? 2 : d.state == DiffuseBound::dark ? 1 : 0;
+    l.diffuse = d.levels_unit;
+    l.distance = d.distance;
+  }
+}
+
+void lane_terms(std::size_t lights, const FrameLanes& f, const LightLanes* light, int j, TriangleTerms& out) {
+  out.usable = f.usable[j] > 0.0f;
+  for (int k = 0; k < 3; ++k) out.n[k] = glm::dvec3(f.n[k][0][j], f.n[k][1][j], f.n[k][2][j]);
+  out.cos_spread = f.cos_spread[j];
+  out.min_normal = f.min_normal[j];
+  for (std::size_t i = 0; i < lights; ++i) {
+    const LightLanes& b = light[i];
+    LightTerms& l = out.light[i];
+    l.max_n_dot_h = b.max_n_dot_h[j];
+    l.sin_h_radius = b.sin_h_radius[j];
+    l.chord = b.chord[j];
+    l.state = int(b.state[j]);
+    l.diffuse = b.diffuse[j];
+    l.distance = b.terminator_distance[j];
+  }
+}
+
+// Everything the choice needs of the materials and lights, not of the geometry: built once and reused
+// while the scene's shading and the budget stay the same (it costs ~0.2 ms per material, serially).
+struct ChoiceTables {
+  std::vector<double> key;
+  std::vector<float> psi;  // psi limits per material and (terminator, specular) class
+  std::vector<double> thresholds;  // negligible_cosines per (material, light)
+  // Levels per unit of a light's diffuse and specular term, largest channel, per (material, light).
+  std::vector<double> diffuse_levels, specular_levels;
+  // Per material: x^n on [0, 1], and the chord bound of the specular term (n); beyond pi/2 the bound is 1.
+  std::vector<IncreasingTable> power, specular_chord;
+  // The same for the lanes (gouraud_fit_lanes.hpp): the chord bound by u = sin(phi / 2).
+  std::vector<LaneTable> power_lanes, specular_chord_lanes;
+};
+
+std::shared_ptr<const ChoiceTables> choice_tables(const Scene& s, const CombinedConfig& c, double shading_budget) {
   const bool bound = c.rule == TriangleRule::bound;
-  const unsigned all_lights = (1u << s.lights.size()) - 1u;
+  std::vector<double> key = {double(bound), double(c.automatic), shading_budget, c.negligible_specular,
+                             double(uses_highlight_mask(c)), double(s.materials.size()), double(s.lights.size())};
+  for (const Material& m : s.materials) key.insert(key.end(), {m.shininess, m.diffuse.r, m.diffuse.g, m.diffuse.b,
+                                                              m.specular.r, m.specular.g, m.specular.b});
+  for (const Light& l : s.lights) key.insert(key.end(), {l.color.r, l.color.g, l.color.b});
+  static std::mutex mutex;
+  static std::shared_ptr<const ChoiceTables> last;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (last && last->key == key) return last;
+  }
+  auto t = std::make_shared<ChoiceTables>();
+  t->key = std::move(key);
   // Specular terms the mask drops add up to negligible_specular each.
-  const bool masked = uses_highlight_mask(c);
   const double segment_budget =
-      std::max(0.0, shading_budget - (masked ? c.negligible_specular * double(s.lights.size()) : 0.0));
-  // psi limits per material and (terminator, specular) class.
-  std::vector<float> psi(s.materials.size() * 4, 0.0f);
+      std::max(0.0, shading_budget - (uses_highlight_mask(c) ? c.negligible_specular * double(s.lights.size()) : 0.0));
+  t->psi.assign(s.materials.size() * 4, 0.0f);
   if (c.automatic)
     for (std::size_t mi = 0; mi < s.materials.size(); ++mi)
       for (int cls = 0; cls < 4; ++cls)
-        psi[4 * mi + cls] =
+        t->psi[4 * mi + cls] =
             bound || cls == 3 ? float(psi_limit(s, s.materials[mi], segment_budget, {bool(cls & 1), bool(cls & 2)})) : 0.0f;
-  // The masks travel as floats in the records: exact up to 24 bits.
-  if (s.lights.size() > 24) throw InputError("the per-triangle choice handles at most 24 lights");
-  const std::size_t lights = s.lights.size();
-  const std::vector<double> thresholds = negligible_cosines(s, c.negligible_specular);
-  // Levels per unit of a light's diffuse and specular term, largest channel, per (material, light).
-  std::vector<double> diffuse_levels, specular_levels;
+  t->thresholds = negligible_cosines(s, c.negligible_specular);
   for (const Material& m : s.materials)
     for (const Light& l : s.lights) {
       double d = 0.0, sp = 0.0;
@@ -167,120 +249,169 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
         d = std::max(d, 255.0 * double(l.color[ch]) * double(m.diffuse[ch]));
         sp = std::max(sp, 255.0 * double(l.color[ch]) * double(m.specular[ch]));
       }
-      diffuse_levels.push_back(d);
-      specular_levels.push_back(sp);
+      t->diffuse_levels.push_back(d);
+      t->specular_levels.push_back(sp);
     }
-  // Per material: x^n on [0, 1], and the chord bounds of the specular (n) and diffuse (1) terms beyond
-  // pi/2 the bound is 1 anyway.
-  std::vector<IncreasingTable> power(s.materials.size()), specular_chord(s.materials.size());
-  const IncreasingTable diffuse_chord(0.5 * M_PI, [](double phi) { return gouraud_term_bound(phi, 1.0, true); });
+  t->power.resize(s.materials.size());
+  t->specular_chord.resize(s.materials.size());
   if (bound)
     for (std::size_t mi = 0; mi < s.materials.size(); ++mi) {
       const double n = s.materials[mi].shininess;
-      power[mi] = IncreasingTable(1.0, [n](double x) { return std::pow(x, n); });
-      specular_chord[mi] = IncreasingTable(0.5 * M_PI, [n](double phi) { return gouraud_term_bound(phi, n, true); });
+      t->power[mi] = IncreasingTable(1.0, [n](double x) { return std::pow(x, n); });
+      t->specular_chord[mi] = IncreasingTable(0.5 * M_PI, [n](double phi) { return gouraud_term_bound(phi, n, true); });
+      t->power_lanes.push_back(make_lane_table(1.0, [n](double x) { return std::pow(x, n); }));
+      t->specular_chord_lanes.push_back(
+          make_lane_table(kChordTableEnd, [n](double u) { return gouraud_term_bound(2.0 * std::asin(u), n, true); }));
     }
+  std::lock_guard<std::mutex> lock(mutex);
+  last = t;
+  return t;
+}
+
+}  // namespace
+
+TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry& g, const CombinedConfig& c,
+                                            double shading_budget, std::vector<TriangleShading>& out,
+                                            ChoiceArithmetic arithmetic) {
+  // The masks travel as floats in the records: exact up to 24 bits.
+  if (s.lights.size() > 24) throw InputError("the per-triangle choice handles at most 24 lights");
+  const std::size_t count = g.triangles.size();
+  out.resize(count);
+  const bool bound = c.rule == TriangleRule::bound;
+  const unsigned all_lights = (1u << s.lights.size()) - 1u;
+  const bool masked = uses_highlight_mask(c);
+  const std::size_t lights = s.lights.size();
+  const std::shared_ptr<const ChoiceTables> tables = choice_tables(s, c, shading_budget);
+  const std::vector<float>& psi = tables->psi;
+  const std::vector<double>& thresholds = tables->thresholds;
+  const std::vector<double>&diffuse_levels = tables->diffuse_levels, &specular_levels = tables->specular_levels;
+  const std::vector<IncreasingTable>&power = tables->power, &specular_chord = tables->specular_chord;
+  static const IncreasingTable diffuse_chord(0.5 * M_PI, [](double phi) { return gouraud_term_bound(phi, 1.0, true); });
   const auto chord_bound = [](const IncreasingTable& t, double phi) { return phi < 0.5 * M_PI ? t.at(phi) : 1.0; };
   const int fixed_walk_width = combined_min_width(c);
   std::atomic<std::uint64_t> gouraud{0}, segments{0}, without{0}, terminator{0}, skipped{0};
   std::atomic<std::uint64_t> largest_bits{0};  // largest expected error among Gouraud triangles (double bits)
+  const bool lanes = bound && arithmetic == ChoiceArithmetic::float_lanes;
+  static const LaneTable diffuse_chord_lanes =
+      make_lane_table(kChordTableEnd, [](double u) { return gouraud_term_bound(2.0 * std::asin(u), 1.0, true); });
+  GouraudFitConstants fit_constants;
+  fit_constants.lights = lights;
+  fit_constants.thresholds = thresholds.data();
+  fit_constants.specular_levels = specular_levels.data();
+  fit_constants.diffuse_levels = diffuse_levels.data();
+  fit_constants.power = tables->power_lanes.data();
+  fit_constants.specular_chord = tables->specular_chord_lanes.data();
+  fit_constants.diffuse_chord = &diffuse_chord_lanes;
+  fit_constants.negligible_specular = float(c.negligible_specular);
+  fit_constants.budget = float(shading_budget);
   parallel_for_ranges(count, 1024, [&](std::size_t first, std::size_t last) {
     std::uint64_t n_gouraud = 0, n_segments = 0, n_without = 0, n_terminator = 0, n_skipped = 0;
     double largest = 0.0;
+    FrameLanes frame;
+    LightLanes light[24];
+    GouraudFitLanes fit;
+    TriangleTerms terms;
     for (std::size_t t = first; t < last; ++t) {
+      const int lane = int((t - first) % kLanes);
+      if (lanes && lane == 0) {  // the next kLanes triangles' bounds and Gouraud tests at once
+        const int in_lanes = int(std::min<std::size_t>(kLanes, last - t));
+        frame_lanes(s, g, t, in_lanes, frame);
+        for (std::size_t i = 0; i < lights; ++i) light_lanes(frame, s.lights[i], light[i]);
+        std::uint32_t material[kLanes];
+        for (int j = 0; j < kLanes; ++j) material[j] = g.material[t + std::size_t(j < in_lanes ? j : 0)];
+        gouraud_fit_lanes(frame, light, material, fit_constants, fit);
+      }
       TriangleShading& o = out[t];
       o = TriangleShading{};  // the vector is reused frame to frame
-      const TriangleFrame f = triangle_frame(s, g, t);
       const std::size_t mat = g.material[t];
       const glm::uvec3 idx = g.triangles[t];
       const double px = 1.0 / double(kSubpixel);
       const glm::dvec2 p[3] = {glm::dvec2(g.xy[idx.x]) * px, glm::dvec2(g.xy[idx.y]) * px, glm::dvec2(g.xy[idx.z]) * px};
       const double width = std::max({p[0].x, p[1].x, p[2].x}) - std::min({p[0].x, p[1].x, p[2].x});
-      // Per light: the specular bound (cheap cone test first), and from it the mask.
       const double* threshold = &thresholds[mat * lights];
-      LightBounds bounds[24];
       unsigned mask = all_lights;
-      if (masked && f.usable) {
-        mask = 0;
-        for (std::size_t i = 0; i < lights; ++i) {
-          bounds[i] = light_bounds(f, s.lights[i], 2.0);  // the cone test alone: the exact one costs more than it saves
-          if (bounds[i].max_n_dot_h > threshold[i]) mask |= 1u << i;
+      bool fits = false;
+      double expected = 0.0;
+      if (!bound) {
+        // The sources' listing decides Gouraud; the mask only when --highlight-test asks for it.
+        const TriangleFrame f = triangle_frame(s, g, t);
+        terms.usable = f.usable;
+        for (int k = 0; k < 3; ++k) terms.n[k] = f.n[k];
+        terms.min_normal = f.usable ? distance_to_origin(f.n[0], f.n[1], f.n[2]) : 0.0;
+        if (masked && f.usable) {
+          mask = 0;
+          for (std::size_t i = 0; i < lights; ++i)
+            if (light_bounds(f, s.lights[i], 2.0).max_n_dot_h > threshold[i]) mask |= 1u << i;
+        }
+        fits = c.rule != TriangleRule::none && sources_choose_gouraud(s, f, c);
+      } else if (lanes) {
+        // Clip-made vertices carry interpolated colours and normals: no Gouraud bound for them.
+        const bool clipped = idx.x >= g.clip.size() || idx.y >= g.clip.size() || idx.z >= g.clip.size();
+        mask = fit.mask[lane];
+        fits = fit.fits[lane] && !clipped;
+        expected = fit.expected[lane];
+        terms.usable = frame.usable[lane] > 0.0f;  // the rest of terms only if the segments need it, below
+      } else {
+        reference_terms(s, triangle_frame(s, g, t), terms);
+        terms.reset_spread();
+        if (terms.usable) {
+          mask = 0;
+          for (std::size_t i = 0; i < lights; ++i)
+            if (terms.light[i].max_n_dot_h > threshold[i]) mask |= 1u << i;
+        }
+        // Clip-made vertices carry interpolated colours and normals: no Gouraud bound for them.
+        const bool clipped = idx.x >= g.clip.size() || idx.y >= g.clip.size() || idx.z >= g.clip.size();
+        // Expected |Gouraud - Phong| in levels, summed term by term (largest channel each), cheapest and most
+        // often decisive first; a light whose specular term the mask drops adds at most negligible_specular.
+        expected = c.negligible_specular * double(lights - std::size_t(__builtin_popcount(mask)));
+        fits = terms.usable && !clipped && expected <= shading_budget;
+        for (std::size_t i = 0; i < lights && fits; ++i) {
+          if (!(mask & (1u << i))) continue;
+          // Both images lie in [0, peak]: the chord bound only when the peak alone does not fit.
+          const double peak = specular_levels[mat * lights + i] * power[mat].at(terms.light[i].max_n_dot_h);
+          expected += expected + peak <= shading_budget
+                          ? peak
+                          : std::min(peak, specular_levels[mat * lights + i] *
+                                               chord_bound(specular_chord[mat], terms.normal_spread() + terms.light[i].h_spread()));
+          fits = expected <= shading_budget;
+        }
+        for (std::size_t i = 0; i < lights && fits; ++i) {
+          const LightTerms& l = terms.light[i];
+          expected += diffuse_levels[mat * lights + i] *
+                      (l.state == 2 ? chord_bound(diffuse_chord, terms.normal_spread() + l.l_spread()) : l.diffuse);
+          fits = expected <= shading_budget;
         }
       }
       o.specular_mask = mask;
       n_without += mask == 0;
       n_skipped += lights - std::size_t(__builtin_popcount(mask));
-      double min_normal = 0.0;
-      if (f.usable) min_normal = distance_to_origin(f.n[0], f.n[1], f.n[2]);
-      // Diffuse bounds per light, computed when first needed.
-      DiffuseBound diffuse[24];
-      std::size_t analysed = 0;
-      const double normal_chord = std::sqrt(std::max(0.0, 2.0 - 2.0 * f.cos_normal_spread));
-      const auto diffuse_of = [&](std::size_t i) -> const DiffuseBound& {
-        for (; analysed <= i; ++analysed)
-          diffuse[analysed] = diffuse_bound(f, normal_chord, min_normal, s.lights[analysed], bounds[analysed]);
-        return diffuse[i];
-      };
-      if (!bound) {
-        o.method = c.rule != TriangleRule::none && sources_choose_gouraud(s, f, c) ? TriangleMethod::gouraud
-                                                                                     : TriangleMethod::phong;
+      if (fits) {
+        o.method = TriangleMethod::gouraud;
+        largest = std::max(largest, expected);
+      } else if (!c.automatic) {
+        o.method = width + 1.0 >= double(fixed_walk_width) ? TriangleMethod::segments : TriangleMethod::phong;
+      } else if (terms.usable && c.walk_min_k <= kCombinedMaxK && width + 1.0 >= std::ldexp(2.0, c.walk_min_k)) {
+        if (lanes) lane_terms(lights, frame, light, lane, terms);
+        // Which terms can show decides the segment limit psi (a terminator, a highlight).
+        // The segments' normals reach beyond the triangle (the last one is extrapolated, docs/combined.md):
+        // the kink-free bound holds only if the terminator stays farther than the normals can turn there.
+        const double reach = std::asin(std::min(1.0, double(psi[4 * mat + (mask || !bound ? 2 : 0)]))) + 1e-3;
+        bool crosses_any = !bound;
+        for (std::size_t i = 0; i < lights && !crosses_any; ++i)
+          crosses_any = terms.light[i].state == 2 || terms.light[i].distance <= reach;
+        n_terminator += crosses_any;
+        const int cls = (crosses_any ? 1 : 0) | (mask || !bound ? 2 : 0);
+        o.psi_limit = psi[4 * mat + cls];
+        // The segment length the kernel can use on this triangle: |dN/dx| 2^K <= psi min|N'|.
+        const glm::dvec2 e1 = p[1] - p[0], e2 = p[2] - p[0];
+        const double det = e1.x * e2.y - e2.x * e1.y;
+        const glm::dvec3 ddx = ((terms.n[1] - terms.n[0]) * e2.y - (terms.n[2] - terms.n[0]) * e1.y) * (1.0 / det);
+        const double allowed = double(o.psi_limit) * terms.min_normal, change = glm::length(ddx);
+        int k = 0;
+        while (k < kCombinedMaxK && change * double(2 << k) <= allowed) ++k;
+        o.method = k >= c.walk_min_k && width + 1.0 >= double(2 << k) ? TriangleMethod::segments : TriangleMethod::phong;
       } else {
-        // Clip-made vertices carry interpolated colours and normals: no Gouraud bound for them.
-        const bool clipped = idx.x >= g.clip.size() || idx.y >= g.clip.size() || idx.z >= g.clip.size();
-        // Expected |Gouraud - Phong| in levels, summed term by term (largest channel each), cheapest and most
-        // often decisive first; a light whose specular term the mask drops adds at most negligible_specular.
-        double expected = c.negligible_specular * double(lights - std::size_t(__builtin_popcount(mask)));
-        bool fits = f.usable && !clipped && expected <= shading_budget;
-        for (std::size_t i = 0; i < lights && fits; ++i) {
-          if (!(mask & (1u << i))) continue;
-          // Both images lie in [0, peak]: the chord bound only when the peak alone does not fit.
-          const double peak = specular_levels[mat * lights + i] * power[mat].at(bounds[i].max_n_dot_h);
-          expected += expected + peak <= shading_budget
-                          ? peak
-                          : std::min(peak, specular_levels[mat * lights + i] *
-                                               chord_bound(specular_chord[mat], f.normal_spread() + bounds[i].h_spread()));
-          fits = expected <= shading_budget;
-        }
-        for (std::size_t i = 0; i < lights && fits; ++i) {
-          const DiffuseBound& d = diffuse_of(i);
-          expected += diffuse_levels[mat * lights + i] *
-                      (d.state == DiffuseBound::crosses
-                           ? chord_bound(diffuse_chord, f.normal_spread() + bounds[i].l_spread())
-                           : d.levels_unit);
-          fits = expected <= shading_budget;
-        }
-        if (fits) {
-          o.method = TriangleMethod::gouraud;
-          largest = std::max(largest, expected);
-        }
-      }
-      if (o.method != TriangleMethod::gouraud) {
-        if (!c.automatic) {
-          o.method = width + 1.0 >= double(fixed_walk_width) ? TriangleMethod::segments : TriangleMethod::phong;
-        } else if (f.usable && c.walk_min_k <= kCombinedMaxK && width + 1.0 >= std::ldexp(2.0, c.walk_min_k)) {
-          // Which terms can show decides the segment limit psi (a terminator, a highlight).
-          // The segments' normals reach beyond the triangle (the last one is extrapolated, docs/combined.md):
-          // the kink-free bound holds only if the terminator stays farther than the normals can turn there.
-          const double reach = std::asin(std::min(1.0, double(psi[4 * mat + (mask || !bound ? 2 : 0)]))) + 1e-3;
-          bool crosses_any = !bound;
-          for (std::size_t i = 0; i < lights && !crosses_any; ++i) {
-            const DiffuseBound& d = diffuse_of(i);
-            crosses_any = d.state == DiffuseBound::crosses || d.distance <= reach;
-          }
-          n_terminator += crosses_any;
-          const int cls = (crosses_any ? 1 : 0) | (mask || !bound ? 2 : 0);
-          o.psi_limit = psi[4 * mat + cls];
-          // The segment length the kernel can use on this triangle: |dN/dx| 2^K <= psi min|N'|.
-          const glm::dvec2 e1 = p[1] - p[0], e2 = p[2] - p[0];
-          const double det = e1.x * e2.y - e2.x * e1.y;
-          const glm::dvec3 ddx = ((f.n[1] - f.n[0]) * e2.y - (f.n[2] - f.n[0]) * e1.y) * (1.0 / det);
-          const double allowed = double(o.psi_limit) * min_normal, change = glm::length(ddx);
-          int k = 0;
-          while (k < kCombinedMaxK && change * double(2 << k) <= allowed) ++k;
-          o.method = k >= c.walk_min_k && width + 1.0 >= double(2 << k) ? TriangleMethod::segments : TriangleMethod::phong;
-        } else {
-          o.method = TriangleMethod::phong;
-        }
+        o.method = TriangleMethod::phong;
       }
       n_gouraud += o.method == TriangleMethod::gouraud;
       n_segments += o.method == TriangleMethod::segments;

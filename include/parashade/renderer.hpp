@@ -54,6 +54,7 @@ struct RenderOptions {
 struct FrameTimings {
   double geometry_ms = 0;  // vertex stage + clipping, culling, snapping
   double setup_ms = 0;     // triangle setup (edge functions, planes, dI_G)
+  double choice_ms = 0;    // of setup_ms: the per-triangle method choice (combined with --triangle-choice)
   double binning_ms = 0;   // sort-middle binning into tiles, upload
   double kernel_ms = 0;    // shading kernel on the device (profiling event)
   double launch_ms = 0;    // enqueue to completion on the host clock (kernel_ms + launch overhead)

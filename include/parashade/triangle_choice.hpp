@@ -56,8 +56,13 @@ double gouraud_term_bound(double phi, double n, bool crosses_zero);
 
 // Chooses for every screen triangle of g. `shading_budget` is the budget in levels for the shading
 // error (combined_shading_budget: --max-error minus the 8-bit rounding).
+// How the bound rule's per-triangle bounds are computed: in float on vector lanes (light_bounds_lanes.hpp,
+// what the renderer uses) or by the scalar double reference (light_bounds.hpp; tests compare the two).
+enum class ChoiceArithmetic { float_lanes, double_reference };
+
 TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry& g, const CombinedConfig& c,
-                                            double shading_budget, std::vector<TriangleShading>& out);
+                                            double shading_budget, std::vector<TriangleShading>& out,
+                                            ChoiceArithmetic arithmetic = ChoiceArithmetic::float_lanes);
 
 // Writes the choice into the Phong records (kernels/triangle_record.h: PHONG_HIGHLIGHT_SLOT,
 // PHONG_METHOD_SLOT, PHONG_PSI_SLOT). The colour planes of Gouraud triangles are setup's.

@@ -3,6 +3,7 @@
 // checked by dense sampling in double precision; the sources' listing as printed and as intended.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -92,6 +93,7 @@ struct Case {
 
 class TriangleChoiceBound : public ::testing::TestWithParam<Case> {};
 
+// Both ways of computing the bounds: the float lanes the renderer uses and the double reference.
 TEST_P(TriangleChoiceBound, GouraudOnlyWhereTheSampledErrorFits) {
   const Case k = GetParam();
   const Scene s = lit_scene(k.seed, k.jitter, k.shininess);
@@ -100,28 +102,59 @@ TEST_P(TriangleChoiceBound, GouraudOnlyWhereTheSampledErrorFits) {
   CombinedConfig c;
   c.automatic = true;
   c.rule = TriangleRule::bound;
-  std::vector<TriangleShading> out;
-  const TriangleChoiceStats st = choose_triangle_methods(s, g, c, k.budget, out);
-  ASSERT_EQ(out.size(), g.triangles.size());
-  std::size_t gouraud = 0, refused_but_fitting = 0;
-  double worst = 0.0, worst_over_expected = 0.0;
-  for (std::size_t t = 0; t < g.triangles.size(); ++t) {
-    const double err = sampled_error(s, g, t);
-    if (out[t].method == TriangleMethod::gouraud) {
-      ++gouraud;
-      worst = std::max(worst, err);
-    } else {
-      refused_but_fitting += err <= 0.5 * k.budget;
+  std::vector<double> sampled(g.triangles.size());
+  for (std::size_t t = 0; t < g.triangles.size(); ++t) sampled[t] = sampled_error(s, g, t);
+  for (const ChoiceArithmetic arithmetic : {ChoiceArithmetic::float_lanes, ChoiceArithmetic::double_reference}) {
+    const bool lanes = arithmetic == ChoiceArithmetic::float_lanes;
+    SCOPED_TRACE(lanes ? "float lanes" : "double reference");
+    std::vector<TriangleShading> out;
+    const TriangleChoiceStats st = choose_triangle_methods(s, g, c, k.budget, out, arithmetic);
+    ASSERT_EQ(out.size(), g.triangles.size());
+    std::size_t gouraud = 0, refused_but_fitting = 0;
+    double worst = 0.0;
+    for (std::size_t t = 0; t < g.triangles.size(); ++t) {
+      if (out[t].method == TriangleMethod::gouraud) {
+        ++gouraud;
+        worst = std::max(worst, sampled[t]);
+      } else {
+        refused_but_fitting += sampled[t] <= 0.5 * k.budget;
+      }
     }
+    const double worst_over_expected = st.largest_expected_levels > 0 ? worst / st.largest_expected_levels : 0.0;
+    const std::string tag = lanes ? "_lanes" : "_reference";
+    RecordProperty("gouraud" + tag, std::to_string(gouraud));
+    RecordProperty("worst_sampled_levels" + tag, std::to_string(worst));
+    RecordProperty("refused_with_half_the_budget" + tag, std::to_string(refused_but_fitting));
+    EXPECT_EQ(st.gouraud, gouraud);
+    EXPECT_GT(gouraud, g.triangles.size() / 20) << "the scene has smooth triangles: some must go to Gouraud";
+    EXPECT_LE(worst, k.budget + 1e-6) << "a Gouraud triangle exceeded the budget";
+    EXPECT_LE(worst_over_expected, 1.0 + 1e-6);
   }
-  worst_over_expected = st.largest_expected_levels > 0 ? worst / st.largest_expected_levels : 0.0;
-  RecordProperty("gouraud", std::to_string(gouraud));
-  RecordProperty("worst_sampled_levels", std::to_string(worst));
-  RecordProperty("refused_with_half_the_budget", std::to_string(refused_but_fitting));
-  EXPECT_EQ(st.gouraud, gouraud);
-  EXPECT_GT(gouraud, g.triangles.size() / 20) << "the scene has smooth triangles: some must go to Gouraud";
-  EXPECT_LE(worst, k.budget + 1e-6) << "a Gouraud triangle exceeded the budget";
-  EXPECT_LE(worst_over_expected, 1.0 + 1e-6);
+}
+
+// The float lanes decide as the double reference does, except for triangles whose expected error lies
+// within float rounding and the tables' grid of the budget: few triangles may differ, and no mask.
+TEST_P(TriangleChoiceBound, FloatLanesAgreeWithTheDoubleReference) {
+  const Case k = GetParam();
+  const Scene s = lit_scene(k.seed, k.jitter, k.shininess);
+  ScreenGeometry g;
+  build_screen_geometry(s, {Method::combined, true, true}, g);
+  CombinedConfig c;
+  c.automatic = true;
+  c.rule = TriangleRule::bound;
+  std::vector<TriangleShading> lanes, reference;
+  const TriangleChoiceStats a = choose_triangle_methods(s, g, c, k.budget, lanes, ChoiceArithmetic::float_lanes);
+  const TriangleChoiceStats b = choose_triangle_methods(s, g, c, k.budget, reference, ChoiceArithmetic::double_reference);
+  std::size_t method_differs = 0, mask_differs = 0;
+  for (std::size_t t = 0; t < g.triangles.size(); ++t) {
+    method_differs += lanes[t].method != reference[t].method;
+    mask_differs += lanes[t].specular_mask != reference[t].specular_mask;
+  }
+  RecordProperty("method_differs", std::to_string(method_differs));
+  RecordProperty("mask_differs", std::to_string(mask_differs));
+  EXPECT_LE(method_differs, g.triangles.size() / 500 + 2) << "of " << g.triangles.size() << " triangles";
+  EXPECT_LE(mask_differs, g.triangles.size() / 200 + 2);
+  EXPECT_NEAR(a.largest_expected_levels, b.largest_expected_levels, 0.05 * k.budget);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, TriangleChoiceBound,
@@ -170,6 +203,61 @@ TEST(TriangleChoiceSources, TheListingsFirstTestIsInverted) {
   choose_triangle_methods(s, g, c, 0.5, out);
   EXPECT_EQ(out[0].method, TriangleMethod::gouraud) << "flat triangle, intended rule";
   EXPECT_NE(out[1].method, TriangleMethod::gouraud) << "normals 40 degrees apart, intended rule";
+}
+
+// Triangles the bounds cannot cover: a zero, a NaN or an infinite vertex normal. Both arithmetics must
+// send them to Phong with every light's specular term on, whatever lane of the lanes they fall in, and
+// still choose Gouraud for the flat triangles around them.
+TEST(TriangleChoiceBound, DegenerateNormalsGoToPhongInEveryLane) {
+  Scene s;
+  s.name = "degenerate";
+  s.width = s.height = 256;
+  s.camera.projection = Projection::orthographic;
+  s.camera.position = {0.0f, 0.0f, 10.0f};
+  s.camera.target = {0.0f, 0.0f, 0.0f};
+  s.camera.ortho_height = 256.0f;
+  Light sun;
+  sun.direction = glm::normalize(glm::vec3(0.2f, -0.3f, -1.0f));
+  Light lamp;
+  lamp.type = LightType::point;
+  lamp.position = {4000.0f, 3000.0f, 5000.0f};  // far: its L hardly turns over a triangle
+  s.lights = {sun, lamp};
+  s.materials = {Material{}};
+  ScreenGeometry g;
+  g.width = g.height = 256;
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  const glm::vec3 bad[3] = {{0.0f, 0.0f, 0.0f}, {nan, 0.0f, 1.0f}, {0.0f, inf, 0.0f}};
+  const int count = 19;  // more than two lanes' worth, not a multiple of them
+  for (int t = 0; t < count; ++t)
+    for (int k = 0; k < 3; ++k) {
+      g.xy.push_back(glm::ivec2(256 * (4 + 12 * (t % 16) + 8 * (k == 1)), 256 * (4 + 40 * (t / 16) + 8 * (k == 2))));
+      g.world.push_back(glm::vec3(float(t), float(k), 0.0f));
+      g.normal.push_back(t % 4 == 3 && k == t % 3 ? bad[(t / 4) % 3] : glm::vec3(0.0f, 0.0f, 1.0f));
+      g.depth.push_back(0.5f);
+      g.clip.push_back(glm::vec4(0.0f));
+    }
+  for (int t = 0; t < count; ++t) {
+    g.triangles.push_back(glm::uvec3(3 * t, 3 * t + 1, 3 * t + 2));
+    g.material.push_back(0);
+  }
+  CombinedConfig c;
+  c.automatic = true;
+  c.rule = TriangleRule::bound;
+  for (const ChoiceArithmetic arithmetic : {ChoiceArithmetic::float_lanes, ChoiceArithmetic::double_reference}) {
+    SCOPED_TRACE(arithmetic == ChoiceArithmetic::float_lanes ? "float lanes" : "double reference");
+    std::vector<TriangleShading> out;
+    const TriangleChoiceStats st = choose_triangle_methods(s, g, c, 1.0, out, arithmetic);
+    ASSERT_EQ(out.size(), std::size_t(count));
+    for (int t = 0; t < count; ++t) {
+      if (t % 4 == 3) {
+        EXPECT_EQ(out[t].method, TriangleMethod::phong) << "triangle " << t;
+        EXPECT_EQ(out[t].specular_mask, 3u) << "triangle " << t;
+      } else {
+        EXPECT_EQ(out[t].method, TriangleMethod::gouraud) << "flat triangle " << t;
+      }
+    }
+    EXPECT_TRUE(std::isfinite(st.largest_expected_levels));
+  }
 }
 
 TEST(TriangleChoiceBound, ChordBoundHoldsOverSampledTriangles) {

@@ -1,0 +1,114 @@
+#include "parashade/gouraud_fit_lanes.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "parashade/lane_vectors.hpp"
+
+namespace parashade {
+
+LaneTable make_lane_table(double hi, const std::function<double(double)>& f) {
+  constexpr int kSize = 1024;
+  const double step = hi / double(kSize - 1);
+  LaneTable t;
+  t.value.resize(kSize);
+  for (int i = 0; i < kSize; ++i) {
+    const double v = f(step * double(i));
+    float rounded = float(v);
+    if (double(rounded) < v) rounded = std::nextafter(rounded, INFINITY);
+    t.value[std::size_t(i)] = rounded;
+  }
+  // Rounded up by far more than the float roundings of x * inverse_step.
+  t.inverse_step = float((1.0 / step) * (1.0 + 1e-5));
+  return t;
+}
+
+namespace {
+
+using namespace lanes;
+
+// The grid index of each lane's x (ceil, clamped to the table; NaN reads the last point).
+inline vi table_index(vf x, float inverse_step, float last) {
+  const vf t = vmax(vmin(x * inverse_step, splat(last)), splat(0.0f));
+  const vi i = __builtin_convertvector(t, vi);  // truncates: t >= 0
+  return i + (__builtin_convertvector(i, vf) < t ? vi{} + 1 : vi{});
+}
+
+inline vf gather(const LaneTable* const* table, vi index) {
+  vf r;
+  for (int j = 0; j < kWidth; ++j) r[j] = table[j]->value[std::size_t(index[j])];
+  return r;
+}
+
+inline vf lookup(const LaneTable* const* table, vf x) {
+  return gather(table, table_index(x, table[0]->inverse_step, float(table[0]->value.size() - 1)));
+}
+
+// u = sin(phi / 2) for phi = a + b, from a's half-angle cosine and sine and b's (each half-angle in
+// [0, pi/2]); phi >= pi / 2 (or any input NaN) gives kChordTableEnd, where the bounds are 1.
+inline vf half_sine_of_sum(vf sa, vf ca, vf sb, vf cb) {
+  const vf s = sa * cb + ca * sb, c = ca * cb - sa * sb;
+  const vf u = s * (1.0f + 1e-6f) + 1e-7f;  // rounded up
+  return (c > s) & (cb >= 0.0f) ? vmin(u, splat(float(kChordTableEnd))) : splat(float(kChordTableEnd));
+}
+
+}  // namespace
+
+void gouraud_fit_lanes(const FrameLanes& f, const LightLanes* light, const std::uint32_t* material,
+                       const GouraudFitConstants& k, GouraudFitLanes& out) {
+  const std::size_t lights = k.lights;
+  for (int at = 0; at < kLanes; at += kWidth) {
+    const LaneTable* power[kWidth];
+    const LaneTable* specular_chord[kWidth];
+    const LaneTable* diffuse_chord[kWidth];
+    for (int j = 0; j < kWidth; ++j) {
+      power[j] = &k.power[material[at + j]];
+      specular_chord[j] = &k.specular_chord[material[at + j]];
+      diffuse_chord[j] = k.diffuse_chord;
+    }
+    const auto per_light = [&](const double* table, std::size_t i) {
+      vf r;
+      for (int j = 0; j < kWidth; ++j) r[j] = float(table[material[at + j] * lights + i]);
+      return r;
+    };
+    const vi usable = load(f.usable, at) > 0.0f;
+    // Half-angle sine and cosine of the normals' spread a (cos a = cos_spread).
+    const vf cos_spread = vmax(vmin(load(f.cos_spread, at), splat(1.0f)), splat(-1.0f));
+    const vf sa = vsqrt0(0.5f - 0.5f * cos_spread), ca = vsqrt0(0.5f + 0.5f * cos_spread);
+    vi mask{};
+    vi on[24];
+    vf expected{};
+    for (std::size_t i = 0; i < lights; ++i) {
+      // Where the bounds do not apply every light's specular term shows.
+      on[i] = usable ? (load(light[i].max_n_dot_h, at) > per_light(k.thresholds, i)) : vi{} - 1;
+      mask |= on[i] & (1 << i);
+      expected += on[i] ? splat(0.0f) : splat(k.negligible_specular);
+    }
+    // Specular terms: both images lie in [0, peak], so the chord bound only where the peak alone does not fit.
+    for (std::size_t i = 0; i < lights; ++i) {
+      const vf levels = per_light(k.specular_levels, i);
+      const vf peak = levels * lookup(power, load(light[i].max_n_dot_h, at));
+      // H spreads by b = 2 asin(sin_h_radius): b / 2 has sine sin_h_radius.
+      const vf sb = vmin(load(light[i].sin_h_radius, at), splat(1.0f));
+      const vf chord = levels * lookup(specular_chord, half_sine_of_sum(sa, ca, sb, vsqrt0(1.0f - sb * sb)));
+      const vf term = expected + peak <= k.budget ? peak : vmin(peak, chord);
+      expected += on[i] ? term : splat(0.0f);
+    }
+    // Diffuse terms: the lit bound, or the chord bound where the terminator may cross.
+    for (std::size_t i = 0; i < lights; ++i) {
+      // L spreads by b = 4 asin(chord / 2): b / 2 = 2 asin(chord / 2).
+      const vf c = vmin(load(light[i].chord, at), splat(2.0f));
+      const vf sb = c * vsqrt0(1.0f - 0.25f * c * c), cb = 1.0f - 0.5f * c * c;
+      const vf crossing = lookup(diffuse_chord, half_sine_of_sum(sa, ca, sb, cb));
+      expected += per_light(k.diffuse_levels, i) * (load(light[i].state, at) == 2.0f ? crossing : load(light[i].diffuse, at));
+    }
+    const vi fits = usable & (expected * (1.0f + 1e-5f) <= k.budget);
+    for (int j = 0; j < kWidth; ++j) {
+      out.mask[at + j] = std::uint32_t(mask[j]);
+      out.expected[at + j] = expected[j];
+      out.fits[at + j] = fits[j] != 0;
+    }
+  }
+}
+
+}  // namespace parashade
