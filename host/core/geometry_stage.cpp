@@ -357,7 +357,8 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
   // Gouraud: light the vertices the surviving triangles use (the others keep a zero colour).
   if (needs.color) {
     for (const VertexSource& src : sources) {
-      parallel_for_ranges(src.mesh->positions.size(), 8192, [&](std::size_t first, std::size_t last) {
+      // Chunks small enough to balance two threads on a mesh of a few 10k vertices (~20 ns each).
+      parallel_for_ranges(src.mesh->positions.size(), 2048, [&](std::size_t first, std::size_t last) {
         for (std::size_t i = first; i < last; ++i) {
           const std::size_t v = src.base + i;
           g.color[v] = used[v] ? lighting.shade(src.material, src.world(i), src.normal(i)) : glm::vec3(0.0f);

@@ -35,7 +35,9 @@ __attribute__((always_inline)) inline float segment_distance2(float ax, float ay
 
 }  // namespace
 
-void frame_lanes(const Scene& s, const ScreenGeometry& g, std::size_t first, int count, FrameLanes& f) {
+// Cloned for AVX2 (picked at load time where the CPU has it): three-operand vector instructions spare the
+// register copies of SSE2, ~1.2x on the whole choice (bench_triangle_choice).
+__attribute__((target_clones("avx2", "default"))) void frame_lanes(const Scene& s, const ScreenGeometry& g, std::size_t first, int count, FrameLanes& f) {
   const bool distant_viewer = !(s.local_viewer && s.camera.projection == Projection::perspective);
   const bool have_world = g.world.size() == g.normal.size();
   f.count = count;
@@ -204,7 +206,8 @@ void light_lanes_of(const FrameLanes& f, const glm::vec3 dir, const glm::vec3 po
 
 }  // namespace
 
-void light_lanes(const FrameLanes& f, const Light& l, LightLanes& out) {
+// Cloned for AVX2 as frame_lanes.
+__attribute__((target_clones("avx2", "default"))) void light_lanes(const FrameLanes& f, const Light& l, LightLanes& out) {
   if (l.type == LightType::directional) light_lanes_of<true>(f, -glm::normalize(l.direction), glm::vec3(0.0f), out);
   else light_lanes_of<false>(f, glm::vec3(0.0f), l.position, out);
 }
