@@ -4,7 +4,7 @@
 #include <atomic>
 #include <cmath>
 
-#include "parashade/light_bounds.hpp"
+#include "parashade/light_bounds_lanes.hpp"
 #include "parashade/parallel.hpp"
 
 namespace parashade {
@@ -27,18 +27,26 @@ HighlightMarks mark_highlights(const Scene& s, const ScreenGeometry& g, float* a
                                double negligible_levels) {
   const std::vector<double> thresholds = negligible_cosines(s, negligible_levels);
   std::atomic<std::uint64_t> without{0}, skipped{0};
+  // The cone test on float lanes (light_bounds_lanes.hpp), as the per-triangle choice does: the exact
+  // spherical-triangle bound skips a few more terms (bunny: 38 860 against 36 697) at several times the cost.
   parallel_for_ranges(g.triangles.size(), 2048, [&](std::size_t first, std::size_t last) {
     std::uint64_t range_without = 0, range_skipped = 0;
-    for (std::size_t t = first; t < last; ++t) {
-      const TriangleFrame f = triangle_frame(s, g, t);
-      const double* threshold = &thresholds[g.material[t] * s.lights.size()];
-      unsigned mask = 0;
+    FrameLanes frame;
+    LightLanes light;
+    for (std::size_t t = first; t < last; t += kLanes) {
+      const int count = int(std::min<std::size_t>(kLanes, last - t));
+      frame_lanes(s, g, t, count, frame);
+      unsigned mask[kLanes] = {};
       for (std::size_t i = 0; i < s.lights.size(); ++i) {
-        if (light_bounds(f, s.lights[i], threshold[i]).max_n_dot_h > threshold[i]) mask |= 1u << i;
-        else ++range_skipped;
+        light_lanes(frame, s.lights[i], light);
+        for (int j = 0; j < count; ++j)
+          if (light.max_n_dot_h[j] > thresholds[g.material[t + std::size_t(j)] * s.lights.size() + i]) mask[j] |= 1u << i;
+          else ++range_skipped;
       }
-      attributes[t * stride + slot] = float(mask);
-      range_without += mask == 0;
+      for (int j = 0; j < count; ++j) {
+        attributes[(t + std::size_t(j)) * stride + slot] = float(mask[j]);
+        range_without += mask[j] == 0;
+      }
     }
     without += range_without;
     skipped += range_skipped;
