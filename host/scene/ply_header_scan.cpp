@@ -73,7 +73,16 @@ class PlyHeaderChecker {
       }
       if (tokens.empty()) fail("blank header line");
       const std::string& keyword = tokens[0];
-      if (keyword == "comment" || keyword == "obj_info") continue;
+      if (keyword == "comment") continue;
+      if (keyword == "obj_info") {
+        // OpenMesh's reader skips only the word obj_info and reads the words after it as header lines:
+        // "obj_info element 5" made it loop forever (fuzz finding F13).
+        for (std::size_t k = 1; k < tokens.size(); ++k)
+          if (tokens[k] == "element" || tokens[k] == "property" || tokens[k] == "format" || tokens[k] == "end_header")
+            fail("obj_info line holds the header keyword '" + tokens[k] +
+                 "' (OpenMesh's reader would take it for a header line)");
+        continue;
+      }
       if (keyword == "end_header") {
         ended = true;
         break;

@@ -55,6 +55,19 @@ TEST(FuzzFindingF2, PlyPropertyBeforeAnyElementIsRefused) {
   expect_refused("f2.ply", "ply\nformat ascii 1.0\nproperty float x\nend_header\n", ":3: a property before any element");
 }
 
+// F13: OpenMesh's header parser reads the words after obj_info as header lines; "element aecf3" there
+// (an element whose count is the next line's first word) made it loop forever writing errors.
+TEST(FuzzFindingF13, PlyObjInfoWithAHeaderKeywordIsRefused) {
+  const std::string body = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+  const std::string face = "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  expect_refused("f13.ply", "ply\nformat ascii 1.0\n" + body + "obj_info element aecf3 \n" + face,
+                 ":7: obj_info line holds the header keyword 'element'");
+  expect_refused("f13b.ply", "ply\nformat ascii 1.0\n" + body + "obj_info property float w\n" + face, "'property'");
+  // Free text after obj_info (as real files have it) still loads.
+  EXPECT_EQ(triangles("f13c.ply", "ply\nformat ascii 1.0\nobj_info vtkPolyData points and polygons: vtk4.0\n" + body + face),
+            1u);
+}
+
 // F3: without end_header OpenMesh's header parser looped forever at the end of the file, growing memory.
 TEST(FuzzFindingF3, PlyWithoutEndHeaderIsRefused) {
   expect_refused("f3.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n", "no end_header");
