@@ -1,9 +1,10 @@
 #pragma once
 // The light bounds of light_bounds.hpp for kLanes triangles at once, in float, as structures of arrays:
-// the per-triangle choice's hot path (triangle_choice.cpp). Every step is a loop over the lanes with
-// no branch inside, so the compiler turns it into vector instructions; the scalar double version in
-// light_bounds.cpp stays the readable reference (tests compare the two). Float rounding is covered by
-// small margins that only ever make a bound more conservative.
+// the per-triangle choice's hot path (triangle_choice.cpp) and the highlight test (highlight.cpp). The
+// per-triangle part is a branch-free loop the compiler vectorizes, the per-light part is written on
+// vector types (lane_vectors.hpp); the scalar double version in light_bounds.cpp stays the readable
+// reference (tests compare the two). Float rounding is covered by small margins that only ever make a
+// bound more conservative.
 #include <cstddef>
 
 #include "parashade/scene.hpp"
