@@ -30,10 +30,10 @@ nlohmann::json to_json(const ErrorMetrics& m) {
 }
 
 nlohmann::json to_json(const FrameTimings& t) {
-  return {{"geometry_ms", t.geometry_ms}, {"setup_ms", t.setup_ms}, {"choice_ms", t.choice_ms},       {"binning_ms", t.binning_ms},
-          {"kernel_ms", t.kernel_ms},     {"launch_ms", t.launch_ms},     {"readback_ms", t.readback_ms},
-          {"total_ms", t.total_ms},       {"planning_ms", t.planning_ms}, {"unit_pass_ms", t.unit_pass_ms},
-          {"key_merge_ms", t.key_merge_ms}};
+  return {{"geometry_ms", t.geometry_ms},   {"setup_ms", t.setup_ms},       {"choice_ms", t.choice_ms},
+          {"binning_ms", t.binning_ms},     {"kernel_ms", t.kernel_ms},     {"launch_ms", t.launch_ms},
+          {"readback_ms", t.readback_ms},   {"total_ms", t.total_ms},       {"planning_ms", t.planning_ms},
+          {"unit_pass_ms", t.unit_pass_ms}, {"key_merge_ms", t.key_merge_ms}};
 }
 
 nlohmann::json to_json(const FrameStats& s) {

@@ -55,9 +55,10 @@ inline vf half_sine_of_sum(vf sa, vf ca, vf sb, vf cb) {
 }  // namespace
 
 // Cloned for AVX2 as frame_lanes (light_bounds_lanes.cpp).
-__attribute__((target_clones("avx2", "default"))) void gouraud_fit_lanes(const FrameLanes& f, const LightLanes* light, const std::uint32_t* material,
-                       const GouraudFitConstants& k, GouraudFitLanes& out) {
+__attribute__((target_clones("avx2", "default"))) void gouraud_fit_lanes(const FrameLanes& f, const LightLanes* light, const GouraudFitConstants& k,
+                                                                           GouraudFitLanes& out) {
   const std::size_t lights = k.lights;
+  const std::uint32_t* material = f.material;
   for (int at = 0; at < kLanes; at += kWidth) {
     const LaneTable* power[kWidth];
     const LaneTable* specular_chord[kWidth];

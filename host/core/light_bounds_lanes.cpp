@@ -42,7 +42,9 @@ __attribute__((target_clones("avx2", "default"))) void frame_lanes(const Scene& 
   const bool have_world = g.world.size() == g.normal.size();
   f.count = count;
   for (int j = 0; j < kLanes; ++j) {  // gather (lanes past count repeat the first triangle)
-    const glm::uvec3 idx = g.triangles[first + std::size_t(j < count ? j : 0)];
+    const std::size_t t = first + std::size_t(j < count ? j : 0);
+    const glm::uvec3 idx = g.triangles[t];
+    f.material[j] = g.material[t];
     const std::uint32_t vid[3] = {idx.x, idx.y, idx.z};
     bool usable = distant_viewer || have_world;
     for (int k = 0; k < 3; ++k) {
@@ -146,13 +148,11 @@ void light_lanes_of(const FrameLanes& f, const glm::vec3 dir, const glm::vec3 po
              lz = directional ? splat(dir.z) : dz * inv;
     const vf chord = directional ? splat(0.0f) : (near ? splat(2.0f) : 2.0f * radius * inv * 1.00001f);
     store(out.chord, at, chord);
-    store(out.distance_to_light, at, directional ? splat(0.0f) : dist);
     const vf ch = load(f.cos_half, at), sh = load(f.sin_half, at);
     const vf ncx = load(f.normal_centre[0], at), ncy = load(f.normal_centre[1], at), ncz = load(f.normal_centre[2], at);
     const vi usable = (load(f.usable, at) > 0.0f) & ~near;
     const vf max_n_dot_l = usable ? cone_gap(ch, sh, lx, ly, lz, ncx, ncy, ncz, chord * vsqrt0(1.0f - 0.25f * chord * chord))
                                   : splat(1.0f);
-    store(out.max_n_dot_l, at, max_n_dot_l);
     // H within asin(ratio) of normalize(c_L + c_V).
     const vf hx = lx + load(f.view[0], at), hy = ly + load(f.view[1], at), hz = lz + load(f.view[2], at);
     const vf hl = vsqrt(hx * hx + hy * hy + hz * hz);

@@ -156,15 +156,6 @@ struct TriangleTerms {
   glm::dvec3 n[3];
   double cos_spread = 1.0, min_normal = 0.0;
   LightTerms light[24];
-  // Largest angle between two vertex normals, computed on first use (an acos per triangle otherwise).
-  double normal_spread() {
-    if (spread_ < 0.0) spread_ = std::acos(std::clamp(cos_spread, -1.0, 1.0));
-    return spread_;
-  }
-  void reset_spread() { spread_ = -1.0; }
-
- private:
-  double spread_ = -1.0;
 };
 
 void reference_terms(const Scene& s, const TriangleFrame& f, TriangleTerms& out) {
@@ -314,12 +305,9 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
     for (std::size_t t = first; t < last; ++t) {
       const int lane = int((t - first) % kLanes);
       if (lanes && lane == 0) {  // the next kLanes triangles' bounds and Gouraud tests at once
-        const int in_lanes = int(std::min<std::size_t>(kLanes, last - t));
-        frame_lanes(s, g, t, in_lanes, frame);
+        frame_lanes(s, g, t, int(std::min<std::size_t>(kLanes, last - t)), frame);
         for (std::size_t i = 0; i < lights; ++i) light_lanes(frame, s.lights[i], light[i]);
-        std::uint32_t material[kLanes];
-        for (int j = 0; j < kLanes; ++j) material[j] = g.material[t + std::size_t(j < in_lanes ? j : 0)];
-        gouraud_fit_lanes(frame, light, material, fit_constants, fit);
+        gouraud_fit_lanes(frame, light, fit_constants, fit);
       }
       TriangleShading& o = out[t];
       o = TriangleShading{};  // the vector is reused frame to frame
@@ -329,6 +317,8 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
       const glm::dvec2 p[3] = {glm::dvec2(g.xy[idx.x]) * px, glm::dvec2(g.xy[idx.y]) * px, glm::dvec2(g.xy[idx.z]) * px};
       const double width = std::max({p[0].x, p[1].x, p[2].x}) - std::min({p[0].x, p[1].x, p[2].x});
       const double* threshold = &thresholds[mat * lights];
+      // Clip-made vertices carry interpolated colours and normals: no Gouraud bound for them.
+      const bool clipped = idx.x >= g.clip.size() || idx.y >= g.clip.size() || idx.z >= g.clip.size();
       unsigned mask = all_lights;
       bool fits = false;
       double expected = 0.0;
@@ -345,22 +335,22 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
         }
         fits = c.rule != TriangleRule::none && sources_choose_gouraud(s, f, c);
       } else if (lanes) {
-        // Clip-made vertices carry interpolated colours and normals: no Gouraud bound for them.
-        const bool clipped = idx.x >= g.clip.size() || idx.y >= g.clip.size() || idx.z >= g.clip.size();
         mask = fit.mask[lane];
         fits = fit.fits[lane] && !clipped;
         expected = fit.expected[lane];
         terms.usable = frame.usable[lane] > 0.0f;  // the rest of terms only if the segments need it, below
       } else {
         reference_terms(s, triangle_frame(s, g, t), terms);
-        terms.reset_spread();
+        double spread = -1.0;  // the normals' spread, an acos computed only if a chord bound needs it
+        const auto normal_spread = [&] {
+          if (spread < 0.0) spread = std::acos(std::clamp(terms.cos_spread, -1.0, 1.0));
+          return spread;
+        };
         if (terms.usable) {
           mask = 0;
           for (std::size_t i = 0; i < lights; ++i)
             if (terms.light[i].max_n_dot_h > threshold[i]) mask |= 1u << i;
         }
-        // Clip-made vertices carry interpolated colours and normals: no Gouraud bound for them.
-        const bool clipped = idx.x >= g.clip.size() || idx.y >= g.clip.size() || idx.z >= g.clip.size();
         // Expected |Gouraud - Phong| in levels, summed term by term (largest channel each), cheapest and most
         // often decisive first; a light whose specular term the mask drops adds at most negligible_specular.
         expected = c.negligible_specular * double(lights - std::size_t(__builtin_popcount(mask)));
@@ -372,13 +362,13 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
           expected += expected + peak <= shading_budget
                           ? peak
                           : std::min(peak, specular_levels[mat * lights + i] *
-                                               chord_bound(specular_chord[mat], terms.normal_spread() + terms.light[i].h_spread()));
+                                               chord_bound(specular_chord[mat], normal_spread() + terms.light[i].h_spread()));
           fits = expected <= shading_budget;
         }
         for (std::size_t i = 0; i < lights && fits; ++i) {
           const LightTerms& l = terms.light[i];
           expected += diffuse_levels[mat * lights + i] *
-                      (l.state == 2 ? chord_bound(diffuse_chord, terms.normal_spread() + l.l_spread()) : l.diffuse);
+                      (l.state == 2 ? chord_bound(diffuse_chord, normal_spread() + l.l_spread()) : l.diffuse);
           fits = expected <= shading_budget;
         }
       }

@@ -39,8 +39,7 @@ struct GouraudFitLanes {
   float expected[kLanes];      // expected |Gouraud - Phong| in levels, every term summed
   bool fits[kLanes];           // the bounds apply and expected fits the budget
 };
-// material: the lanes' material indices.
-void gouraud_fit_lanes(const FrameLanes& f, const LightLanes* light, const std::uint32_t* material,
-                       const GouraudFitConstants& k, GouraudFitLanes& out);
+void gouraud_fit_lanes(const FrameLanes& f, const LightLanes* light, const GouraudFitConstants& k,
+                       GouraudFitLanes& out);
 
 }  // namespace parashade

@@ -6,6 +6,7 @@
 // reference (tests compare the two). Float rounding is covered by small margins that only ever make a
 // bound more conservative.
 #include <cstddef>
+#include <cstdint>
 
 #include "parashade/scene.hpp"
 #include "parashade/screen_geometry.hpp"
@@ -19,6 +20,7 @@ struct FrameLanes {
   int count = 0;
   float n[3][3][kLanes];        // unit vertex normals [vertex][component][lane]
   float w[3][3][kLanes];        // world positions
+  std::uint32_t material[kLanes];  // the triangles' material indices
   float usable[kLanes];         // 1: bounds apply (as TriangleFrame::usable), 0: not
   float cos_spread[kLanes];     // at most the cosine of the largest angle between two vertex normals
   float normal_centre[3][kLanes], cos_half[kLanes], sin_half[kLanes];  // the normals' cone (cos_half <= 0: none)
@@ -31,8 +33,7 @@ void frame_lanes(const Scene& s, const ScreenGeometry& g, std::size_t first, int
 // One light over the lanes' triangles (light_bounds and the choice's diffuse bound, docs/triangle-choice.md §2).
 struct LightLanes {
   float chord[kLanes];          // |L(p) - L at the centroid| <= chord
-  float distance_to_light[kLanes];  // point light: from the centroid; 0 for a directional light
-  float max_n_dot_l[kLanes], max_n_dot_h[kLanes];
+  float max_n_dot_h[kLanes];
   float sin_h_radius[kLanes];   // H within asin(this) of one direction (1: no bound)
   float state[kLanes];          // 0 lit everywhere, 1 dark everywhere, 2 the terminator may cross
   float diffuse[kLanes];        // lit: bound on |Gouraud - Phong| of the diffuse term (0 dark, 1 crosses)

@@ -91,17 +91,24 @@ struct Case {
   double budget;
 };
 
-class TriangleChoiceBound : public ::testing::TestWithParam<Case> {};
+// The case's scene, its screen geometry and the bound rule of combined:auto.
+class TriangleChoiceBound : public ::testing::TestWithParam<Case> {
+ protected:
+  void SetUp() override {
+    k = GetParam();
+    s = lit_scene(k.seed, k.jitter, k.shininess);
+    build_screen_geometry(s, {Method::combined, true, true}, g);
+    c.automatic = true;
+    c.rule = TriangleRule::bound;
+  }
+  Case k;
+  Scene s;
+  ScreenGeometry g;
+  CombinedConfig c;
+};
 
 // Both ways of computing the bounds: the float lanes the renderer uses and the double reference.
 TEST_P(TriangleChoiceBound, GouraudOnlyWhereTheSampledErrorFits) {
-  const Case k = GetParam();
-  const Scene s = lit_scene(k.seed, k.jitter, k.shininess);
-  ScreenGeometry g;
-  build_screen_geometry(s, {Method::combined, true, true}, g);
-  CombinedConfig c;
-  c.automatic = true;
-  c.rule = TriangleRule::bound;
   std::vector<double> sampled(g.triangles.size());
   for (std::size_t t = 0; t < g.triangles.size(); ++t) sampled[t] = sampled_error(s, g, t);
   for (const ChoiceArithmetic arithmetic : {ChoiceArithmetic::float_lanes, ChoiceArithmetic::double_reference}) {
@@ -135,13 +142,6 @@ TEST_P(TriangleChoiceBound, GouraudOnlyWhereTheSampledErrorFits) {
 // The float lanes decide as the double reference does, except for triangles whose expected error lies
 // within float rounding and the tables' grid of the budget: few triangles may differ, and no mask.
 TEST_P(TriangleChoiceBound, FloatLanesAgreeWithTheDoubleReference) {
-  const Case k = GetParam();
-  const Scene s = lit_scene(k.seed, k.jitter, k.shininess);
-  ScreenGeometry g;
-  build_screen_geometry(s, {Method::combined, true, true}, g);
-  CombinedConfig c;
-  c.automatic = true;
-  c.rule = TriangleRule::bound;
   std::vector<TriangleShading> lanes, reference;
   const TriangleChoiceStats a = choose_triangle_methods(s, g, c, k.budget, lanes, ChoiceArithmetic::float_lanes);
   const TriangleChoiceStats b = choose_triangle_methods(s, g, c, k.budget, reference, ChoiceArithmetic::double_reference);
