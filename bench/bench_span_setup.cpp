@@ -183,7 +183,7 @@ struct ShiftAddMulRule {
 
 glm::dvec2 pos(const Tri& t, int v) { return glm::dvec2(t.x[v], t.y[v]); }
 
-// Formula 2.16 as host/core/setup.cpp evaluates it: 4 differences, 2 products, a difference and a
+// Formula 2.16 as host/pipeline/setup.cpp evaluates it: 4 differences, 2 products, a difference and a
 // division for the triangle; 3 differences and 3 products per channel.
 template <class F>
 struct Constant216Rule {
@@ -197,7 +197,7 @@ struct Constant216Rule {
   }
 };
 
-// Formula 2.15 as host/core/setup.cpp evaluates it, once per channel: 8 additions or differences,
+// Formula 2.15 as host/pipeline/setup.cpp evaluates it, once per channel: 8 additions or differences,
 // 2 products and 2 divisions per call.
 template <class F>
 struct Constant215Rule {

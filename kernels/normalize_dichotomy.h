@@ -1,6 +1,6 @@
 /* Dichotomy (SEEDS §7): unit normals by binary bisection inside segments of 2^K pixels whose end
  * normals are exact. It follows the host library's float rule step for step (dichotomy_span in
- * host/core/normalization.cpp), including the last, shorter segment: bisected between the span's real
+ * host/phong/normalization.cpp), including the last, shorter segment: bisected between the span's real
  * ends, three levels finer than it needs when its length is no power of two, each pixel taking the
  * nearest dyadic point; with NORMALIZE_EXTRAPOLATE the source's rule (2^K long, far end extrapolated).
  * Bisection: N_mid = (N_lo + N_hi) s(u), u = 2 cos(phi) of the angle bisected, s ~ 1/sqrt(2 + u) by

@@ -3,7 +3,7 @@
  * dtheta = theta/(m-1), theta = arccos(a.b) by NORMALIZE_ARCCOS (0 exact, 1 the source's table 3.1 as
  * printed, 2 our refit); the unit loads pixels jR and jR+1 from slerp with that theta (NORMALIZE_REANCHOR
  * R; 0: pixels 0 and 1 only). It follows the host library's float rule step for step (recurrence_span
- * in host/core/normalization.cpp). Every pixel needs the two before it, so this is a scalar loop, not
+ * in host/phong/normalization.cpp). Every pixel needs the two before it, so this is a scalar loop, not
  * lanes: to produce a run of pixels the unit steps from the last anchor at or before the run's first
  * pixel (the span's first pixel without re-anchoring), and every step counts as the method's cost. */
 #ifndef PARASHADE_NORMALIZE_RECURRENCE_H

@@ -1,7 +1,7 @@
 /* The span increment by a division per span (--div exact | shiftadd:N), instead of the constant
  * increment dI_G once per triangle (SEEDS §2 vs §5): dI = (E - S) / k from the span's end registers,
  * k = L - 1 pixels between them. Shared by host and kernels; the golden models use the independent
- * host implementation (host/core/shift_add_division.cpp) so that the tests compare two of them.
+ * host implementation (host/units/shift_add_division.cpp) so that the tests compare two of them.
  *   exact:     round to nearest, ties up: floor((2 (E - S) + k) / 2k)
  *   shiftadd:  1/k as n binary digits m / 2^n (rounded to nearest as the source's Table 1, or truncated),
  *              the quotient as the shift register and accumulating adder form it: the sum of (E - S)

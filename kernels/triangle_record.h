@@ -1,5 +1,5 @@
 /* Per-triangle setup records, shared by the host (C++) and the kernels (OpenCL C): one layout, one
- * definition. Written by host/core/setup.cpp, read by the unit kernels.
+ * definition. Written by host/pipeline/setup.cpp, read by the unit kernels.
  *
  * Coverage: for edge e, E_e(x, y) = edge_c[e] + edge_a[e]*(x - x0) + edge_b[e]*(y - y0) is the edge
  * function of screen_geometry.hpp at the centre of pixel (x, y), minus the edge's top-left bias; the

@@ -4,7 +4,7 @@
  * FIXED = 1: span registers in I.F fixed point (REG_BITS = I + F, FRAC_BITS = F; kernels/fixed_point.h).
  * Each span's registers are loaded from setup's planes (S at the left pixel, E at the right one, dI,
  * and an own-rounded M*dI), then every pixel gets the value the unit's interpolator holds for it.
- * The golden models (host/core/golden_units.cpp) step the registers clock by clock; here each
+ * The golden models (host/units/golden_units.cpp) step the registers clock by clock; here each
  * pixel's value is the closed form of the same additions, which in modular W-bit arithmetic is
  * bit-identical (z additions of a rounded increment are one multiplication by z):
  *   classic, segment:P, interleave:M   S + i*dI                     (multiples of the rounded dI)

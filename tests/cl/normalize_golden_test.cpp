@@ -1,5 +1,5 @@
 // The kernels' per-span normals (kernels/normalize_span.h, through the probe kernel normalize_probe.cl)
-// against the host library (host/core/normalization.cpp) on the same spans.
+// against the host library (host/phong/normalization.cpp) on the same spans.
 //
 // Parallel methods (slerp, quadratic) against the host in double. Tolerance: the kernel works in
 // float; its end normals are rounded to float (2^-24 relative) and normalized by rsqrt (a few ulp),
