@@ -11,6 +11,7 @@ struct Command {
   CLI::App* app;
   std::function<int()> run;
 };
+Command add_combinations_command(CLI::App& app);
 Command add_devices_command(CLI::App& app);
 Command add_phong_study_command(CLI::App& app);
 Command add_render_command(CLI::App& app);

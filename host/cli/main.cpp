@@ -22,7 +22,8 @@ int main(int argc, char** argv) {
                                               cli::add_render_command(app), cli::add_plan_command(app),
                                               cli::add_tune_command(app),
                                               cli::add_scaling_command(app),
-                                              cli::add_unit_error_command(app)};
+                                              cli::add_unit_error_command(app),
+                                              cli::add_combinations_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

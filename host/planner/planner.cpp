@@ -180,14 +180,19 @@ double PlanReport::imbalance() const {
   return double(frame_clocks()) * double(load.size()) / double(total);
 }
 
+void check_plan_options(const PlanOptions& o) {
+  if (o.units < 0 || o.units > 4096)
+    throw UsageError("modeled units " + std::to_string(o.units) + " out of range (1..4096; 0: the device's compute units)");
+  if (o.batch < 1) throw UsageError("batch " + std::to_string(o.batch) + " must be at least 1 triangle");
+  if (o.setup_clocks < 0) throw UsageError("setup clocks " + std::to_string(o.setup_clocks) + " must not be negative");
+}
+
 Plan make_plan(const TriangleGeometry* tris, std::size_t n, const TileBins& bins, const UnitConfig& unit,
                const PlanOptions& o) {
-  if (o.units < 1 || o.units > 4096)
-    throw UsageError("--cu " + std::to_string(o.units) + " is out of range (1..4096 modeled units)");
-  if (o.batch < 1) throw UsageError("--batch " + std::to_string(o.batch) + " must be at least 1 triangle");
-  if (o.setup_clocks < 0) throw UsageError("setup clocks must not be negative");
-  if (unit.kind == UnitKind::sierpinski)
-    throw UsageError("--cu does not plan the extra-triangulation unit (its records are sub-triangle copies)");
+  check_plan_options(o);
+  if (o.units == 0) throw UsageError("make_plan: modeled units 0 (the device's compute units) must be resolved first");
+  if (unit.kind == UnitKind::sierpinski)  // refused by check_frame_config; the records here would be copies
+    throw UsageError("make_plan: the plan does not model the extra triangulation (its records are sub-triangle copies)");
   Plan plan;
   PlanReport& r = plan.report;
   r.partition = o.partition;

@@ -32,6 +32,10 @@ struct PlanOptions {
 };
 
 // Modeled work of one triangle (or one triangle's part of a tile) on one unit.
+// Throws UsageError naming the value: units beyond 0..4096 (0: the device's compute units), batch < 1,
+// negative setup clocks.
+void check_plan_options(const PlanOptions& o);
+
 struct WorkCost {
   std::uint64_t spans = 0;
   std::uint64_t pixels = 0;  // span pixels, hidden ones included (a unit shades before the depth test)
