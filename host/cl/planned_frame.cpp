@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <chrono>
 
+#include "kernel_variant.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/renderer.hpp"
+#include "tile_kernel_args.hpp"
 
 namespace parashade {
 namespace {
@@ -15,33 +17,19 @@ double event_span_ms(cl_ulong start, cl_ulong end) { return end > start ? double
 
 }  // namespace
 
-void Renderer::plan_frame(const TriangleGeometry* tris, std::size_t n, const std::uint32_t* tile_list, FrameTimings& t,
-                          FrameStats& s) {
-  const auto t0 = std::chrono::steady_clock::now();
-  if (options_.dda_coverage) throw UsageError("--cu does not plan with --coverage dda (its spans come from a row table)");
-  PlanOptions o = *options_.plan;
-  if (o.units == 0) o.units = std::max(1, device_.info().compute_units);
-  const TileBins bins{binner_.tile_start().data(), tile_list, binner_.tiles_x(), binner_.tiles_y(), binner_.tile_size()};
-  plan_ = make_plan(tris, n, bins, options_.unit(), o);
-  s.plan = plan_.report;
-  s.unit_pass = unit_pass_shares();
-  s.unit_pass_on_sub_devices = !unit_devices_.empty();
-  t.planning_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
 // Units to sub-devices in contiguous blocks, in proportion to their compute units (unit u runs on the
 // sub-device whose block holds u). dynamic: the batches too, in proportion to each one's units: a
 // counter is shared only by the work-items of one device (the spec promises atomics on a buffer to the
 // work-items of one device, not across devices), so each sub-device's units pull from their own range.
-std::vector<UnitPassShare> Renderer::unit_pass_shares() const {
-  const int units = plan_.report.units, packets = plan_.work.packets();
+std::vector<UnitPassShare> Renderer::unit_pass_shares(const Plan& plan) const {
+  const int units = plan.report.units, packets = plan.work.packets();
   if (unit_devices_.empty()) return {{device_.info().name, device_.info().compute_units, 0, units, 0, packets}};
   std::vector<int> cus;
   for (const Device* d : unit_devices_) cus.push_back(std::max(1, d->info().compute_units));
   const std::vector<int> unit_first = proportional_blocks(units, cus);
   std::vector<int> unit_count;
   for (std::size_t k = 0; k < cus.size(); ++k) unit_count.push_back(unit_first[k + 1] - unit_first[k]);
-  const bool dynamic = plan_.report.partition == Partition::dynamic;
+  const bool dynamic = plan.report.partition == Partition::dynamic;
   const std::vector<int> packet_first = dynamic ? proportional_blocks(packets, unit_count) : unit_first;
   std::vector<UnitPassShare> out;
   for (std::size_t k = 0; k < cus.size(); ++k)
@@ -50,12 +38,12 @@ std::vector<UnitPassShare> Renderer::unit_pass_shares() const {
   return out;
 }
 
-void Renderer::enqueue_unit_pass(cl::Kernel& resolve, const std::vector<std::string>& files, const std::string& options,
-                                 cl_float4 viewer, cl_float4 background, const Scene& scene,
-                                 const std::vector<UnitPassShare>& shares, UnitPassEvents& events) {
+void Renderer::enqueue_unit_pass(cl::Kernel& resolve, const KernelVariant& variant, const TileKernelArgs& frame_args,
+                                 const Plan& plan, const std::vector<UnitPassShare>& shares, std::size_t pixels,
+                                 UnitPassEvents& events) {
   cl::CommandQueue& q = device_.queue();
-  const WorkLists& w = plan_.work;
-  const std::size_t pixels = std::size_t(scene.width) * scene.height, key_bytes = pixels * sizeof(cl_ulong);
+  const WorkLists& w = plan.work;
+  const std::size_t key_bytes = pixels * sizeof(cl_ulong);
   ensure(keys_, keys_cap_, key_bytes, CL_MEM_READ_WRITE);
   auto upload = [&](cl::Buffer& b, std::size_t& cap, const std::vector<std::uint32_t>& v) {
     ensure(b, cap, v.size() * sizeof(std::uint32_t), CL_MEM_READ_ONLY);
@@ -66,25 +54,21 @@ void Renderer::enqueue_unit_pass(cl::Kernel& resolve, const std::vector<std::str
   upload(plan_starts_, plan_starts_cap_, w.vtile_start);
   upload(plan_list_, plan_list_cap_, w.list);
   ensure(plan_counter_, plan_counter_cap_, sizeof(cl_int), CL_MEM_READ_WRITE);
-  resolve.setArg(19, keys_);
-  resolve.setArg(20, plan_packets_);
-  resolve.setArg(21, plan_vtiles_);
-  resolve.setArg(22, plan_counter_);
-  resolve.setArg(23, cl_int(w.packets()));
+  set_plan_pass_args(resolve, {&keys_, &plan_packets_, &plan_vtiles_, &plan_counter_, cl_int(w.packets())});
 
-  const bool dynamic = plan_.report.partition == Partition::dynamic;
-  const std::string unit_options = options + " -D PLAN_PASS=1 -D PLAN_DYNAMIC=" + (dynamic ? "1" : "0");
+  KernelVariant unit_variant = variant;
+  unit_variant.plan_pass = 1;
+  unit_variant.plan_dynamic = plan.report.partition == Partition::dynamic;
   // The resolve kernel's arguments, with the plan's virtual tiles and lists in place of the bins, for
   // units [first_unit, first_unit + units) as work-items (global offset first_unit) that run packets up to
   // `end` (static: packet = unit; dynamic: pulled from `counter`, which starts at the share's first packet).
+  TileKernelArgs unit_args = frame_args;
+  unit_args.tile_start = &plan_starts_;
+  unit_args.tile_list = &plan_list_;
   auto unit_kernel = [&](Device& d, cl::Buffer& keys, cl::Buffer& counter, int end) {
-    cl::Kernel k(d.program(files, unit_options), "render_tiles");
-    set_tile_kernel_args(k, plan_starts_, plan_list_, viewer, background, scene);
-    k.setArg(19, keys);
-    k.setArg(20, plan_packets_);
-    k.setArg(21, plan_vtiles_);
-    k.setArg(22, counter);
-    k.setArg(23, cl_int(end));
+    cl::Kernel k(d.program(kernel_files(unit_variant), unit_variant.build_options()), "render_tiles");
+    set_tile_kernel_args(k, unit_args);
+    set_plan_pass_args(k, {&keys, &plan_packets_, &plan_vtiles_, &counter, cl_int(end)});
     return k;
   };
   events = UnitPassEvents{};
@@ -93,7 +77,7 @@ void Renderer::enqueue_unit_pass(cl::Kernel& resolve, const std::vector<std::str
     q.enqueueFillBuffer(keys_, ~cl_ulong(0), 0, key_bytes);
     q.enqueueFillBuffer(plan_counter_, cl_int(0), 0, sizeof(cl_int));
     cl::Kernel k = unit_kernel(device_, keys_, plan_counter_, w.packets());
-    q.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(std::size_t(plan_.report.units)), cl::NDRange(1), nullptr,
+    q.enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(std::size_t(plan.report.units)), cl::NDRange(1), nullptr,
                            &events.share.emplace_back());
     return;
   }

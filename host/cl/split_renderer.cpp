@@ -46,10 +46,8 @@ std::vector<std::unique_ptr<Device>> open_devices(const std::string& selector) {
 SplitRenderer::SplitRenderer(std::vector<std::unique_ptr<Device>> devices, RenderOptions options, bool keep_going)
     : devices_(std::move(devices)), options_(options), keep_going_(keep_going) {
   if (devices_.empty()) throw UsageError("no device to render on");
-  if (options_.plan)
-    throw UsageError("--cu/--partition run the units on one device, or on the sub-devices of one (--device sub:NAME:N); "
-                     "not across a device list");
-  if (options_.float_output) throw UsageError("--float does not combine with a device list yet");
+  check_frame_config(options_, DeviceMode::bands);
+  if (options_.float_output) throw UsageError("float read-back does not combine with a device list yet");
   speed_.assign(devices_.size(), 0.0);
   dropped_.assign(devices_.size(), "");
 }

@@ -48,4 +48,30 @@ void check_report_destination(const std::filesystem::path& report) {
     throw InputError("cannot write '" + report.string() + "': it is a directory");
 }
 
+void check_config_options(const FrameConfig& config, DeviceMode devices) {
+  try {
+    check_frame_config(config, devices);
+  } catch (const ConfigError& e) {
+    std::string flags;
+    for (Axis a : e.axes) {
+      const char* flag = "";
+      switch (a) {
+        case Axis::method: flag = "--method"; break;
+        case Axis::unit: flag = config.units ? "--units" : "--arith/--coverage (on the classic unit)"; break;
+        case Axis::arith: flag = "--arith"; break;
+        case Axis::coverage: flag = "--coverage"; break;
+        case Axis::division: flag = "--div"; break;
+        case Axis::normalize: flag = "--normalize"; break;
+        case Axis::specular: flag = "--specular"; break;
+        case Axis::choice: flag = "--triangle-choice"; break;
+        case Axis::highlight: flag = "--highlight-test"; break;
+        case Axis::plan: flag = "--cu/--partition"; break;
+        case Axis::devices: flag = "--device"; break;
+      }
+      flags += (flags.empty() ? "" : ", ") + std::string(flag);
+    }
+    throw UsageError(flags + ": " + e.what() + " (parashade combinations lists what combines)");
+  }
+}
+
 }  // namespace parashade::cli

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "parashade/errors.hpp"
+#include "parashade/frame_config.hpp"
 #include "parashade/scene.hpp"
 
 namespace parashade::cli {
@@ -38,6 +39,10 @@ std::optional<std::pair<int, int>> parse_size(const std::string& size);
 // The scene file, at `size` when given (--size overrides the scene's resolution); both resolutions are
 // checked against the 12-bit address limit, naming the culprit.
 Scene load_scene_at(const std::string& file, const std::optional<std::pair<int, int>>& size, const std::string& size_text);
+
+// Checks `config` (check_frame_config) on `devices`; a refused combination becomes a usage error that
+// names this command line's options for the values at fault.
+void check_config_options(const FrameConfig& config, DeviceMode devices = DeviceMode::one);
 
 // A report is written after the work; a folder that is not there must stop the run before it.
 void check_report_destination(const std::filesystem::path& report);

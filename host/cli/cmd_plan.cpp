@@ -1,5 +1,5 @@
-// `parashade plan SCENE`: the planner's per-unit load for a scene without rendering (host only: vertex
-// stage, setup and binning as render does them, then make_plan for each strategy and U asked for).
+// `parashade plan SCENE`: the planner's per-unit load for a scene without rendering (host only: the frame
+// prepared as render prepares it, then make_plan for each strategy and U asked for).
 #include <cstdio>
 #include <iostream>
 
@@ -7,12 +7,10 @@
 
 #include "cli_args.hpp"
 #include "commands.hpp"
-#include "parashade/binning.hpp"
 #include "parashade/errors.hpp"
-#include "parashade/geometry_stage.hpp"
+#include "parashade/frame_pipeline.hpp"
 #include "parashade/planner.hpp"
 #include "parashade/report.hpp"
-#include "parashade/setup.hpp"
 #include "plan_cli.hpp"
 
 namespace parashade::cli {
@@ -27,35 +25,34 @@ struct PlanCommandArgs {
 
 int run_plan(const PlanCommandArgs& a) {
   const auto size = parse_size(a.size);
-  if (a.tile != 16 && a.tile != 32 && a.tile != 64) throw UsageError("--tile must be 16, 32 or 64");
-  const UnitConfig unit = a.units.empty() ? UnitConfig{} : parse_units(a.units);
+  // The frame as render prepares it for Gouraud (the planner costs the unit's spans); each plan below.
+  FrameConfig config;
+  config.tile_size = a.tile;
+  if (!a.units.empty()) config.units = parse_units(a.units);
+  const UnitConfig unit = config.unit();
   const std::vector<PlanOptions> list = plan_option_list(a.plan);
+  for (const PlanOptions& o : list) {
+    config.plan = o;
+    check_config_options(config);
+  }
+  config.plan.reset();
   if (!a.report.empty()) check_report_destination(a.report);
   const Scene scene = load_scene_at(a.scene, size, a.size);
 
-  ScreenGeometry g;
-  build_screen_geometry(scene, {Method::gouraud, false}, g);
-  const std::size_t n = g.triangles.size();
-  std::vector<TriangleGeometry> tris(n);
-  std::vector<float> attrs(n * attribute_floats(Method::gouraud));
-  setup_triangles(g, Method::gouraud, tris.data(), attrs.data());
-  Binner binner;
-  binner.count(tris.data(), n, scene.width, scene.height, a.tile);
-  std::vector<std::uint32_t> tile_list(binner.entries());
-  binner.fill(tile_list.data());
-  const TileBins bins{binner.tile_start().data(), tile_list.data(), binner.tiles_x(), binner.tiles_y(), a.tile};
-
+  FramePipeline pipeline;
+  const PreparedFrame& frame = pipeline.prepare_frame(scene, config);
+  const std::size_t n = frame.records;
   std::printf("%s: %dx%d, %zu screen triangles, %zu bin entries, tile %d, unit %s\n", scene.name.c_str(), scene.width,
-              scene.height, n, tile_list.size(), a.tile, unit_name(unit).c_str());
+              scene.height, n, frame.bin_entries(), a.tile, unit_name(unit).c_str());
   nlohmann::json plans = nlohmann::json::array();
   for (const PlanOptions& o : list) {
-    const Plan plan = make_plan(tris.data(), n, bins, unit, o);
+    const Plan plan = make_plan(frame.arrays.triangles, n, frame.bins(), unit, o);
     print_plan(plan.report, a.per_unit);
     plans.push_back(to_json(plan.report));
   }
   if (!a.report.empty()) {
     const nlohmann::json report = {{"scene", scene.name}, {"scene_file", a.scene}, {"width", scene.width},
-                                   {"height", scene.height}, {"screen_triangles", n}, {"bin_entries", tile_list.size()},
+                                   {"height", scene.height}, {"screen_triangles", n}, {"bin_entries", frame.bin_entries()},
                                    {"unit", unit_name(unit)}, {"plans", plans}};
     write_text_atomically(a.report, report.dump(2) + "\n");
   }
@@ -69,7 +66,7 @@ Command add_plan_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("plan", "Print the planner's per-unit load for a scene (modeled clocks), without rendering");
   cmd->add_option("scene", a->scene, "Scene file (.json) or mesh (.obj .off .ply .stl)")->required();
   cmd->add_option("--size", a->size, "Resolution WIDTHxHEIGHT, overriding the scene's");
-  cmd->add_option("--tile", a->tile, "Screen tile size: 16, 32 or 64")->capture_default_str();
+  cmd->add_option("--tile", a->tile, "Screen tile size: 16, 32 or 64")->capture_default_str()->check(CLI::IsMember({16, 32, 64}));
   cmd->add_option("--units", a->units, "The modeled unit whose clocks are the cost (as render --units); default classic");
   cmd->add_option("--report", a->report, "Write the plans as JSON");
   cmd->add_flag("--per-unit", a->per_unit, "Print every unit's load");

@@ -15,7 +15,6 @@
 #include "parashade/split_renderer.hpp"
 #include "parashade/sub_devices.hpp"
 #include "parashade/combined.hpp"
-#include "parashade/combined_kernel.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/image.hpp"
@@ -84,8 +83,6 @@ int run_render(const RenderArgs& a) {
   options.tile_size = a.tile;
   options.work_items = a.work_items;
   if (method == Method::combined) options.combined = parse_combined(a.method);
-  if (a.highlight_test && method != Method::combined)
-    throw UsageError("--highlight-test is modeled in the combined method (combined:0 is Phong); not in '" + a.method + "'");
   options.combined.highlight_test = a.highlight_test;
   if (a.combined_min_width != -1) {
     if (method != Method::combined) throw UsageError("--combined-min-width needs --method combined:K or combined:auto");
@@ -99,12 +96,7 @@ int run_render(const RenderArgs& a) {
     if (!(a.max_error > 0 && a.max_error <= 255)) throw UsageError("--max-error must be in (0, 255] levels");
     options.combined.max_error = a.max_error;
   }
-  if (!a.triangle_choice.empty()) {
-    if (method != Method::combined)
-      throw UsageError("--triangle-choice chooses between Gouraud and the segments of --method combined:K|auto "
-                       "(combined:0 is Phong); not in '" + a.method + "'");
-    parse_triangle_rule(a.triangle_choice, options.combined);
-  }
+  if (!a.triangle_choice.empty()) parse_triangle_rule(a.triangle_choice, options.combined);
   if (!a.units.empty()) options.units = parse_units(a.units);
   options.arith = parse_arith(a.arith);
   options.division = parse_division(a.division);
@@ -117,6 +109,16 @@ int run_render(const RenderArgs& a) {
   const auto size = parse_size(a.size);
   if (a.frames < 1) throw UsageError("--frames must be at least 1");
   if (a.warmup < 0) throw UsageError("--warmup must not be negative");
+  if (a.work_items < 0) throw UsageError("--work-items must not be negative");
+  // --cu with sub:NAME:N: the units' depth pass spread over the sub-devices; without --cu a device list
+  // or sub-devices take bands of the frame (docs/planner.md).
+  const bool units_on_sub_devices = options.plan && is_sub_device_selector(a.device);
+  check_config_options(options, units_on_sub_devices   ? DeviceMode::unit_sub_devices
+                                : is_device_list(a.device) ? DeviceMode::bands
+                                                         : DeviceMode::one);
+  if (!options.units && options.unit_path() && !a.quiet)
+    std::cerr << "parashade: note: " << (options.arith.fixed ? "--arith " + a.arith : std::string("--coverage dda"))
+              << " runs on the classic unit (--units chooses another)\n";
   Scene scene = load_scene_at(a.scene, size, a.size);
   for (const std::string& w : scene.warnings) std::cerr << "parashade: warning: " << w << "\n";
   // Fail on an unwritable output before the work, not after it.
@@ -124,8 +126,6 @@ int run_render(const RenderArgs& a) {
   check_image_destination(out_path);
   if (!a.report.empty()) check_report_destination(a.report);
 
-  // --cu with sub:NAME:N: the units' depth pass spread over the sub-devices, not bands (docs/planner.md).
-  const bool units_on_sub_devices = options.plan && is_sub_device_selector(a.device);
   if (a.keep_going && units_on_sub_devices)
     throw UsageError("--keep-going drops devices of a split frame; the units of --cu on sub-devices ('" + a.device +
                      "') have no fallback: a failing sub-device ends the run");
@@ -142,7 +142,6 @@ int run_render(const RenderArgs& a) {
   }
   auto device = units_on_sub_devices ? std::move(sub.parent) : open_device(a.device);
   const DeviceInfo& dev = device->info();
-  if (a.work_items < 0) throw UsageError("--work-items must not be negative");
   nlohmann::json tuned = nullptr;
   if (!a.no_tuned && !a.explicit_config && !options.unit_path()) {
     const std::filesystem::path path = a.tune_cache.empty() ? default_tune_cache() : std::filesystem::path(a.tune_cache);
@@ -305,7 +304,7 @@ Command add_render_command(CLI::App& app) {
       ->required();
   cmd->add_option("--method", a->method,
                   "Shading method: flat, gouraud, phong, combined:K (Phong at the ends of 2^K-pixel segments, K = 0..6), "
-                  "combined:auto (K per span from --max-error)")
+                  "combined:auto (K per span from --max-error); which options combine: parashade combinations")
       ->capture_default_str();
   cmd->add_option("--max-error", a->max_error,
                   "combined:auto: error budget in 8-bit levels against Phong (default 1; 0.5 of it is the image's rounding); "

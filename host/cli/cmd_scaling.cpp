@@ -148,14 +148,20 @@ int run_scaling(const ScalingArgs& a) {
   std::vector<UnitConfig> units = parse_unique_list(a.units, "--units", parse_units, unit_name);
   const std::vector<Arithmetic> ariths = parse_unique_list(a.arith, "--arith", parse_arith, arith_name);
   const Method method = parse_method(a.method);
-  if (method == Method::flat) throw UsageError("--method flat has nothing for a unit to interpolate (gouraud or phong)");
-  if (method == Method::phong) {
-    // The extra triangulation copies Gouraud intensities only: left out of the default list, refused when asked for.
-    const auto is_sierpinski = [](const UnitConfig& u) { return u.kind == UnitKind::sierpinski; };
-    if (a.units == kDefaultUnits) units.erase(std::remove_if(units.begin(), units.end(), is_sierpinski), units.end());
-    for (const UnitConfig& u : units)
-      if (is_sierpinski(u)) throw UsageError("--units " + unit_name(u) + " is modeled for --method gouraud only");
-  }
+  // Units the table of combinations refuses with this method (phong: the extra triangulation) are left
+  // out of the default list, and refused when asked for.
+  const auto config_of = [&](const UnitConfig& u, const Arithmetic& ar) {
+    FrameConfig c;
+    c.method = method;
+    c.units = u;
+    c.arith = ar;
+    return c;
+  };
+  const auto refused = [&](const UnitConfig& u) { return find_refusal(combination_of(config_of(u, {}))) != nullptr; };
+  if (a.units == kDefaultUnits && !std::all_of(units.begin(), units.end(), refused))  // flat refuses them all
+    units.erase(std::remove_if(units.begin(), units.end(), refused), units.end());
+  for (const Arithmetic& ar : ariths)
+    for (const UnitConfig& u : units) check_config_options(config_of(u, ar));
   const auto size = parse_size(a.size);
   if (a.frames < 1) throw UsageError("--frames must be at least 1");
   if (a.warmup < 1) throw UsageError("--warmup must be at least 1 (the warm-up frame gives the error figures)");

@@ -39,8 +39,6 @@ std::optional<PlanOptions> plan_options(const PlanArgs& a) {
   PlanOptions o;
   if (!a.units.empty()) o.units = parse_units_count(a.units);
   if (!a.partition.empty()) o.partition = parse_partition(a.partition);
-  if (a.batch < 1) throw UsageError("--batch must be at least 1");
-  if (a.setup_clocks < 0) throw UsageError("--setup-clocks must not be negative");
   o.batch = a.batch;
   o.setup_clocks = a.setup_clocks;
   return o;
@@ -57,8 +55,6 @@ std::vector<PlanOptions> plan_option_list(const PlanArgs& a) {
     parts.clear();
     for (const std::string& p : split_list(a.partition, "--partition")) parts.push_back(parse_partition(p));
   }
-  if (a.batch < 1) throw UsageError("--batch must be at least 1");
-  if (a.setup_clocks < 0) throw UsageError("--setup-clocks must not be negative");
   std::vector<PlanOptions> out;
   for (Partition p : parts)
     for (int u : units) {

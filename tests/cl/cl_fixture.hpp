@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "parashade/device.hpp"
+#include "parashade/renderer.hpp"
 #include "parashade/scene.hpp"
 
 namespace parashade::testing_support {
@@ -18,6 +19,15 @@ inline Device& test_device() {
     return open_device(sel ? sel : "");
   }();
   return *device;
+}
+
+// `method` on screen tiles of `tile` pixels, with the float read-back or not.
+inline RenderOptions render_options(Method method, bool float_output, int tile) {
+  RenderOptions o;
+  o.method = method;
+  o.float_output = float_output;
+  o.tile_size = tile;
+  return o;
 }
 
 // Orthographic camera on +z looking down -z, 1 world unit = 1 pixel, world (x, y) at screen

@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include "cl_fixture.hpp"
-#include "parashade/combined_kernel.hpp"
 #include "parashade/renderer.hpp"
 
 namespace parashade {

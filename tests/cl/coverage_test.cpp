@@ -27,7 +27,7 @@ TEST_P(KernelCoverage, EqualsReferenceOnRandomTriangles) {
   std::mt19937 rng(1234 + c.width + c.tile);
   Scene scene = pixel_scene(c.width, c.height);
   add_object(scene, random_triangles(400, c.width, c.height, c.max_size, rng));
-  Renderer renderer(test_device(), {Method::flat, false, c.tile});
+  Renderer renderer(test_device(), render_options(Method::flat, false, c.tile));
   const std::vector<std::uint32_t> counts = renderer.coverage_counts(scene);
   const Frame frame = renderer.render(scene);
 

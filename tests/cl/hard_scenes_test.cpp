@@ -52,7 +52,7 @@ using PlanarTiling = HardScene;
 // Planar tilings: each pixel of the tiled region once, nothing else (counts in scenes/hard/generate.py).
 TEST_P(PlanarTiling, CoversItsRegionExactlyOnce) {  const Scene scene = hard_scene(GetParam().name);
   for (int tile : {16, 64}) {
-    Renderer renderer(test_device(), {Method::flat, false, tile});
+    Renderer renderer(test_device(), render_options(Method::flat, false, tile));
     const CoverageSummary s = summarize(renderer.coverage_counts(scene));
     EXPECT_EQ(s.covered, GetParam().covered) << "tile " << tile;
     EXPECT_EQ(s.most, 1u) << "tile " << tile << ": some pixel is covered twice";
@@ -61,7 +61,7 @@ TEST_P(PlanarTiling, CoversItsRegionExactlyOnce) {  const Scene scene = hard_sce
 
 TEST_P(HardScene, RendersInFloatAndFixedPointWithinTheErrorBound) {
   const Scene scene = hard_scene(GetParam().name);
-  Renderer renderer(test_device(), {Method::gouraud, true, 16});
+  Renderer renderer(test_device(), render_options(Method::gouraud, true, 16));
   const Frame& frame = renderer.render(scene);
   ASSERT_EQ(frame.image.rgba.size(), std::size_t(scene.width) * scene.height * 4);
   ScreenGeometry geometry;
@@ -101,7 +101,7 @@ TEST(HardScenes, TJunctionCoversTheSamePixelsAsItsOutline) {
   Scene plain = scene;
   plain.objects.clear();
   add_object(plain, outline);
-  Renderer renderer(test_device(), {Method::flat, false, 16});
+  Renderer renderer(test_device(), render_options(Method::flat, false, 16));
   const std::vector<std::uint32_t> t = renderer.coverage_counts(scene);
   const std::vector<std::uint32_t> o = renderer.coverage_counts(plain);
   EXPECT_EQ(summarize(t).most, 1u);
@@ -113,7 +113,7 @@ TEST(HardScenes, TJunctionCoversTheSamePixelsAsItsOutline) {
 // kernel as in the reference, and the image does not depend on tile size or work-items.
 TEST(HardScenes, CoplanarDepthTiesGoToTheEarlierTriangleDeterministically) {
   const Scene scene = hard_scene("coplanar");
-  Renderer reference_renderer(test_device(), {Method::gouraud, false, 16});
+  Renderer reference_renderer(test_device(), render_options(Method::gouraud, false, 16));
   const auto& first = reference_renderer.render(scene).image.rgba;
   const std::vector<std::uint8_t> image(first.begin(), first.end());
   // The overlap [-20, 20] x [-40, 40]: screen columns 108..147, rows 56..135.
@@ -126,7 +126,7 @@ TEST(HardScenes, CoplanarDepthTiesGoToTheEarlierTriangleDeterministically) {
   EXPECT_EQ(red, 40u * 80u) << "the earlier (red) quad must win every tie";
   for (int tile : {32, 64})
     for (int items : {1, 5}) {
-      RenderOptions o{Method::gouraud, false, tile};
+      RenderOptions o = render_options(Method::gouraud, false, tile);
       o.work_items = items;
       Renderer renderer(test_device(), o);
       const auto& rgba = renderer.render(scene).image.rgba;
@@ -139,7 +139,7 @@ TEST(HardScenes, CoplanarDepthTiesGoToTheEarlierTriangleDeterministically) {
 // back faces (the flipped mesh) do.
 TEST(HardScenes, BackFacesAreCulledAndTheClosedSphereIsWatertight) {
   Scene scene = hard_scene("back_faces");
-  Renderer renderer(test_device(), {Method::gouraud, false, 16});
+  Renderer renderer(test_device(), render_options(Method::gouraud, false, 16));
   const auto& rgba = renderer.render(scene).image.rgba;
   const std::vector<std::uint8_t> image(rgba.begin(), rgba.end());
   const std::size_t centre = (std::size_t(scene.height / 2) * scene.width + scene.width / 2) * 4;
@@ -154,7 +154,7 @@ TEST(HardScenes, BackFacesAreCulledAndTheClosedSphereIsWatertight) {
   for (auto& t : flipped.triangles) std::swap(t[1], t[2]);
   for (auto& n : flipped.normals) n = -n;
   back.objects[0].mesh = std::make_shared<const Mesh>(flipped);
-  Renderer counter(test_device(), {Method::flat, false, 16});
+  Renderer counter(test_device(), render_options(Method::flat, false, 16));
   const std::vector<std::uint32_t> f = counter.coverage_counts(front), b = counter.coverage_counts(back);
   EXPECT_GT(summarize(f).covered, 1000u);
   EXPECT_EQ(summarize(f).most, 1u);
@@ -165,7 +165,7 @@ TEST(HardScenes, BackFacesAreCulledAndTheClosedSphereIsWatertight) {
 // pixel of the bottom row and none of the top row, each at most once.
 TEST(HardScenes, TrianglesCrossingTheNearPlaneAreClipped) {
   const Scene scene = hard_scene("near_plane");
-  Renderer renderer(test_device(), {Method::flat, false, 16});
+  Renderer renderer(test_device(), render_options(Method::flat, false, 16));
   const std::vector<std::uint32_t> c = renderer.coverage_counts(scene);
   EXPECT_EQ(summarize(c).most, 1u);
   std::size_t bottom = 0, top = 0;

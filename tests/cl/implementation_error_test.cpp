@@ -26,7 +26,7 @@ struct Rendered {
 };
 
 Rendered render_with_reference(const Scene& scene, Method method) {
-  Renderer renderer(test_device(), {method, true, 16});
+  Renderer renderer(test_device(), render_options(method, true, 16));
   Rendered r{renderer.render(scene), {}, {}};
   build_screen_geometry(scene, {method, true}, r.geometry);
   r.reference = render_reference(scene, r.geometry, method);
@@ -76,7 +76,7 @@ TEST(GouraudKernel, SpanIncrementsEqualConstantIncrement) {
   for (int trial = 0; trial < 20; ++trial) {
     Scene scene = pixel_scene(200, 160);
     add_object(scene, random_triangles(1, 120, 100, 70.0f, rng));
-    Renderer renderer(test_device(), {Method::gouraud, true, 16});
+    Renderer renderer(test_device(), render_options(Method::gouraud, true, 16));
     const Frame f = renderer.render(scene);
     const ScreenGeometry& g = renderer.geometry();
     if (g.triangles.empty()) continue;

@@ -52,7 +52,7 @@ struct Result {
 Result check_closed_mesh(const Mesh& mesh, float scale, int poses, unsigned seed, int tile) {
   auto front = std::make_shared<Mesh>(mesh);
   auto back = std::make_shared<Mesh>(flipped(mesh));
-  Renderer renderer(test_device(), {Method::flat, false, tile});
+  Renderer renderer(test_device(), render_options(Method::flat, false, tile));
   std::mt19937 rng(seed);
   Result r;
   for (int i = 0; i < poses; ++i) {
