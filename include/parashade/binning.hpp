@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "triangle_record.h"
+#include "kernels/triangle_record.h"
 
 namespace parashade {
 

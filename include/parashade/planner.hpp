@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "parashade/units.hpp"
-#include "triangle_record.h"
+#include "kernels/triangle_record.h"
 
 namespace parashade {
 
