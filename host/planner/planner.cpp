@@ -6,6 +6,7 @@
 
 #include "parashade/errors.hpp"
 #include "parashade/parallel.hpp"
+#include "kernels/constants.h"
 
 namespace parashade {
 namespace {
@@ -182,8 +183,9 @@ double PlanReport::imbalance() const {
 
 Plan make_plan(const TriangleGeometry* tris, std::size_t n, const TileBins& bins, const UnitConfig& unit,
                const PlanOptions& o) {
-  if (o.units < 1 || o.units > 4096)
-    throw UsageError("--cu " + std::to_string(o.units) + " is out of range (1..4096 modeled units)");
+  if (o.units < 1 || o.units > MAX_MODELED_UNITS)
+    throw UsageError("--cu " + std::to_string(o.units) + " is out of range (1.." + std::to_string(MAX_MODELED_UNITS) +
+                     " modeled units)");
   if (o.batch < 1) throw UsageError("--batch " + std::to_string(o.batch) + " must be at least 1 triangle");
   if (o.setup_clocks < 0) throw UsageError("setup clocks must not be negative");
   if (unit.kind == UnitKind::sierpinski)

@@ -22,14 +22,15 @@
 #include "parashade/specular_models.hpp"
 #include "parashade/triangle_choice.hpp"
 #include "parashade/units.hpp"
+#include "kernels/constants.h"
 
 namespace parashade {
 
 struct RenderOptions {
   Method method = Method::gouraud;
   bool float_output = false;  // also read back unclamped float RGB (for EXR and exact error figures)
-  int tile_size = 16;         // screen tile edge in pixels: 16, 32 or 64
-  int work_items = 0;         // kernel work-items, each rendering every G-th tile; 0: 16 per compute unit
+  int tile_size = TILE_DEFAULT;  // screen tile edge in pixels: 16, 32 or 64 (kernels/constants.h)
+  int work_items = 0;            // kernel work-items, each rendering every G-th tile; 0: WORK_ITEMS_PER_COMPUTE_UNIT per CU
   // Gouraud through a modeled shading unit (units.hpp): set by `--units`, or classic with a fixed `arith`.
   // Every triangle then goes by whole spans and the frame's modeled clocks are counted.
   std::optional<UnitConfig> units;
