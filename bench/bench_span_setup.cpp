@@ -36,6 +36,7 @@
 
 #include "parashade/setup.hpp"
 #include "parashade/shift_add_division.hpp"
+#include "kernels/constants.h"
 
 namespace parashade {
 namespace {
@@ -120,7 +121,7 @@ struct ReciprocalRule {  // double: 1/k once per span, a product per channel
 
 // The digits m of 1/k (n = 8, rounded) for every span length the frames can hold, looked up per span.
 constexpr int kShiftAddBits = 8;
-constexpr int kMaxSpan = 4096;  // 12-bit pixel addresses
+constexpr int kMaxSpan = MAX_RESOLUTION;  // 12-bit pixel addresses
 const std::vector<std::uint32_t>& shift_add_digits() {
   static const std::vector<std::uint32_t> table = [] {
     std::vector<std::uint32_t> t(kMaxSpan + 1, 0);

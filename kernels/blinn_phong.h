@@ -6,28 +6,6 @@
 #ifndef PARASHADE_BLINN_PHONG_H
 #define PARASHADE_BLINN_PHONG_H
 
-/* log2(x) for x > 0; -inf below FLT_MIN. PoCL 3.1 calls a scalar log2 lane by lane (20% of a Phong
- * frame); this is x = m 2^e with m in [sqrt(1/2), sqrt(2)) and log2(m) = (2/ln 2) atanh(s),
- * s = (m-1)/(m+1), |s| <= 0.172, by its series to s^9 (truncation < 2e-9): absolute error a few
- * 1e-8, well inside the bound of docs/error-bounds.md. */
-INLINE floatV log2_positive(floatV x) {
-  const intV bits = as_intV(x);
-  intV e = (bits >> 23) - 127;
-  floatV m = as_floatV((bits & 0x007FFFFF) | 0x3F800000);
-  const intV high = isgreater(m, (floatV)1.41421356f); /* -1 where true */
-  m = select(m, m * 0.5f, high);
-  e -= high;
-  const floatV s = (m - 1.0f) / (m + 1.0f), s2 = s * s;
-  const floatV series =
-      s * (2.88539008f + s2 * (0.961796694f + s2 * (0.577078016f + s2 * (0.412198583f + s2 * 0.320598898f))));
-  return select(convert_floatV(e) + series, (floatV)(-INFINITY), isless(x, (floatV)FLT_MIN));
-}
-
-INLINE floatV positive_power(floatV x, float n) {
-  /* max(0,x)^n for n > 0; log2 of 0 is -inf and exp2(-inf) = 0. */
-  return exp2(n * log2_positive(fmax(x, (floatV)0.0f)));
-}
-
 #include "specular_models.h"
 
 /* The specular term only for the lights in `needed` (a bit mask; the highlight-presence unit of SEEDS §8,

@@ -2,6 +2,8 @@
 #ifndef PARASHADE_COMMON_H
 #define PARASHADE_COMMON_H
 
+#include "constants.h"
+
 /* Fault injection for tests: the host defines this for a device named by PARASHADE_FAIL_DEVICE
  * (device.hpp), so that device's builds fail through the real build-failure path. */
 #ifdef PARASHADE_FAIL_BUILD
@@ -15,8 +17,10 @@
  * was 12% of a frame profile as a call), which also stops vectorization across them. */
 #define INLINE inline __attribute__((always_inline))
 
-/* A work-item owns one row segment of VEC pixels; its pixels are the lanes of these vectors. */
-#define VEC 16
+/* A work-item owns one row segment of VEC pixels (constants.h); its pixels are the lanes of these vectors. */
+#if VEC != 16
+#error "the vector types below are 16 lanes wide: VEC must be 16"
+#endif
 typedef float16 floatV;
 typedef int16 intV;
 typedef uint16 uintV;
@@ -41,7 +45,7 @@ INLINE floatV safe_rsqrt(floatV x) { return select((floatV)0.0f, rsqrt(x), isgre
 INLINE uintV to_level(floatV x) { return as_uintV(clamp(x, 0.0f, 255.0f) + 8388608.0f) - 0x4B000000u; }
 
 #ifndef TILE
-#define TILE 16
+#define TILE TILE_DEFAULT
 #endif
 #define SEGMENTS (TILE / VEC)
 

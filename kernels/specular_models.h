@@ -5,6 +5,8 @@
 #ifndef PARASHADE_SPECULAR_MODELS_H
 #define PARASHADE_SPECULAR_MODELS_H
 
+#include "positive_power.h"
+
 #ifndef SPECULAR_MODEL
 #define SPECULAR_MODEL 0
 #endif

@@ -11,6 +11,8 @@
 #ifndef PARASHADE_TRIANGLE_RECORD_H
 #define PARASHADE_TRIANGLE_RECORD_H
 
+#include "constants.h" /* SMALL_EXTENT */
+
 #ifdef __OPENCL_VERSION__
 typedef long ps_long;
 typedef int ps_int;
@@ -34,8 +36,7 @@ typedef struct {
   ps_int flags;                  /* TRIANGLE_SMALL */
 } TriangleGeometry;
 
-#define SMALL_EXTENT 64
-#define TRIANGLE_SMALL 1
+#define TRIANGLE_SMALL 1 /* vertex extent <= SMALL_EXTENT (constants.h) */
 
 /* Per-method attribute records: ATTR_* floats per triangle, indexed like TriangleGeometry. */
 #define FLAT_ATTR_FLOATS 4      /* r, g, b (levels), unused */

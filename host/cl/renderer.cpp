@@ -132,7 +132,7 @@ TileKernelArgs Renderer::tile_args(const cl::Buffer& tile_start, const cl::Buffe
 }
 
 int Renderer::work_items(int tiles) const {
-  const int wanted = options_.work_items > 0 ? options_.work_items : 16 * std::max(1, device_.info().compute_units);
+  const int wanted = options_.work_items > 0 ? options_.work_items : WORK_ITEMS_PER_COMPUTE_UNIT * std::max(1, device_.info().compute_units);
   return std::max(1, std::min(tiles, wanted));
 }
 

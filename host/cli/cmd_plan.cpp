@@ -18,7 +18,7 @@ namespace {
 
 struct PlanCommandArgs {
   std::string scene, size, units, report;
-  int tile = 16;
+  int tile = TILE_DEFAULT;
   bool per_unit = false;
   PlanArgs plan;
 };

@@ -31,7 +31,7 @@ namespace {
 struct RenderArgs {
   std::string scene, output, method = "gouraud", device, size, report, units, arith = "float", division = "constant",
               coverage = "centre", specular = "exact", normalize = "exact", triangle_choice;
-  int frames = 5, warmup = 1, tile = 16, work_items = 0;
+  int frames = 5, warmup = 1, tile = TILE_DEFAULT, work_items = 0;
   double max_error = 0;  // 0: not given
   int combined_min_width = -1;
   bool float_output = false, no_error = false, quiet = false, highlight_test = false;
@@ -86,8 +86,8 @@ int run_render(const RenderArgs& a) {
   options.combined.highlight_test = a.highlight_test;
   if (a.combined_min_width != -1) {
     if (method != Method::combined) throw UsageError("--combined-min-width needs --method combined:K or combined:auto");
-    if (a.combined_min_width < 0 || a.combined_min_width > 4096)
-      throw UsageError("--combined-min-width must be 0..4096 pixels");
+    if (a.combined_min_width < 0 || a.combined_min_width > kMaxResolution)
+      throw UsageError("--combined-min-width must be 0.." + std::to_string(kMaxResolution) + " pixels");
     options.combined.min_width = a.combined_min_width;
   }
   if (a.max_error != 0) {

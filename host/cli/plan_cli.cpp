@@ -4,6 +4,7 @@
 
 #include "cli_args.hpp"
 #include "parashade/errors.hpp"
+#include "kernels/constants.h"
 
 namespace parashade::cli {
 namespace {
@@ -12,10 +13,10 @@ int parse_units_count(const std::string& text) {
   try {
     std::size_t used = 0;
     const int u = std::stoi(text, &used);
-    if (used == text.size() && u >= 1 && u <= 4096) return u;
+    if (used == text.size() && u >= 1 && u <= MAX_MODELED_UNITS) return u;
   } catch (const std::exception&) {
   }
-  throw UsageError("--cu '" + text + "' is not a number of modeled units (1..4096)");
+  throw UsageError("--cu '" + text + "' is not a number of modeled units (1.." + std::to_string(MAX_MODELED_UNITS) + ")");
 }
 
 }  // namespace

@@ -5,7 +5,8 @@
 namespace parashade {
 
 void check_frame_config(const FrameConfig& c, DeviceMode devices) {
-  if (c.tile_size != 16 && c.tile_size != 32 && c.tile_size != 64)
+  // Powers of two from one vector row (TILE_MIN) to TILE_MAX: 16, 32 or 64.
+  if (c.tile_size < TILE_MIN || c.tile_size > TILE_MAX || (c.tile_size & (c.tile_size - 1)) != 0)
     throw UsageError("tile size " + std::to_string(c.tile_size) + " is not supported (16, 32 or 64)");
   if (c.plan) check_plan_options(*c.plan);
   ValueNames names;

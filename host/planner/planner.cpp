@@ -6,6 +6,7 @@
 
 #include "parashade/errors.hpp"
 #include "parashade/parallel.hpp"
+#include "kernels/constants.h"
 
 namespace parashade {
 namespace {
@@ -181,8 +182,9 @@ double PlanReport::imbalance() const {
 }
 
 void check_plan_options(const PlanOptions& o) {
-  if (o.units < 0 || o.units > 4096)
-    throw UsageError("modeled units " + std::to_string(o.units) + " out of range (1..4096; 0: the device's compute units)");
+  if (o.units < 0 || o.units > MAX_MODELED_UNITS)
+    throw UsageError("modeled units " + std::to_string(o.units) + " out of range (1.." +
+                     std::to_string(MAX_MODELED_UNITS) + "; 0: the device's compute units)");
   if (o.batch < 1) throw UsageError("batch " + std::to_string(o.batch) + " must be at least 1 triangle");
   if (o.setup_clocks < 0) throw UsageError("setup clocks " + std::to_string(o.setup_clocks) + " must not be negative");
 }

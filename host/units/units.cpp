@@ -3,25 +3,29 @@
 #include <regex>
 
 #include "parashade/errors.hpp"
+#include "kernels/constants.h"
 
 namespace parashade {
 
 UnitConfig parse_units(const std::string& spec) {
-  const std::string valid =
-      " (valid: classic, counter, interleave:M[:own] with M = 1..16, segment:P with P = 2, 4, ..., 64, "
-      "sierpinski[:D][:even|:odd|:touch|:overlap][:seal] with D = 1..3)";
+  const std::string valid = " (valid: classic, counter, interleave:M[:own] with M = 1.." +
+                            std::to_string(MAX_INTERLEAVE_LANES) + ", segment:P with P = 2, 4, ..., " +
+                            std::to_string(MAX_SEGMENT_LANES) +
+                            ", sierpinski[:D][:even|:odd|:touch|:overlap][:seal] with D = 1..3)";
   if (spec == "classic") return {UnitKind::classic, 1, false};
   if (spec == "counter") return {UnitKind::counter, 2, false};
   std::smatch m;
   if (std::regex_match(spec, m, std::regex(R"(interleave:(\d{1,3})(:own)?)"))) {
     const int lanes = std::stoi(m[1]);
-    if (lanes < 1 || lanes > 16) throw UsageError("--units '" + spec + "': M = " + m[1].str() + " is not in 1..16");
+    if (lanes < 1 || lanes > MAX_INTERLEAVE_LANES)
+      throw UsageError("--units '" + spec + "': M = " + m[1].str() + " is not in 1.." + std::to_string(MAX_INTERLEAVE_LANES));
     return {UnitKind::interleave, lanes, m[2].matched};
   }
   if (std::regex_match(spec, m, std::regex(R"(segment:(\d{1,3}))"))) {
     const int lanes = std::stoi(m[1]);
-    if (lanes < 2 || lanes > 64 || (lanes & (lanes - 1)) != 0)
-      throw UsageError("--units '" + spec + "': P = " + m[1].str() + " is not a power of two in 2..64");
+    if (lanes < 2 || lanes > MAX_SEGMENT_LANES || (lanes & (lanes - 1)) != 0)
+      throw UsageError("--units '" + spec + "': P = " + m[1].str() + " is not a power of two in 2.." +
+                       std::to_string(MAX_SEGMENT_LANES));
     return {UnitKind::segment, lanes, false};
   }
   if (std::regex_match(spec, m, std::regex(R"(sierpinski(:(\d{1,2}))?(:(even|odd|touch|overlap))?(:seal)?)"))) {

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "triangle_record.h"
+#include "kernels/triangle_record.h"
 
 namespace parashade {
 
@@ -30,7 +30,7 @@ class Binner {
 
   const TriangleGeometry* tris_ = nullptr;
   std::size_t n_ = 0;
-  int tiles_x_ = 0, tiles_y_ = 0, tile_size_ = 16;
+  int tiles_x_ = 0, tiles_y_ = 0, tile_size_ = TILE_DEFAULT;
   std::vector<std::size_t> chunk_first_;        // first triangle of each chunk (+ end)
   std::vector<std::uint32_t> chunk_cursor_;     // per chunk x tile: where the chunk's entries of the tile start
   std::vector<std::uint32_t> start_;

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "parashade/screen_geometry.hpp"
-#include "fixed_point.h"
-#include "triangle_record.h"
+#include "kernels/fixed_point.h"
+#include "kernels/triangle_record.h"
 
 namespace parashade {
 

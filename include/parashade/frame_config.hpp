@@ -13,12 +13,13 @@
 #include "parashade/planner.hpp"
 #include "parashade/specular_models.hpp"
 #include "parashade/units.hpp"
+#include "kernels/constants.h"
 
 namespace parashade {
 
 struct FrameConfig {
   Method method = Method::gouraud;
-  int tile_size = 16;  // screen tile edge in pixels: 16, 32 or 64
+  int tile_size = TILE_DEFAULT;  // screen tile edge in pixels: 16, 32 or 64 (kernels/constants.h)
   // A modeled shading unit (units.hpp): set by `--units`, or classic with a fixed `arith` or DDA coverage
   // (with_implied_unit). Every triangle then goes by whole spans and the frame's modeled clocks are counted.
   std::optional<UnitConfig> units;

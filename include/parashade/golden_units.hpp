@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "parashade/units.hpp"
-#include "fixed_point.h"
-#include "sierpinski_leaf.h"
+#include "kernels/fixed_point.h"
+#include "kernels/sierpinski_leaf.h"
 
 namespace parashade {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "parashade/units.hpp"
-#include "triangle_record.h"
+#include "kernels/triangle_record.h"
 
 namespace parashade {
 
@@ -75,7 +75,7 @@ struct UnitLoad {
 struct PlanReport {
   Partition partition = Partition::lpt;
   int units = 1;
-  int tile_size = 16;
+  int tile_size = TILE_DEFAULT;
   int batch = 64;
   int setup_clocks = 1;
   std::vector<UnitLoad> load;  // per unit
@@ -104,7 +104,7 @@ struct Plan {
 struct TileBins {
   const std::uint32_t* tile_start = nullptr;  // tiles + 1 entries
   const std::uint32_t* tile_list = nullptr;
-  int tiles_x = 0, tiles_y = 0, tile_size = 16;
+  int tiles_x = 0, tiles_y = 0, tile_size = TILE_DEFAULT;
   int tiles() const { return tiles_x * tiles_y; }
 };
 

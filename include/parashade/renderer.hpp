@@ -14,6 +14,7 @@
 #include "parashade/frame_stats.hpp"
 #include "parashade/image.hpp"
 #include "parashade/scene.hpp"
+#include "kernels/constants.h"
 
 namespace parashade {
 
@@ -23,7 +24,7 @@ struct TileKernelArgs;  // host/cl/tile_kernel_args.hpp
 // A frame's configuration (frame_config.hpp) and how the device runs it.
 struct RenderOptions : FrameConfig {
   bool float_output = false;  // also read back unclamped float RGB (for EXR and exact error figures)
-  int work_items = 0;         // kernel work-items, each rendering every G-th tile; 0: 16 per compute unit
+  int work_items = 0;  // kernel work-items, each rendering every G-th tile; 0: WORK_ITEMS_PER_COMPUTE_UNIT per CU
 };
 
 struct Frame {

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "parashade/mesh.hpp"
+#include "kernels/constants.h"
 
 namespace parashade {
 
@@ -69,8 +70,8 @@ struct Scene {
   std::size_t triangle_count() const;
 };
 
-// Largest resolution the 12-bit screen addresses of the sources allow.
-constexpr int kMaxResolution = 4096;
+// Largest resolution the 12-bit screen addresses of the sources allow (kernels/constants.h).
+constexpr int kMaxResolution = MAX_RESOLUTION;
 
 // Loads a JSON scene (see scenes/README.md), or a bare mesh file (.obj .off .ply .stl) framed by a
 // default camera and lit by a default light. Throws InputError naming the file, key or value at fault.

@@ -21,9 +21,11 @@
 
 #include <glm/glm.hpp>
 
+#include "kernels/constants.h"
+
 namespace parashade {
 
-constexpr int kSubpixelBits = 8;
+constexpr int kSubpixelBits = SUBPIXEL_BITS;
 constexpr int kSubpixel = 1 << kSubpixelBits;
 constexpr float kGuardBand = 3.0f;
 

@@ -10,8 +10,8 @@
 #include "parashade/method.hpp"
 #include "parashade/screen_geometry.hpp"
 #include "parashade/triangle_choice.hpp"
-#include "fixed_point.h"
-#include "triangle_record.h"
+#include "kernels/fixed_point.h"
+#include "kernels/triangle_record.h"
 
 namespace parashade {
 

@@ -7,9 +7,9 @@
 
 #include "parashade/screen_geometry.hpp"
 #include "parashade/units.hpp"
-#include "fixed_point.h"
-#include "sierpinski_leaf.h"
-#include "triangle_record.h"
+#include "kernels/fixed_point.h"
+#include "kernels/sierpinski_leaf.h"
+#include "kernels/triangle_record.h"
 
 namespace parashade {
 

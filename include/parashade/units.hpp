@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <string>
 
-#include "span_division.h"
-#include "unit_cost.h"
+#include "kernels/span_division.h"
+#include "kernels/unit_cost.h"
 
 namespace parashade {
 

@@ -13,7 +13,8 @@ namespace parashade::testing_support {
 inline double gouraud_bound(const ScreenGeometry& g) {
   double worst = 0.0;
   for (const glm::uvec3& t : g.triangles) {
-    const glm::dvec2 p[3] = {glm::dvec2(g.xy[t.x]) / 256.0, glm::dvec2(g.xy[t.y]) / 256.0, glm::dvec2(g.xy[t.z]) / 256.0};
+    const glm::dvec2 p[3] = {glm::dvec2(g.xy[t.x]) / double(kSubpixel), glm::dvec2(g.xy[t.y]) / double(kSubpixel),
+                             glm::dvec2(g.xy[t.z]) / double(kSubpixel)};
     const double w = std::max({p[0].x, p[1].x, p[2].x}) - std::min({p[0].x, p[1].x, p[2].x}) + 1.0;
     const double h = std::max({p[0].y, p[1].y, p[2].y}) - std::min({p[0].y, p[1].y, p[2].y}) + 1.0;
     for (int c = 0; c < 3; ++c) {

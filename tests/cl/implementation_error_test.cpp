@@ -81,8 +81,8 @@ TEST(GouraudKernel, SpanIncrementsEqualConstantIncrement) {
     const ScreenGeometry& g = renderer.geometry();
     if (g.triangles.empty()) continue;
     const glm::uvec3 t = g.triangles[0];
-    const glm::dvec2 a = glm::dvec2(g.xy[t.x]) / 256.0, b = glm::dvec2(g.xy[t.y]) / 256.0,
-                     c = glm::dvec2(g.xy[t.z]) / 256.0;
+    const glm::dvec2 a = glm::dvec2(g.xy[t.x]) / double(kSubpixel), b = glm::dvec2(g.xy[t.y]) / double(kSubpixel),
+                     c = glm::dvec2(g.xy[t.z]) / double(kSubpixel);
     std::size_t steps = 0;
     for (int ch = 0; ch < 3; ++ch) {
       const double di = constant_span_increment(a, b, c, g.color[t.x][ch], g.color[t.y][ch], g.color[t.z][ch]);

@@ -21,6 +21,7 @@
 
 #include "cl_fixture.hpp"
 #include "parashade/normalization.hpp"
+#include "kernels/constants.h"
 
 namespace parashade {
 namespace {
@@ -42,7 +43,7 @@ struct Probe {
   std::vector<cl_uint> steps;  // per span: the sequential unit's steps
 };
 
-// The probe kernel on the spans of angle theta (kThetas), `length` pixels each; TILE = 16 (default).
+// The probe kernel on the spans of angle theta (kThetas), `length` pixels each; TILE = TILE_DEFAULT.
 Probe probe(const std::string& options, const std::vector<double>& thetas, int length) {
   Device& dev = test_device();
   Probe p;
@@ -215,7 +216,7 @@ TEST(NormalizeGolden, RecurrenceDifference) {
              "-D NORMALIZE_METHOD=4 -D NORMALIZE_ARCCOS=0 -D NORMALIZE_DIFFERENCE=1 -D NORMALIZE_REANCHOR=64", 64);
 }
 
-// The sequential unit steps from the last anchor at or before each run of TILE = 16 pixels the probe
+// The sequential unit steps from the last anchor at or before each run of TILE_DEFAULT pixels the probe
 // asks for (the render kernel's tiles): its steps per span, counted here from that rule.
 TEST(NormalizeGolden, RecurrenceStepsFromTheAnchor) {
   for (int reanchor : {0, 5, 64}) {
@@ -224,7 +225,8 @@ TEST(NormalizeGolden, RecurrenceStepsFromTheAnchor) {
     for (int length : {1, 2, 3, 16, 17, 40, 4096}) {
       std::uint64_t want = 0;
       const int every = reanchor > 1 ? reanchor : length;
-      for (int run = 0; run < length; run += 16) want += std::min(run + 16, length) - run / every * every;
+      for (int run = 0; run < length; run += TILE_DEFAULT)
+        want += std::min(run + TILE_DEFAULT, length) - run / every * every;
       const Probe p = probe(options, {0.5}, length);
       EXPECT_EQ(p.steps[0], want) << "R " << reanchor << " length " << length;
     }

@@ -1,0 +1,51 @@
+/* Every constant the host (C++) and the kernels (OpenCL C) share, each defined once, with why it has its
+ * value. Plain macros only, so the file is the same text in both languages; it includes nothing. */
+#ifndef PARASHADE_CONSTANTS_H
+#define PARASHADE_CONSTANTS_H
+
+/* Screen format (docs/pipeline.md): positions in 1/2^SUBPIXEL_BITS pixel, as llvmpipe's 8. 8 is the most
+ * that keeps an edge function's per-pixel step (a vertex difference across the guard band, up to
+ * 3 * MAX_RESOLUTION pixels, in sub-pixels, times 2^SUBPIXEL_BITS) below 2^31 (triangle_record.h). */
+#define SUBPIXEL_BITS 8
+
+/* Pixel addresses are 12 bits, as in the sources' hardware (SEEDS §4): resolutions up to
+ * MAX_RESOLUTION x MAX_RESOLUTION, and so spans of at most MAX_RESOLUTION pixels. */
+#define SCREEN_ADDRESS_BITS 12
+#define MAX_RESOLUTION (1 << SCREEN_ADDRESS_BITS)
+
+/* Lanes of the kernels' vectors (common.h's floatV is float16): a work-item shades a row segment of VEC
+ * pixels at once, and finds the spans of VEC rows at once. 16 floats fill an AVX-512 register, and
+ * explicit 16-wide vectors are what PoCL compiles best (DESIGN.md). */
+#define VEC 16
+
+/* Screen tile edge in pixels: 16, 32 or 64 (--tile), the powers of two from TILE_MIN to TILE_MAX. A tile
+ * row is whole VEC-pixel segments (TILE_MIN = VEC); a work-item keeps the tile's depth and colour
+ * (4 * TILE^2 floats) in private memory. The kernels get the size as -D TILE. Default 16: 16-px tiles
+ * beat 64-px ones with many triangles, since every row of a tile tests every triangle binned to it. */
+#define TILE_MIN VEC
+#define TILE_MAX 64
+#define TILE_DEFAULT 16
+
+/* Work-items of the frame kernel per compute unit by default (--work-items 0): PoCL pays a fixed cost per
+ * work-group, so a few work-items walk interleaved tiles instead of one work-group per tile; 16 per
+ * compute unit (32 on the 2-core development machine) cut the kernel by a quarter against one
+ * work-group per tile. */
+#define WORK_ITEMS_PER_COMPUTE_UNIT 16
+
+/* Small triangles (TRIANGLE_SMALL, triangle_record.h): vertex extent at most SMALL_EXTENT pixels both
+ * ways. Their edge functions stay below 2^30 over their box and the 16 pixels beyond it, so the kernels
+ * may evaluate them per pixel in 32 bits (kernels/span.h). */
+#define SMALL_EXTENT 64
+
+/* Limits of the modeled shading units (--units, docs/units.md; --cu, docs/planner.md):
+ * interleave:M, 1 <= M <= MAX_INTERLEAVE_LANES. The code relies on it twice: the kernels split a pixel
+ *   offset by M for interleave:M:own with a float quotient, exact while (i + 1/2) / M stays >= 1/32 away
+ *   from an integer (unit_registers.h), and setup's plane limit leaves room for 16 * dI (setup.hpp);
+ * segment:P, P a power of two in 2..MAX_SEGMENT_LANES: the sources' adder table ends at P = 64 (SEEDS §4);
+ * --cu U, 1 <= U <= MAX_MODELED_UNITS: a bound the planner sets on its per-unit tables (one work list and
+ *   one load entry per unit), not a figure of the sources. */
+#define MAX_INTERLEAVE_LANES 16
+#define MAX_SEGMENT_LANES 64
+#define MAX_MODELED_UNITS 4096
+
+#endif
