@@ -88,12 +88,13 @@ def case_list(mesh_dir):
 
 def deterministic(report):
     """The report without timings, host load, device names or paths: what must not change."""
-    drop_keys = {"device", "devices", "host", "command", "time", "load", "scene_file", "output", "tuned"}
+    drop_keys = {"device", "devices", "host", "command", "time", "load", "scene_file", "output", "tuned", "image"}
 
     def strip(v):
         if isinstance(v, dict):
             return {k: strip(x) for k, x in v.items()
-                    if k not in drop_keys and not k.endswith("_ms") and not k.startswith("timings")
+                    if k not in drop_keys and not k.endswith("_ms") and not k.endswith("per_s")
+                    and not k.startswith("timings")
                     and k not in ("stages_ms", "frames_ms", "per_frame_ms", "samples")}
         if isinstance(v, list):
             return [strip(x) for x in v]
