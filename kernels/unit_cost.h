@@ -14,12 +14,4 @@
  * parallel: one clock), before the span's pixels. */
 #define SPAN_LOAD_CLOCKS 1
 
-/* The host's cost model until the unit table takes it over: each unit's clocks per span. */
-PS_INLINE ps_int span_clocks(int kind, int lanes, ps_int length) {
-  if (kind == UNIT_COUNTER) return counter_span_clocks(lanes, length);
-  if (kind == UNIT_INTERLEAVE) return interleave_span_clocks(lanes, length);
-  if (kind == UNIT_SEGMENT) return segment_span_clocks(lanes, length);
-  return classic_span_clocks(lanes, length); /* classic, and sierpinski's shaded sub-triangle */
-}
-
 #endif

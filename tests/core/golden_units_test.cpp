@@ -4,6 +4,7 @@
 
 #include "parashade/errors.hpp"
 #include "parashade/golden_units.hpp"
+#include "parashade/unit_table.hpp"
 
 namespace parashade {
 namespace {
@@ -91,7 +92,7 @@ TEST(GoldenUnits, ClocksMatchTheCostModelForEveryLength) {
     for (int length = 1; length <= 300; ++length) {
       const SpanTrace t = run_unit(u, kFixed, span(0, 0, 1, u.lanes, length));
       ASSERT_EQ(t.values.size(), std::size_t(length));
-      EXPECT_EQ(t.clocks, std::uint64_t(span_clocks(int(u.kind), u.lanes, length))) << unit_name(u) << " L=" << length;
+      EXPECT_EQ(t.clocks, std::uint64_t(span_clocks(u, length))) << unit_name(u) << " L=" << length;
     }
   }
 }
