@@ -17,12 +17,13 @@
 #include "parashade/errors.hpp"
 #include "parashade/report.hpp"
 #include "parashade/unit_error.hpp"
+#include "parashade/unit_table.hpp"
 
 namespace parashade::cli {
 namespace {
 
 struct UnitErrorArgs {
-  std::string units = "classic,counter,interleave:2,interleave:2:own,interleave:4:own,segment:8";
+  std::string units = unit_specs(&UnitRow::error_study);
   std::string arith = "fixed:12.8";
   std::string lengths = "1,2,3,4,8,16,64,256,1024,4096";
   int trials = 2000;
@@ -188,7 +189,7 @@ int run(const UnitErrorArgs& args) {
   for (const std::string& u : split_list(args.units, "--units")) {
     units.push_back(parse_units(u));
     if (!is_span_unit(units.back()))
-      throw UsageError("--units '" + u + "': the study covers the span units classic, counter, interleave:M[:own], segment:P");
+      throw UsageError("--units '" + u + "': the study covers the span units " + unit_specs_help(true));
   }
   UnitErrorOptions o;
   o.lengths = parse_lengths(args.lengths);
@@ -246,7 +247,7 @@ Command add_unit_error_command(CLI::App& app) {
       "unit-error",
       "Accumulated fixed-point error of the shading units per span length, against our bounds and the source's formulas");
   auto args = std::make_shared<UnitErrorArgs>();
-  cmd->add_option("--units", args->units, "Comma-separated units: classic, counter, interleave:M[:own], segment:P")
+  cmd->add_option("--units", args->units, "Comma-separated units: " + unit_specs_help(true))
       ->capture_default_str();
   cmd->add_option("--arith", args->arith, "Span register format fixed:I.F")->capture_default_str();
   cmd->add_option("--lengths", args->lengths, "Comma-separated span lengths in pixels (1.." + std::to_string(kMaxLength) + ")")
