@@ -198,15 +198,11 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
         const int xl = span_lo[j], xr = span_hi[j];
         if (xl > xr) continue;
         const int length = xr - xl + 1;
-#if UNIT_KIND == UNIT_SIERPINSKI
-        const int costs_clocks = leaves[ti].shaded; /* copies come from the adders in the same clock */
-#else
-        const int costs_clocks = 1;
-#endif
+        const int costs_clocks = unit_span_costs_clocks(&leaves[ti]);
         if (costs_clocks && xl + x0 >= tile_x && xl + x0 < tile_x + TILE) {
           spans += 1;
           span_pixels += (ulong)length;
-          clocks += (ulong)(SPAN_LOAD_CLOCKS + span_clocks(UNIT_KIND, UNIT_LANES, length));
+          clocks += (ulong)(SPAN_LOAD_CLOCKS + unit_span_clocks(length));
         }
         const int sl = max(xl, lo), sr = min(xr, hi);
         if (sl > sr) continue;

@@ -3,7 +3,7 @@
  * the top vertex); every other one is that sub-triangle translated by a whole number of pixels (same
  * orientation) or point-reflected (the middle ones), and its intensities come from the shaded one
  * through one adder each: I(P) = I0(P - D) + offset, or I(P) = offset - I0(C - P).
- * Setup (host/units/sierpinski.cpp) writes one record per sub-triangle; this is the unit's part of it,
+ * Setup (host/units/sierpinski_setup.cpp) writes one record per sub-triangle; this is the unit's part of it,
  * shared by host and kernels. The record's edge functions are the shaded sub-triangle's, mapped, so a
  * copy covers exactly the mapped pixels of the shaded one; its FixedPlanes hold the shaded
  * sub-triangle's planes seen through the same map (value at P = I0(map(P))). */

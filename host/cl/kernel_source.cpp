@@ -12,6 +12,16 @@ const std::map<std::string, std::string>& embedded_kernel_files();  // generated
 
 namespace {
 
+// An include names a file next to the including one (units/counter.h's "classic.h"), or else one in
+// kernels/: the C preprocessor's order (the including file's folder, then the include path), so that the
+// host's compiler and the kernels resolve the same name to the same file.
+std::string resolve(const std::string& from, const std::string& name) {
+  const auto slash = from.rfind('/');
+  if (slash == std::string::npos) return name;
+  const std::string sibling = from.substr(0, slash + 1) + name;
+  return embedded_kernel_files().count(sibling) ? sibling : name;
+}
+
 // PoCL resolves #include against its cache directory, so the host expands includes itself
 // (DESIGN.md). Each file is expanded once; the headers also carry include guards.
 void expand(const std::string& file, std::set<std::string>& seen, std::string& out) {
@@ -29,7 +39,7 @@ void expand(const std::string& file, std::set<std::string>& seen, std::string& o
     if (first != std::string::npos && line.compare(first, 9, "#include ") == 0) {
       const auto open = line.find('"'), close = line.rfind('"');
       if (open != std::string::npos && close > open) {
-        expand(line.substr(open + 1, close - open - 1), seen, out);
+        expand(resolve(file, line.substr(open + 1, close - open - 1)), seen, out);
         out += "#line " + std::to_string(line_no + 1) + " \"" + file + "\"\n";
         continue;
       }

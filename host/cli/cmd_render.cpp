@@ -24,6 +24,7 @@
 #include "parashade/report.hpp"
 #include "parashade/scene.hpp"
 #include "parashade/statistics.hpp"
+#include "parashade/unit_table.hpp"
 
 namespace parashade::cli {
 namespace {
@@ -334,8 +335,7 @@ Command add_render_command(CLI::App& app) {
                   "Kernel work-items, each rendering every N-th tile (0: 16 per compute unit)")
       ->capture_default_str();
   cmd->add_option("--units", a->units,
-                  "Gouraud through a modeled shading unit: classic, counter, interleave:M[:own] (M = 1..16), "
-                  "segment:P (P = 2..64, power of two); reports modeled clocks");
+                  "Gouraud through a modeled shading unit: " + unit_specs_help() + "; reports modeled clocks");
   cmd->add_option("--arith", a->arith, "Span register arithmetic: float, fixed (= fixed:12.12) or fixed:I.F (I >= 9, I + F <= 32)")
       ->capture_default_str();
   cmd->add_option("--div", a->division,

@@ -1,4 +1,4 @@
-// parashade scaling: Gouraud through each modeled shading unit in turn (units.hpp), per unit and span
+// parashade scaling: Gouraud through each modeled shading unit in turn (unit_table.hpp), per unit and span
 // arithmetic the modeled clocks of a frame and the measured frame time on the device, each against the
 // classic one-intensity-per-clock unit in the same arithmetic, and the error against the ideal Gouraud.
 #include <algorithm>
@@ -27,19 +27,19 @@
 #include "parashade/report.hpp"
 #include "parashade/scene.hpp"
 #include "parashade/statistics.hpp"
+#include "parashade/unit_table.hpp"
 #include "parashade/units.hpp"
 
 namespace parashade::cli {
 namespace {
 
-const char* const kDefaultUnits =
-    "classic,counter,interleave:1,interleave:2,interleave:3,interleave:4,interleave:8,interleave:16,"
-    "interleave:2:own,interleave:4:own,segment:2,segment:4,segment:8,segment:16,segment:32,segment:64,"
-    "sierpinski:1:seal,sierpinski:2:seal";
 const char* const kDefaultArith = "fixed:12.12";
 
+// Every unit's sweep (unit_table.hpp).
+std::string default_units() { return unit_specs(&UnitRow::scaling_sweep); }
+
 struct ScalingArgs {
-  std::string scene, units = kDefaultUnits, arith = kDefaultArith, method = "gouraud", size, device, report;
+  std::string scene, units = default_units(), arith = kDefaultArith, method = "gouraud", size, device, report;
   int frames = 5, warmup = 1;
   bool float_output = false, markdown = false, quiet = false;
 };
@@ -158,7 +158,7 @@ int run_scaling(const ScalingArgs& a) {
     return c;
   };
   const auto refused = [&](const UnitConfig& u) { return find_refusal(combination_of(config_of(u, {}))) != nullptr; };
-  if (a.units == kDefaultUnits && !std::all_of(units.begin(), units.end(), refused))  // flat refuses them all
+  if (a.units == default_units() && !std::all_of(units.begin(), units.end(), refused))  // flat refuses them all
     units.erase(std::remove_if(units.begin(), units.end(), refused), units.end());
   for (const Arithmetic& ar : ariths)
     for (const UnitConfig& u : units) check_config_options(config_of(u, ar));
@@ -307,9 +307,8 @@ Command add_scaling_command(CLI::App& app) {
       "over classic in the same arithmetic, and the error against the method's ideal");
   cmd->add_option("scene", a->scene, "Scene file (.json) or mesh (.obj .off .ply .stl)")->required();
   cmd->add_option("--units", a->units,
-                  "Comma-separated units, each as render --units takes it: classic, counter, interleave:M[:own] "
-                  "(M = 1..16), segment:P (P = 2..64, power of two), sierpinski[:D]...; include classic for the "
-                  "speed-ups")
+                  "Comma-separated units, each as render --units takes it: " + unit_specs_help() +
+                      "; include classic for the speed-ups")
       ->capture_default_str();
   cmd->add_option("--method", a->method, "gouraud (intensities through the units) or phong (normal components)")
       ->capture_default_str();

@@ -7,12 +7,13 @@
 #include "parashade/errors.hpp"
 #include "parashade/parallel.hpp"
 #include "kernels/constants.h"
+#include "parashade/unit_table.hpp"
 
 namespace parashade {
 namespace {
 
 std::uint64_t span_cost(const UnitConfig& unit, int length) {
-  return std::uint64_t(SPAN_LOAD_CLOCKS) + std::uint64_t(span_clocks(int(unit.kind), unit.lanes, length));
+  return std::uint64_t(SPAN_LOAD_CLOCKS) + std::uint64_t(span_clocks(unit, length));
 }
 
 // The least loaded unit (ties: lowest index) by a heap of (load, unit).

@@ -1,7 +1,8 @@
 #pragma once
 // Golden models of the shading units: plain C++ that steps each unit's registers clock by clock, as
 // the block diagrams of SEEDS §4 describe (slow, small, obviously right). In fixed point the kernels
-// must reproduce them bit for bit (tests/cl/unit_golden_test.cpp).
+// must reproduce them bit for bit (tests/cl/unit_golden_test.cpp). Each unit's model is in
+// host/units/<unit>.cpp (unit_table.hpp); what they share (the span load, the adder) is here.
 #include <cstdint>
 #include <vector>
 
@@ -30,14 +31,22 @@ struct SpanLoad {
 SpanLoad load_span(const FixedPlanes& p, int c, int xl, int xr, int dy, const UnitConfig& unit, const Arithmetic& a,
                    const SierpinskiLeaf* leaf = nullptr, const SpanDivision& division = {});
 
+// One W-bit adder of a unit: the carry out of the register is lost.
+struct Adder {
+  int width;
+  std::int32_t operator()(std::int32_t a, std::int32_t b) const {
+    return wrap_register(std::uint32_t(a) + std::uint32_t(b), width);
+  }
+};
+
 struct SpanTrace {
   std::vector<std::int32_t> values;  // span register value per pixel, left to right
   std::uint64_t clocks = 0;          // clocks the unit took for the span's pixels (without the load)
 };
 
-// The segment unit's adders as its golden model builds them: the multiples 2..P of dI (even ones are
-// wired shifts of a smaller one, odd ones one adder each), one output adder per lane but the first,
-// and the accumulator that steps the segment base by P*dI.
+// The segment unit's adders as its golden model builds them (host/units/segment.cpp): the multiples
+// 2..P of dI (even ones are wired shifts of a smaller one, odd ones one adder each), one output adder
+// per lane but the first, and the accumulator that steps the segment base by P*dI.
 struct SegmentAdders {
   int multiples = 0, outputs = 0, accumulator = 0;
   int total() const { return multiples + outputs + accumulator; }

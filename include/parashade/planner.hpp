@@ -1,7 +1,7 @@
 #pragma once
 // The host task planner: which modeled shading unit (of U) shades which triangles, by a partition
-// strategy and a cost model from the unit's modeled clocks (kernels/unit_cost.h), and the work lists
-// the kernels run it from. The image never depends on the plan: units resolve depth by the order-free
+// strategy and a cost model from the unit's modeled clocks (unit_table.hpp, shared with the kernels),
+// and the work lists the kernels run it from. The image never depends on the plan: units resolve depth by the order-free
 // key (depth, primitive index) (docs/planner.md), so every strategy and U gives the same bytes.
 #include <cstddef>
 #include <cstdint>

@@ -1,7 +1,8 @@
 #pragma once
-// Setup for the extra-triangulation unit (kernels/sierpinski_leaf.h): vertex parity normalization
-// (the sources' remedy (a) for midpoints off the pixel grid) and the split of every triangle's setup
-// records into its 4^D sub-triangle records.
+// Setup for the extra-triangulation unit (host/units/sierpinski_setup.cpp; its records:
+// kernels/sierpinski_leaf.h; the unit: kernels/units/sierpinski.h, host/units/sierpinski.cpp): vertex
+// parity normalization (the sources' remedy (a) for midpoints off the pixel grid) and the split of every
+// triangle's setup records into its 4^D sub-triangle records.
 #include <cstddef>
 #include <cstdint>
 

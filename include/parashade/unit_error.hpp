@@ -19,8 +19,9 @@ struct ExactSpan {
   int length = 1;
 };
 
-// The units this study covers: classic, counter, interleave:M[:own], segment:P (one span from its
-// own registers; a unit that copies spans of other sub-triangles is not a span accumulator).
+// The units this study covers, those with an error bound: classic, counter, interleave:M[:own],
+// segment:P (one span from its own registers; a unit that copies spans of other sub-triangles is not a
+// span accumulator).
 bool is_span_unit(const UnitConfig& unit);
 
 // The span registers as setup and the line interpolators would hand them to the unit: a FixedPlanes
@@ -37,8 +38,9 @@ struct SpanError {
 // register wrapped around is flagged (its pixels would be off by 2^I levels).
 SpanError measure_span_error(const UnitConfig& unit, const Arithmetic& a, const ExactSpan& s);
 
-// Our register model's bound on |error| at pixel z of a span of `length` pixels, levels. With
-// h = 2^-(F+1) (a register load's rounding) and e = 2^-33 (setup's 32-fraction-bit plane rounding):
+// Our register model's bound on |error| at pixel z of a span of `length` pixels, levels: the unit's own
+// (UnitModel::error_bound, host/units/<unit>.cpp). With h = 2^-(F+1) (a register load's rounding) and
+// e = 2^-33 (setup's 32-fraction-bit plane rounding):
 //   classic, segment:P, interleave:M   (1 + z)(h + e)
 //   counter                             (1 + z)(h + e) left of the middle, else
 //                                       h + L e + (L - 1 - z)(h + e)   (from its own rounded end E)
@@ -48,7 +50,8 @@ double unit_error_bound(const UnitConfig& unit, const Arithmetic& a, int length,
 double unit_error_bound_registers_only(const UnitConfig& unit, const Arithmetic& a, int length, int z);
 
 // The source's printed formula for this unit with V fraction bits and δ0 = 2^-(V+1), or NaN where
-// the source prints none (interleave:M with M > 2). The study takes V = F unless told otherwise.
+// the source prints none (interleave:M with M > 2; the unit's UnitModel::source_formula). The study
+// takes V = F unless told otherwise.
 //   classic, segment:P, interleave:1   δ_K  = δ0 + z·2^-(V+1)
 //   counter ("error split")            δ0 + min(z, L-1-z)·2^-(V+1)
 //   interleave:2, interleave:2:own     δ_KH = δ0 + ⌊z/2⌋·2^-(V+2)

@@ -10,6 +10,7 @@
 
 namespace parashade {
 
+// A unit's id, shared with the kernels (UNIT_KIND; kernels/units/<unit>.h defines it).
 enum class UnitKind {
   classic = UNIT_CLASSIC,
   counter = UNIT_COUNTER,
@@ -37,8 +38,7 @@ struct UnitConfig {
 };
 
 // "classic", "counter", "interleave:M[:own]", "segment:P", "sierpinski[:D][:even|:odd|:touch|:overlap][:seal]"
-// (D = 1, even by default).
-// Throws UsageError naming the value.
+// (D = 1, even by default): each unit parses its own (unit_table.hpp). Throws UsageError naming the value.
 UnitConfig parse_units(const std::string& spec);
 std::string unit_name(const UnitConfig& u);
 const char* sierpinski_grid_name(SierpinskiGrid g);
@@ -67,7 +67,7 @@ struct SpanDivision {
 SpanDivision parse_division(const std::string& spec);
 std::string division_name(const SpanDivision& d);
 
-// Modeled clocks of one frame: every span costs SPAN_LOAD_CLOCKS plus the unit's span_clocks().
+// Modeled clocks of one frame: every span costs SPAN_LOAD_CLOCKS plus the unit's span_clocks (unit_table.hpp).
 // Triangle setup is the host's ("software") work and is timed, not modeled.
 struct ModeledClocks {
   std::uint64_t spans = 0;

@@ -20,6 +20,7 @@
 #include "parashade/renderer.hpp"
 #include "parashade/setup.hpp"
 #include "parashade/sierpinski.hpp"
+#include "parashade/unit_table.hpp"
 
 namespace parashade {
 namespace {
@@ -243,14 +244,14 @@ TEST(PhongUnits, SierpinskiAndFlatAreRefused) {
   EXPECT_THROW(Renderer renderer(test_device(), o), UsageError);
 }
 
-const char* kUnits[] = {"classic",          "counter",          "interleave:1",      "interleave:2",
-                        "interleave:3",     "interleave:4",     "interleave:7",      "interleave:16",
-                        "interleave:2:own", "interleave:3:own", "interleave:16:own", "segment:2",
-                        "segment:4",        "segment:16",       "segment:64",       "sierpinski:1",
-                        "sierpinski:2:odd", "sierpinski:3",     "sierpinski:2:seal", "sierpinski:1:overlap",
-                        "sierpinski:2:touch:seal"};
+// Every unit of the table, in each configuration its row names for the golden tests.
+std::vector<std::string> golden_test_units() {
+  std::vector<std::string> specs;
+  for (const UnitRow& row : unit_table()) specs.insert(specs.end(), row.golden_tests.begin(), row.golden_tests.end());
+  return specs;
+}
 
-class UnitGolden : public ::testing::TestWithParam<const char*> {};
+class UnitGolden : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(UnitGolden, KernelEqualsGoldenModelOnRandomTriangles) {
   std::mt19937 rng(11);
@@ -264,7 +265,7 @@ TEST_P(UnitGolden, KernelEqualsGoldenModelOnRandomTriangles) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Units, UnitGolden, ::testing::ValuesIn(kUnits),
+INSTANTIATE_TEST_SUITE_P(Units, UnitGolden, ::testing::ValuesIn(golden_test_units()),
                          [](const auto& info) {
                            std::string s = info.param;
                            for (char& ch : s) if (ch == ':') ch = '_';

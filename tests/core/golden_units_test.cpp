@@ -4,6 +4,7 @@
 
 #include "parashade/errors.hpp"
 #include "parashade/golden_units.hpp"
+#include "parashade/unit_table.hpp"
 
 namespace parashade {
 namespace {
@@ -83,15 +84,16 @@ TEST(GoldenUnits, AddersWrapAroundTheRegisterWidth) {
   EXPECT_EQ(back.values, (std::vector<std::int32_t>{0, -511}));
 }
 
+// Every unit of the table, in every configuration its golden tests run.
 TEST(GoldenUnits, ClocksMatchTheCostModelForEveryLength) {
-  const UnitConfig units[] = {{UnitKind::classic, 1, false},   {UnitKind::counter, 2, false},
-                              {UnitKind::interleave, 3, false}, {UnitKind::interleave, 16, true},
-                              {UnitKind::segment, 2, false},    {UnitKind::segment, 64, false}};
-  for (const UnitConfig& u : units) {
-    for (int length = 1; length <= 300; ++length) {
-      const SpanTrace t = run_unit(u, kFixed, span(0, 0, 1, u.lanes, length));
-      ASSERT_EQ(t.values.size(), std::size_t(length));
-      EXPECT_EQ(t.clocks, std::uint64_t(span_clocks(int(u.kind), u.lanes, length))) << unit_name(u) << " L=" << length;
+  for (const UnitRow& row : unit_table()) {
+    for (const std::string& spec : row.golden_tests) {
+      const UnitConfig u = parse_units(spec);
+      for (int length = 1; length <= 300; ++length) {
+        const SpanTrace t = run_unit(u, kFixed, span(0, 0, 1, u.lanes, length));
+        ASSERT_EQ(t.values.size(), std::size_t(length));
+        EXPECT_EQ(t.clocks, std::uint64_t(span_clocks(u, length))) << spec << " L=" << length;
+      }
     }
   }
 }
@@ -129,6 +131,38 @@ TEST(RegisterModel, LoadSpanTakesEndsStepAndOwnStepFromThePlane) {
   EXPECT_EQ(s.step, 5);                       // 16/3 = 5.33 -> 5
   EXPECT_EQ(s.own_step, 21);                  // 4 * 16/3 = 21.33 -> 21 (4 * 5 = 20 when shifted)
   EXPECT_EQ(s.length, 7);
+}
+
+// Every row of the unit table: its specs parse to it and its names parse back to the same unit, its spec
+// form is in the error message that lists the valid units, it has a golden model and a cost model, and a
+// unit without parameters has its lanes.
+TEST(UnitTable, EveryRowParsesItsOwnSpecsAndNamesThem) {
+  std::string valid;
+  try {
+    parse_units("no-such-unit");
+  } catch (const UsageError& e) {
+    valid = e.what();
+  }
+  for (const UnitRow& row : unit_table()) {
+    SCOPED_TRACE(row.spec);
+    const UnitModel& model = *row.model;
+    EXPECT_EQ(&unit_row(row.kind), &row);
+    EXPECT_NE(valid.find(row.spec), std::string::npos) << valid;
+    EXPECT_TRUE(model.run && model.span_clocks);
+    EXPECT_EQ(!model.parse, !model.name) << "a unit with parameters both parses and names them";
+    EXPECT_EQ(!model.parse, row.lanes > 0) << "lanes: the row's for a unit without parameters, else its parser's";
+    EXPECT_FALSE(row.golden_tests.empty()) << "no configuration for the golden-model tests";
+    for (const auto* list : {&row.golden_tests, &row.scaling_sweep, &row.error_study}) {
+      for (const std::string& spec : *list) {
+        const UnitConfig u = parse_units(spec);
+        EXPECT_EQ(u.kind, row.kind) << spec;
+        const UnitConfig again = parse_units(unit_name(u));
+        EXPECT_EQ(unit_name(again), unit_name(u)) << spec;
+        EXPECT_EQ(again.lanes, u.lanes) << spec;
+      }
+    }
+    for (const std::string& spec : row.error_study) EXPECT_TRUE(model.error_bound) << spec;
+  }
 }
 
 TEST(UnitSpecs, ParseValidAndNameInvalid) {

@@ -13,6 +13,7 @@
 
 #include "parashade/golden_units.hpp"
 #include "parashade/unit_error.hpp"
+#include "parashade/unit_table.hpp"
 
 namespace parashade {
 namespace {
@@ -149,6 +150,24 @@ TEST(UnitError, StudyReportsTheSameBoundAndNoExcess) {
       EXPECT_EQ(r.max_abs, *std::max_element(r.max_by_z.begin(), r.max_by_z.end()));
       EXPECT_LE(r.mean_abs, r.max_abs_random);
       EXPECT_LE(r.max_abs_random, r.max_abs);
+    }
+  }
+}
+
+// Every span unit of the table, in the configurations its row gives the study: its own bound (the row's,
+// not the one written out above) holds and is no vacuous one, so a unit added to the table is checked
+// here without being listed.
+TEST(UnitError, EveryTableUnitHoldsAndReachesItsOwnBound) {
+  UnitErrorOptions o;
+  o.lengths = {1, 5, 64, 300};
+  o.trials = 200;
+  for (const UnitRow& row : unit_table()) {
+    for (const std::string& spec : row.error_study) {
+      const UnitErrorStudy s = study_unit_error(parse_units(spec), Arithmetic{true, 12, 8}, o);
+      for (const UnitErrorAtLength& r : s.lengths) {
+        EXPECT_EQ(r.bound_exceeded, 0u) << spec << " L = " << r.length;
+        if (r.length >= 64) EXPECT_GT(r.max_abs / r.bound, 0.8) << spec << " L = " << r.length;
+      }
     }
   }
 }

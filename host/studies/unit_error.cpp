@@ -1,3 +1,6 @@
+// The unit-error study (docs/unit-error.md): random and adversarial exact spans through setup's plane
+// registers and each unit's golden model, every pixel against the exact value, next to the unit's own
+// bound and the source's formula (both the unit's row of the unit table).
 #include "parashade/unit_error.hpp"
 
 #include <algorithm>
@@ -7,6 +10,7 @@
 #include <stdexcept>
 
 #include "parashade/setup.hpp"
+#include "parashade/unit_table.hpp"
 
 namespace parashade {
 namespace {
@@ -15,26 +19,12 @@ namespace {
 double half_lsb(const Arithmetic& a) { return std::ldexp(1.0, -(a.frac_bits + 1)); }
 constexpr double kPlaneHalfLsb = 1.0 / double(std::uint64_t(1) << (PLANE_FRAC + 1));
 
+// The unit's own bound (unit_table.hpp) with one register load's rounding h and the plane's e.
 double bound(const UnitConfig& unit, const Arithmetic& a, int length, int z, double e) {
-  const double h = half_lsb(a);
-  switch (unit.kind) {
-    case UnitKind::classic:
-    case UnitKind::segment:
-      return (1.0 + z) * (h + e);
-    case UnitKind::interleave:
-      if (!unit.own_step) return (1.0 + z) * (h + e);
-      {
-        const int m = unit.lanes, k = z / m, j = z % m;
-        return (1.0 + j) * (h + e) + k * (h + m * e);
-      }
-    case UnitKind::counter: {
-      const int left = (length + 1) / 2;  // the left interpolator shades pixels 0 .. ceil(L/2) - 1
-      if (z < left) return (1.0 + z) * (h + e);
-      return h + length * e + (length - 1.0 - z) * (h + e);
-    }
-    default: break;
-  }
-  throw std::invalid_argument("the unit error study covers the span units classic, counter, interleave and segment");
+  const UnitModel& model = *unit_row(unit.kind).model;
+  if (!model.error_bound)
+    throw std::invalid_argument("the unit error study covers the span units " + unit_specs_help(true));
+  return model.error_bound(unit, length, z, half_lsb(a), e);
 }
 
 // SplitMix64: decorrelates (seed, length) into the generator's seed.
@@ -60,10 +50,7 @@ ExactSpan uniform_span(Random& r, int length) {
 
 }  // namespace
 
-bool is_span_unit(const UnitConfig& unit) {
-  return unit.kind == UnitKind::classic || unit.kind == UnitKind::counter || unit.kind == UnitKind::interleave ||
-         unit.kind == UnitKind::segment;
-}
+bool is_span_unit(const UnitConfig& unit) { return unit_row(unit.kind).model->error_bound != nullptr; }
 
 SpanLoad load_exact_span(const ExactSpan& s, const UnitConfig& unit, const Arithmetic& a) {
   FixedPlanes p{};
@@ -99,30 +86,13 @@ double unit_error_bound_registers_only(const UnitConfig& unit, const Arithmetic&
 }
 
 double source_formula(const UnitConfig& unit, int v, int length, int z) {
-  const double d0 = std::ldexp(1.0, -(v + 1)), per_step = d0;  // δ0 = 2^-(V+1), each step 2^-(V+1)
-  switch (unit.kind) {
-    case UnitKind::classic:
-    case UnitKind::segment:
-      return d0 + z * per_step;
-    case UnitKind::counter:
-      return d0 + std::min(z, length - 1 - z) * per_step;
-    case UnitKind::interleave:
-      if (unit.lanes == 1) return d0 + z * per_step;
-      if (unit.lanes == 2) return d0 + (z / 2) * (per_step / 2);
-      return std::numeric_limits<double>::quiet_NaN();
-    default: return std::numeric_limits<double>::quiet_NaN();
-  }
+  const UnitModel& model = *unit_row(unit.kind).model;
+  return model.source_formula ? model.source_formula(unit, v, length, z) : std::numeric_limits<double>::quiet_NaN();
 }
 
 std::string source_formula_name(const UnitConfig& unit) {
-  switch (unit.kind) {
-    case UnitKind::classic:
-    case UnitKind::segment: return "δ_K";
-    case UnitKind::counter: return "δ_K split";
-    case UnitKind::interleave: return unit.lanes == 1 ? "δ_K" : unit.lanes == 2 ? "δ_KH" : "";
-    default: return "";
-  }
-  return "";
+  const UnitModel& model = *unit_row(unit.kind).model;
+  return model.source_formula_name ? model.source_formula_name(unit) : "";
 }
 
 double source_delta_delta(int v, int z) { return 0.75 * z * std::ldexp(1.0, -(v + 1)); }
@@ -165,7 +135,7 @@ UnitErrorStudy study_unit_error(const UnitConfig& unit, const Arithmetic& a, con
   if (!a.fixed) throw std::invalid_argument("the unit error study is for fixed-point arithmetic");
   if (o.trials < 1) throw std::invalid_argument("at least one span per length");
   if (!is_span_unit(unit))
-    throw std::invalid_argument("the unit error study covers the span units classic, counter, interleave and segment");
+    throw std::invalid_argument("the unit error study covers the span units " + unit_specs_help(true));
   if (o.formula_bits < 0) throw std::invalid_argument("V is at least 0");
   const int v = o.formula_bits > 0 ? o.formula_bits : a.frac_bits;
   UnitErrorStudy study{unit, a, v, {}};
