@@ -45,4 +45,14 @@ INLINE uintV to_level(floatV x) { return as_uintV(clamp(x, 0.0f, 255.0f) + 83886
 #endif
 #define SEGMENTS (TILE / VEC)
 
+/* any() of a VEC-lane mask (lanes -1 or 0; the sign bits tested, as any()). PoCL 3.1 turns any() on 16
+ * lanes into a chain of per-lane extracts and branches; OR-ing the halves down to one lane is a few vector
+ * ORs and one test. */
+INLINE int any_lanes(intV m) {
+  const int8 h8 = m.lo | m.hi;
+  const int4 h4 = h8.lo | h8.hi;
+  const int2 h2 = h4.lo | h4.hi;
+  return (h2.x | h2.y) < 0;
+}
+
 #endif

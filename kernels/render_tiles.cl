@@ -104,7 +104,7 @@ INLINE void shade_segment(__global const TriangleGeometry* t, __global const flo
                           ) {
   const floatV frel = convert_floatV(rel);
   const intV pass = depth_test(t, dy, frel, inside, &depth[slot] PLAN_ARGS(px));
-  if (!any(pass)) return;
+  if (!any_lanes(pass)) return;
   floatV sr, sg, sb;
 #if SHADE_SPAN
   shade_pixels_span(attr, dy, frel, span_ptr, xl, xr, &sr, &sg, &sb, lights, materials, viewer);
