@@ -55,4 +55,11 @@ INLINE int any_lanes(intV m) {
   return (h2.x | h2.y) < 0;
 }
 
+/* Read prefetch of the cache line at p (any address space): a hint, no effect on results. */
+#ifdef __clang__
+#define PREFETCH_LINE(p) __builtin_prefetch((p), 0, 3)
+#else
+#define PREFETCH_LINE(p)
+#endif
+
 #endif

@@ -27,6 +27,10 @@
 #endif
 
 #define TILE_VECTORS (TILE * SEGMENTS)
+/* Triangles ahead whose record and attributes the tile loop prefetches. */
+#ifndef PREFETCH_AHEAD
+#define PREFETCH_AHEAD 4
+#endif
 
 /* PLAN_PASS (docs/planner.md): 0 the plain frame; 1 the modeled units' depth pass, each unit walking its
  * own work lists and keeping per pixel the least key (depth, primitive index) by an atomic minimum;
@@ -169,6 +173,17 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
 
   for (uint k = begin; k < end; ++k) {
     const uint ti = tile_tris[k];
+    /* The tile's triangles are scattered in memory and their loads stall: fetch the record and the
+     * attributes (two lines each) PREFETCH_AHEAD triangles ahead. */
+    if (k + PREFETCH_AHEAD < end) {
+      const uint tn = tile_tris[k + PREFETCH_AHEAD];
+      __global const char* const rec = (__global const char*)&tris[tn];
+      __global const char* const att = (__global const char*)(attrs + (size_t)tn * ATTR_FLOATS);
+      PREFETCH_LINE(rec);
+      PREFETCH_LINE(rec + 64);
+      PREFETCH_LINE(att);
+      PREFETCH_LINE(att + 64);
+    }
     __global const TriangleGeometry* t = &tris[ti];
     const int x0 = t->x0, y0 = t->y0;
     const int row_first = max(tile_y, y0), row_last = min(tile_y + TILE - 1, (int)t->y1);
