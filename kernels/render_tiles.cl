@@ -147,6 +147,24 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
   const uint begin = tile_start[tile], end = tile_start[tile + 1];
 #endif
   const int tile_x = (tile % tiles_x) * TILE, tile_y = (tile / tiles_x) * TILE;
+#if PLAN_PASS == 0 && !UNIT_PATH && !SHADE_SPAN && !OUTPUT_FLOAT
+  if (begin == end) {
+    /* No triangle: the background (uncovered) written directly, without the tile's private arrays. */
+    const uintV rgba = to_level((floatV)background.x) | (to_level((floatV)background.y) << 8) |
+                       (to_level((floatV)background.z) << 16);
+    for (int i = 0; i < TILE_VECTORS; ++i) {
+      const int y = tile_y + i / SEGMENTS, x = tile_x + (i % SEGMENTS) * VEC;
+      if (y >= height || x >= width) continue;
+      const size_t at = (size_t)y * width + x;
+      if (x + VEC <= width) {
+        vstoreV(rgba, 0, out_rgba + at);
+      } else {
+        for (int l = 0; l < width - x; ++l) out_rgba[at + l] = rgba.s0;
+      }
+    }
+    continue;
+  }
+#endif
 
   floatV depth[TILE_VECTORS], cr[TILE_VECTORS], cg[TILE_VECTORS], cb[TILE_VECTORS];
   for (int i = 0; i < TILE_VECTORS; ++i) {
