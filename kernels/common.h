@@ -62,4 +62,22 @@ INLINE int any_lanes(intV m) {
 #define PREFETCH_LINE(p)
 #endif
 
+/* A row of VEC frame pixels at p: stored non-temporally (the frame is written once and the kernel never
+ * reads it back, so its lines need not be read in or kept) when p is aligned to the vector, else
+ * ordinarily. FRAME_STORES_DONE orders the non-temporal stores before the work-item ends. */
+INLINE void store_frame_row(uintV v, __global uint* p) {
+#ifdef __clang__
+  if (((size_t)p & (sizeof(uintV) - 1)) == 0) {
+    __builtin_nontemporal_store(v, (__global uintV*)p);
+    return;
+  }
+#endif
+  vstoreV(v, 0, p);
+}
+#if defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
+#define FRAME_STORES_DONE() __builtin_ia32_sfence()
+#else
+#define FRAME_STORES_DONE() mem_fence(CLK_GLOBAL_MEM_FENCE)
+#endif
+
 #endif

@@ -157,7 +157,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
       if (y >= height || x >= width) continue;
       const size_t at = (size_t)y * width + x;
       if (x + VEC <= width) {
-        vstoreV(rgba, 0, out_rgba + at);
+        store_frame_row(rgba, out_rgba + at);
       } else {
         for (int l = 0; l < width - x; ++l) out_rgba[at + l] = rgba.s0;
       }
@@ -350,7 +350,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
     const uintV rgba = to_level(cr[i]) | (to_level(cg[i]) << 8) | (to_level(cb[i]) << 16) | covered;
 #endif
     if (x + VEC <= width) {
-      vstoreV(rgba, 0, out_rgba + at);
+      store_frame_row(rgba, out_rgba + at);
     } else {
       uint lanes[VEC];
       vstoreV(rgba, 0, lanes);
@@ -381,4 +381,5 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
   tile_clocks[3 * tile + 2] = clocks;
 #endif
   }
+  FRAME_STORES_DONE();
 }
