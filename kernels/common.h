@@ -49,4 +49,39 @@ INLINE uintV to_level(floatV x) { return as_uintV(clamp(x, 0.0f, 255.0f) + 83886
 #endif
 #define SEGMENTS (TILE / VEC)
 
+/* any() of a VEC-lane mask (lanes -1 or 0; the sign bits tested, as any()). PoCL 3.1 turns any() on 16
+ * lanes into a chain of per-lane extracts and branches; OR-ing the halves down to one lane is a few vector
+ * ORs and one test. */
+INLINE int any_lanes(intV m) {
+  const int8 h8 = m.lo | m.hi;
+  const int4 h4 = h8.lo | h8.hi;
+  const int2 h2 = h4.lo | h4.hi;
+  return (h2.x | h2.y) < 0;
+}
+
+/* Read prefetch of the cache line at p (any address space): a hint, no effect on results. */
+#ifdef __clang__
+#define PREFETCH_LINE(p) __builtin_prefetch((p), 0, 3)
+#else
+#define PREFETCH_LINE(p)
+#endif
+
+/* A row of VEC frame pixels at p: stored non-temporally (the frame is written once and the kernel never
+ * reads it back, so its lines need not be read in or kept) when p is aligned to the vector, else
+ * ordinarily. FRAME_STORES_DONE orders the non-temporal stores before the work-item ends. */
+INLINE void store_frame_row(uintV v, __global uint* p) {
+#ifdef __clang__
+  if (((size_t)p & (sizeof(uintV) - 1)) == 0) {
+    __builtin_nontemporal_store(v, (__global uintV*)p);
+    return;
+  }
+#endif
+  vstoreV(v, 0, p);
+}
+#if defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
+#define FRAME_STORES_DONE() __builtin_ia32_sfence()
+#else
+#define FRAME_STORES_DONE() mem_fence(CLK_GLOBAL_MEM_FENCE)
+#endif
+
 #endif

@@ -27,6 +27,10 @@
 #endif
 
 #define TILE_VECTORS (TILE * SEGMENTS)
+/* Triangles ahead whose record and attributes the tile loop prefetches. */
+#ifndef PREFETCH_AHEAD
+#define PREFETCH_AHEAD 4
+#endif
 
 /* PLAN_PASS (docs/planner.md): 0 the plain frame; 1 the modeled units' depth pass, each unit walking its
  * own work lists and keeping per pixel the least key (depth, primitive index) by an atomic minimum;
@@ -104,7 +108,7 @@ INLINE void shade_segment(__global const TriangleGeometry* t, __global const flo
                           ) {
   const floatV frel = convert_floatV(rel);
   const intV pass = depth_test(t, dy, frel, inside, &depth[slot] PLAN_ARGS(px));
-  if (!any(pass)) return;
+  if (!any_lanes(pass)) return;
   floatV sr, sg, sb;
 #if SHADE_SPAN
   shade_pixels_span(attr, dy, frel, span_ptr, xl, xr, &sr, &sg, &sb, lights, materials, viewer);
@@ -143,6 +147,24 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
   const uint begin = tile_start[tile], end = tile_start[tile + 1];
 #endif
   const int tile_x = (tile % tiles_x) * TILE, tile_y = (tile / tiles_x) * TILE;
+#if PLAN_PASS == 0 && !UNIT_PATH && !SHADE_SPAN && !OUTPUT_FLOAT
+  if (begin == end) {
+    /* No triangle: the background (uncovered) written directly, without the tile's private arrays. */
+    const uintV rgba = to_level((floatV)background.x) | (to_level((floatV)background.y) << 8) |
+                       (to_level((floatV)background.z) << 16);
+    for (int i = 0; i < TILE_VECTORS; ++i) {
+      const int y = tile_y + i / SEGMENTS, x = tile_x + (i % SEGMENTS) * VEC;
+      if (y >= height || x >= width) continue;
+      const size_t at = (size_t)y * width + x;
+      if (x + VEC <= width) {
+        store_frame_row(rgba, out_rgba + at);
+      } else {
+        for (int l = 0; l < width - x; ++l) out_rgba[at + l] = rgba.s0;
+      }
+    }
+    continue;
+  }
+#endif
 
   floatV depth[TILE_VECTORS], cr[TILE_VECTORS], cg[TILE_VECTORS], cb[TILE_VECTORS];
   for (int i = 0; i < TILE_VECTORS; ++i) {
@@ -169,6 +191,17 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
 
   for (uint k = begin; k < end; ++k) {
     const uint ti = tile_tris[k];
+    /* The tile's triangles are scattered in memory and their loads stall: fetch the record and the
+     * attributes (two lines each) PREFETCH_AHEAD triangles ahead. */
+    if (k + PREFETCH_AHEAD < end) {
+      const uint tn = tile_tris[k + PREFETCH_AHEAD];
+      __global const char* const rec = (__global const char*)&tris[tn];
+      __global const char* const att = (__global const char*)(attrs + (size_t)tn * ATTR_FLOATS);
+      PREFETCH_LINE(rec);
+      PREFETCH_LINE(rec + 64);
+      PREFETCH_LINE(att);
+      PREFETCH_LINE(att + 64);
+    }
     __global const TriangleGeometry* t = &tris[ti];
     const int x0 = t->x0, y0 = t->y0;
     const int row_first = max(tile_y, y0), row_last = min(tile_y + TILE - 1, (int)t->y1);
@@ -313,7 +346,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
     const uintV rgba = to_level(cr[i]) | (to_level(cg[i]) << 8) | (to_level(cb[i]) << 16) | covered;
 #endif
     if (x + VEC <= width) {
-      vstoreV(rgba, 0, out_rgba + at);
+      store_frame_row(rgba, out_rgba + at);
     } else {
       uint lanes[VEC];
       vstoreV(rgba, 0, lanes);
@@ -344,4 +377,5 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
   tile_clocks[3 * tile + 2] = clocks;
 #endif
   }
+  FRAME_STORES_DONE();
 }
