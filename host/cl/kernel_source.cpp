@@ -12,13 +12,18 @@ const std::map<std::string, std::string>& embedded_kernel_files();  // generated
 
 namespace {
 
-// An include names a file next to the including one (units/counter.h's "classic.h"), or else one in
-// kernels/: the C preprocessor's order (the including file's folder, then the include path), so that the
-// host's compiler and the kernels resolve the same name to the same file.
+// An include names a file relative to the including one (units/counter.h's "classic.h", units/classic.h's
+// "../fixed_point.h"), or else one in kernels/: the C preprocessor's order (the including file's folder,
+// then the include path), so that the host's compiler (which has the repository root, not kernels/, on
+// its path) and the kernels resolve the same name to the same file.
 std::string resolve(const std::string& from, const std::string& name) {
   const auto slash = from.rfind('/');
   if (slash == std::string::npos) return name;
-  const std::string sibling = from.substr(0, slash + 1) + name;
+  std::string sibling = from.substr(0, slash + 1) + name;
+  for (auto up = sibling.find("/../"); up != std::string::npos; up = sibling.find("/../")) {
+    const auto start = sibling.rfind('/', up == 0 ? 0 : up - 1);
+    sibling.erase(start == std::string::npos ? 0 : start + 1, up + 4 - (start == std::string::npos ? 0 : start + 1));
+  }
   return embedded_kernel_files().count(sibling) ? sibling : name;
 }
 

@@ -4,8 +4,8 @@
 #ifndef PARASHADE_UNIT_CLASSIC_H
 #define PARASHADE_UNIT_CLASSIC_H
 
-#include "fixed_point.h"
-#include "span_registers.h"
+#include "../fixed_point.h"
+#include "../span_registers.h"
 
 #define UNIT_CLASSIC 0
 

@@ -6,8 +6,8 @@
 #ifndef PARASHADE_UNIT_INTERLEAVE_H
 #define PARASHADE_UNIT_INTERLEAVE_H
 
-#include "fixed_point.h"
-#include "span_registers.h"
+#include "../fixed_point.h"
+#include "../span_registers.h"
 
 #define UNIT_INTERLEAVE 2
 

@@ -5,7 +5,7 @@
 #ifndef PARASHADE_UNIT_SEGMENT_H
 #define PARASHADE_UNIT_SEGMENT_H
 
-#include "fixed_point.h"
+#include "../fixed_point.h"
 
 #define UNIT_SEGMENT 3
 

@@ -9,7 +9,7 @@
 #define PARASHADE_UNIT_SIERPINSKI_H
 
 #include "classic.h"
-#include "sierpinski_leaf.h"
+#include "../sierpinski_leaf.h"
 
 #define UNIT_SIERPINSKI 4
 
