@@ -19,6 +19,14 @@ void Renderer::plan_frame(const TriangleGeometry* tris, std::size_t n, const std
                           FrameStats& s) {
   const auto t0 = std::chrono::steady_clock::now();
   if (options_.dda_coverage) throw UsageError("--cu does not plan with --coverage dda (its spans come from a row table)");
+  // The units' depth pass keeps each pixel's least key by a 64-bit atomic minimum (plan_key.h): without
+  // the extension its build would fail on an undeclared atom_min; say what is missing instead.
+  std::vector<Device*> pass_devices = unit_devices_;
+  if (pass_devices.empty()) pass_devices.push_back(&device_);
+  for (Device* d : pass_devices)
+    if (d->device().getInfo<CL_DEVICE_EXTENSIONS>().find("cl_khr_int64_extended_atomics") == std::string::npos)
+      throw DeviceError("--cu needs 64-bit atomics (cl_khr_int64_extended_atomics) for the units' depth pass; '" +
+                        d->info().name + "' does not have them");
   PlanOptions o = *options_.plan;
   if (o.units == 0) o.units = std::max(1, device_.info().compute_units);
   const TileBins bins{binner_.tile_start().data(), tile_list, binner_.tiles_x(), binner_.tiles_y(), binner_.tile_size()};
