@@ -6,6 +6,10 @@
 
 #define TILE_VECTORS (TILE * SEGMENTS)
 
+/* 1 in the lanes where `mask` (a comparison's -1) is set. Not -mask: LLVM turns that into a zext of the
+ * comparisons' i1 lanes, which Oclgrind 21.10 widens to 255 (docs/pipeline.md). */
+INLINE uintV ones(intV mask) { return select((uintV)0, (uintV)1, as_uintV(mask)); }
+
 __kernel __attribute__((reqd_work_group_size(1, 1, 1)))
 void coverage_count(__global const TriangleGeometry* tris, __global const uint* tile_start,
                     __global const uint* tile_tris, int tiles_x, __global uint* out_count) {
@@ -26,7 +30,7 @@ void coverage_count(__global const TriangleGeometry* tris, __global const uint* 
         for (int s = 0; s < SEGMENTS; ++s) {
           const intV rel = lane + (tile_x + s * VEC - x0);
           const intV inside = small_triangle_inside(t, rel, py - y0) & (rel >= lo) & (rel <= hi);
-          count[(py - tile_y) * SEGMENTS + s] += convert_uintV(-inside);
+          count[(py - tile_y) * SEGMENTS + s] += ones(inside);
         }
       continue;
     }
@@ -39,7 +43,7 @@ void coverage_count(__global const TriangleGeometry* tris, __global const uint* 
         const int py = block + j;
         for (int s = 0; s < SEGMENTS; ++s) {
           const intV rel = lane + (tile_x + s * VEC - x0);
-          count[(py - tile_y) * SEGMENTS + s] += convert_uintV(-((rel >= span_lo[j]) & (rel <= span_hi[j])));
+          count[(py - tile_y) * SEGMENTS + s] += ones((rel >= span_lo[j]) & (rel <= span_hi[j]));
         }
       }
     }

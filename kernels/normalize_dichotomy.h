@@ -57,22 +57,28 @@ INLINE void lerp_unit(float3 a, float3 b, floatV w, floatV* x, floatV* y, floatV
 INLINE void dichotomy_normals(float3 a, float3 b, intV pixel, int length, floatV* nx, floatV* ny, floatV* nz) {
   const int last = length - 1;
   const float denom = length > 1 ? (float)last : 1.0f;
-  const intV p = clamp(pixel, 0, max(last, 0)); /* lanes outside the span (masked later) stay inside it */
+  /* Integer clamp/min/max take vector bounds: Oclgrind 21.10 reads garbage for the lanes of scalar ones. */
+  const intV p = clamp(pixel, (intV)0, (intV)max(last, 0)); /* lanes outside the span (masked later) stay inside it */
   /* Pixel p >= 1 is pixel i = 1 .. 2^K of the segment from pixel `start`; pixel 0 is a itself. */
-  const intV start = ((max(p, 1) - 1) >> NORMALIZE_SEGMENT_LOG2) << NORMALIZE_SEGMENT_LOG2;
+  const intV start = ((max(p, (intV)1) - 1) >> NORMALIZE_SEGMENT_LOG2) << NORMALIZE_SEGMENT_LOG2;
   const intV i = p - start;
 #if NORMALIZE_EXTRAPOLATE
   const intV whole = (intV)(-1);
 #else
   const intV whole = start + DICHOTOMY_SEGMENT <= last;
 #endif
-  const intV steps = select(max(last - start, 1), (intV)DICHOTOMY_SEGMENT, whole); /* pixels to the segment's end */
+  const intV steps = select(max(last - start, (intV)1), (intV)DICHOTOMY_SEGMENT, whole); /* pixels to the segment's end */
   /* Dyadic points: 2^K for a whole segment, else the next power of two >= steps, times 8 unless exact. */
-  const intV levels = (32 - clz(steps - 1)) + select((intV)3, (intV)0, (steps & (steps - 1)) == 0);
+  /* steps is a power of two when 2^ceil(log2 steps) equals it; (steps & (steps - 1)) == 0 is the same test,
+   * but LLVM turns it into llvm.ctpop, which Oclgrind 21.10 cannot run (docs/pipeline.md). */
+  const intV ceil_log2 = 32 - clz(steps - 1);
+  const intV levels = ceil_log2 + select((intV)3, (intV)0, ((intV)1 << ceil_log2) == steps);
   const intV n = select((intV)1 << levels, (intV)DICHOTOMY_SEGMENT, whole);
   /* Pixel i sits at i/steps of the segment: dyadic point i n / steps, or the nearest one. */
   intV j = i;
-  if (any(!whole)) j = select((2 * i * n + steps) / (2 * steps), i, whole);
+  /* !all(whole), not any(!whole): LLVM makes !whole an xor of the comparison's i1 lanes with true, which
+   * Oclgrind 21.10 sign-extends to 1 instead of -1 (docs/pipeline.md). */
+  if (!all(whole)) j = select((2 * i * n + steps) / (2 * steps), i, whole);
 
   floatV ax, ay, az, bx, by, bz;
   intV zero_a, zero_b;

@@ -20,8 +20,15 @@
 #include "method_phong_units.h"
 #endif
 #endif
-/* Gouraud's fixed-point unit keeps its registers' bits as the colour until the output rounds them. */
+/* Gouraud's fixed-point unit keeps its registers as the colour until the output rounds them, in int
+ * vectors: their bits as floats would be denormals and NaNs, which a device may flush or quieten
+ * (Oclgrind's select() sets the quiet bit of a signalling NaN; docs/pipeline.md). */
 #define REGISTER_COLOUR (UNIT_PATH && FIXED && UNIT_REGISTER_COLOUR)
+#if REGISTER_COLOUR
+typedef intV colourV;
+#else
+typedef floatV colourV;
+#endif
 #ifndef COMBINED
 #define COMBINED 0
 #endif
@@ -70,7 +77,7 @@ INLINE intV depth_test(__global const TriangleGeometry* t, int dy, floatV frel, 
 #endif
 }
 
-INLINE void keep(intV pass, floatV sr, floatV sg, floatV sb, floatV* cr, floatV* cg, floatV* cb) {
+INLINE void keep(intV pass, colourV sr, colourV sg, colourV sb, colourV* cr, colourV* cg, colourV* cb) {
   *cr = select(*cr, sr, pass);
   *cg = select(*cg, sg, pass);
   *cb = select(*cb, sb, pass);
@@ -98,6 +105,7 @@ INLINE void keep(intV pass, floatV sr, floatV sg, floatV sb, floatV* cr, floatV*
 #define SHADE_PIXELS shade_pixels
 #endif
 
+#if !UNIT_PATH
 /* One row segment of VEC pixels: depth test, shade, keep. */
 INLINE void shade_segment(__global const TriangleGeometry* t, __global const float* attr, int dy, intV rel,
                           intV inside, int slot, floatV* depth, floatV* cr, floatV* cg, floatV* cb,
@@ -117,6 +125,7 @@ INLINE void shade_segment(__global const TriangleGeometry* t, __global const flo
 #endif
   keep(pass, sr, sg, sb, &cr[slot], &cg[slot], &cb[slot]);
 }
+#endif
 
 __kernel __attribute__((reqd_work_group_size(1, 1, 1)))
 void render_tiles(__global const TriangleGeometry* tris, __global const float* attrs,
@@ -166,14 +175,15 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
   }
 #endif
 
-  floatV depth[TILE_VECTORS], cr[TILE_VECTORS], cg[TILE_VECTORS], cb[TILE_VECTORS];
+  floatV depth[TILE_VECTORS];
+  colourV cr[TILE_VECTORS], cg[TILE_VECTORS], cb[TILE_VECTORS];
   for (int i = 0; i < TILE_VECTORS; ++i) {
     depth[i] = (floatV)INFINITY;
 #if REGISTER_COLOUR
-    /* Colour holds span registers (their bits): the background as a register value. */
-    cr[i] = as_floatV((intV)(int)(background.x * (1 << FRAC_BITS)));
-    cg[i] = as_floatV((intV)(int)(background.y * (1 << FRAC_BITS)));
-    cb[i] = as_floatV((intV)(int)(background.z * (1 << FRAC_BITS)));
+    /* Colour holds span registers: the background as a register value. */
+    cr[i] = (intV)(int)(background.x * (1 << FRAC_BITS));
+    cg[i] = (intV)(int)(background.y * (1 << FRAC_BITS));
+    cb[i] = (intV)(int)(background.z * (1 << FRAC_BITS));
 #else
     cr[i] = (floatV)background.x;
     cg[i] = (floatV)background.y;
@@ -252,8 +262,8 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
           if (!any(pass)) continue;
 #if REGISTER_COLOUR
           const intV i = rel - xl;
-          keep(pass, as_floatV(unit_register(&regs, 0, i, length)), as_floatV(unit_register(&regs, 1, i, length)),
-               as_floatV(unit_register(&regs, 2, i, length)), &cr[slot], &cg[slot], &cb[slot]);
+          keep(pass, unit_register(&regs, 0, i, length), unit_register(&regs, 1, i, length),
+               unit_register(&regs, 2, i, length), &cr[slot], &cg[slot], &cb[slot]);
 #elif FIXED
           floatV sr_, sg_, sb_;
           shade_unit_normals(&regs, rel - xl, length, attr, dy, frel, &sr_, &sg_, &sb_, lights, materials, viewer);
@@ -336,12 +346,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
     const size_t at = (size_t)y * width + x;
     const uintV covered = convert_uintV(isless(depth[i], (floatV)INFINITY)) & 0xFF000000u;
 #if REGISTER_COLOUR
-    const uintV rgba = register_levels(as_intV(cr[i])) | (register_levels(as_intV(cg[i])) << 8) |
-                       (register_levels(as_intV(cb[i])) << 16) | covered;
-    /* The float image holds the register values in levels (exact while REG_BITS <= 24). */
-    cr[i] = convert_floatV(as_intV(cr[i])) * (1.0f / (1 << FRAC_BITS));
-    cg[i] = convert_floatV(as_intV(cg[i])) * (1.0f / (1 << FRAC_BITS));
-    cb[i] = convert_floatV(as_intV(cb[i])) * (1.0f / (1 << FRAC_BITS));
+    const uintV rgba = register_levels(cr[i]) | (register_levels(cg[i]) << 8) | (register_levels(cb[i]) << 16) | covered;
 #else
     const uintV rgba = to_level(cr[i]) | (to_level(cg[i]) << 8) | (to_level(cb[i]) << 16) | covered;
 #endif
@@ -355,9 +360,16 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
 #if OUTPUT_FLOAT
     const size_t plane = (size_t)width * height;
     float fr[VEC], fg[VEC], fb[VEC];
+#if REGISTER_COLOUR
+    /* The float image holds the register values in levels (exact while REG_BITS <= 24). */
+    vstoreV(convert_floatV(cr[i]) * (1.0f / (1 << FRAC_BITS)), 0, fr);
+    vstoreV(convert_floatV(cg[i]) * (1.0f / (1 << FRAC_BITS)), 0, fg);
+    vstoreV(convert_floatV(cb[i]) * (1.0f / (1 << FRAC_BITS)), 0, fb);
+#else
     vstoreV(cr[i], 0, fr);
     vstoreV(cg[i], 0, fg);
     vstoreV(cb[i], 0, fb);
+#endif
     for (int l = 0; l < min(VEC, width - x); ++l) {
       out_float[at + l] = fr[l];
       out_float[plane + at + l] = fg[l];

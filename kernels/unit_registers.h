@@ -72,8 +72,10 @@ INLINE intV unit_register(const SpanRegisters* r, int c, intV i, int length) {
   return as_intV(v << (32 - REG_BITS)) >> (32 - REG_BITS);
 }
 
-/* The register's 8-bit level: round to nearest (ties up), saturate (register_level on lanes). */
+/* The register's 8-bit level: round to nearest (ties up), saturate (register_level on lanes). The bounds
+ * are vectors: Oclgrind 21.10 reads lanes 1..15 of scalar bounds of an integer clamp/min/max from past
+ * the scalar (garbage levels; docs/pipeline.md, "What a kernel may assume of a device"). */
 INLINE uintV register_levels(intV v) {
-  return as_uintV(clamp((v >> FRAC_BITS) + ((v >> (FRAC_BITS - 1)) & 1), 0, 255));
+  return as_uintV(clamp((v >> FRAC_BITS) + ((v >> (FRAC_BITS - 1)) & 1), (intV)0, (intV)255));
 }
 #endif

@@ -1,6 +1,7 @@
 #!/bin/sh
 # Installs the Debian (bookworm) packages parashade builds, tests and benchmarks with (clang and its
-# runtimes: the libFuzzer targets that scripts/test.sh runs, docs/robustness.md).
+# runtimes: the libFuzzer targets that scripts/test.sh runs, docs/robustness.md; oclgrind: the second
+# OpenCL implementation of the anydevice tests, registered by the tests only, docs/pipeline.md).
 # Runs as root or through sudo; safe to run again. scripts/report.py (plots) also needs python3-matplotlib,
 # which CI does not install.
 set -eu
@@ -10,7 +11,7 @@ export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -q
 $SUDO apt-get install -y -q --no-install-recommends \
     g++ cmake ninja-build pkg-config \
-    pocl-opencl-icd ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers clinfo \
+    pocl-opencl-icd oclgrind ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers clinfo \
     libglm-dev libopenmesh-dev libopenimageio-dev openimageio-tools \
     nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev \
     libegl-dev libgl-dev libgl1-mesa-dri python3 \

@@ -34,6 +34,16 @@ Renderer::Renderer(Device& device, RenderOptions options, std::vector<Device*> u
       throw DeviceError("'" + d->info().name + "' does not share the context of '" + device_.info().name +
                         "': open the units' sub-devices with a shared context (sub_devices.hpp)");
   if (config_.plan && config_.plan->units == 0) config_.plan->units = std::max(1, device_.info().compute_units);
+  // The units' depth pass keeps each pixel's least key by a 64-bit atomic minimum (plan_key.h): without
+  // the extension its build would fail on an undeclared atom_min; say what is missing instead.
+  if (config_.plan) {
+    std::vector<Device*> pass_devices = unit_devices_;
+    if (pass_devices.empty()) pass_devices.push_back(&device_);
+    for (Device* d : pass_devices)
+      if (d->device().getInfo<CL_DEVICE_EXTENSIONS>().find("cl_khr_int64_extended_atomics") == std::string::npos)
+        throw DeviceError("a plan's units need 64-bit atomics (cl_khr_int64_extended_atomics) for their depth pass; '" +
+                          d->info().name + "' does not have them");
+  }
 }
 
 cl::Buffer& Renderer::ensure(cl::Buffer& buffer, std::size_t& capacity, std::size_t bytes, cl_mem_flags flags) {

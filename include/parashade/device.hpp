@@ -46,6 +46,8 @@ class Device {
   // with the device name and the build log. Fault injection for tests: when the environment variable
   // PARASHADE_FAIL_DEVICE is a substring of this device's name (any case), every build fails there
   // (kernels/common.h stops it with #error), through the same path as a real build failure.
+  // PARASHADE_KERNEL_WERROR=1 (the tests): a build whose log has a warning fails (DeviceError);
+  // PARASHADE_WARN_DEVICE=NAME-substring puts a #warning ahead of the source on matching devices.
   cl::Program& program(const std::vector<std::string>& files, const std::string& options);
 
  private:
