@@ -59,8 +59,11 @@ INLINE int any_lanes(intV m) {
   return (h2.x | h2.y) < 0;
 }
 
-/* Read prefetch of the cache line at p (any address space): a hint, no effect on results. */
-#ifdef __clang__
+/* Read prefetch of the cache line at p (any address space): a hint, no effect on results. Only where the
+ * kernel is compiled for the CPU itself (PoCL's CPU devices): a device that interprets or compiles for
+ * another target need not know the intrinsic (Oclgrind refuses the kernel: "Undefined external function
+ * llvm.prefetch"). */
+#if defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
 #define PREFETCH_LINE(p) __builtin_prefetch((p), 0, 3)
 #else
 #define PREFETCH_LINE(p)
@@ -70,7 +73,7 @@ INLINE int any_lanes(intV m) {
  * reads it back, so its lines need not be read in or kept) when p is aligned to the vector, else
  * ordinarily. FRAME_STORES_DONE orders the non-temporal stores before the work-item ends. */
 INLINE void store_frame_row(uintV v, __global uint* p) {
-#ifdef __clang__
+#if defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
   if (((size_t)p & (sizeof(uintV) - 1)) == 0) {
     __builtin_nontemporal_store(v, (__global uintV*)p);
     return;
