@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <cstring>
-#include <sstream>
 #include <utility>
 
 #include <glm/glm.hpp>

@@ -9,8 +9,6 @@
 
 namespace parashade {
 
-nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
 nlohmann::json to_json(const DeviceInfo& d) {
   return {{"index", d.index},          {"platform", d.platform},        {"name", d.name},
           {"vendor", d.vendor},        {"version", d.version},          {"driver", d.driver},

@@ -2,6 +2,8 @@
 // verdicts on our bounds and the source's formulas, the Δδ comparison, and the JSON.
 #include "parashade/unit_error_report.hpp"
 
+#include "parashade/json_number.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -10,7 +12,6 @@ namespace parashade {
 namespace {
 
 // JSON has no NaN: a formula the source does not print is null.
-nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 std::string num(double v, int precision = 6) {
   if (std::isnan(v)) return "-";
@@ -96,8 +97,8 @@ nlohmann::json to_json(const UnitErrorStudy& s, const Totals& t) {
                        {"mean_span_max_uniform", r.mean_span_max},
                        {"bound", r.bound},
                        {"max_over_bound", r.max_abs / r.bound},
-                       {"formula", finite_or_null(r.formula)},
-                       {"worst_over_formula", finite_or_null(r.worst_over_formula)},
+                       {"formula", number_or_null(r.formula)},
+                       {"worst_over_formula", number_or_null(r.worst_over_formula)},
                        {"max_jump", r.max_jump},
                        {"pixels", r.pixels},
                        {"bound_exceeded", r.bound_exceeded},

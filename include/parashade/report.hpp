@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "parashade/device.hpp"
+#include "parashade/json_number.hpp"
 #include "parashade/metrics.hpp"
 #include "parashade/renderer.hpp"
 
@@ -21,8 +22,6 @@ nlohmann::json to_json(const PlanReport& r);  // per-unit load, frame clocks, im
 // With a plan: how the units' depth pass was mapped (U work-items of one device, or which sub-device ran
 // which units and packets) and each share's measured pass time, from `t` (medians or one frame).
 nlohmann::json unit_mapping_json(const FrameStats& s, const FrameTimings& t);
-// A finite number, or null.
-nlohmann::json number_or_null(double v);
 
 // Writes text to `path` whole or not at all (temporary file in the same directory, then rename).
 // Throws InputError naming the path.
