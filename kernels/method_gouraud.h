@@ -3,10 +3,15 @@
  * the row comes from the y increment. Float arithmetic here; the fixed-point units come later. */
 #define ATTR_FLOATS GOURAUD_ATTR_FLOATS
 
+/* At the lanes' row offsets fdy (one value on a row segment, four rows on a stamp). */
+INLINE void shade_pixels_at(__global const float* a, floatV fdy, floatV rel, floatV* r, floatV* g, floatV* b,
+                            __constant float4* lights, __constant float4* materials, float4 viewer) {
+  *r = (a[0] + a[6] * fdy) + a[3] * rel;
+  *g = (a[1] + a[7] * fdy) + a[4] * rel;
+  *b = (a[2] + a[8] * fdy) + a[5] * rel;
+}
+
 INLINE void shade_pixels(__global const float* a, int dy, floatV rel, floatV* r, floatV* g, floatV* b,
                          __constant float4* lights, __constant float4* materials, float4 viewer) {
-  const float fdy = (float)dy;
-  *r = (floatV)(a[0] + a[6] * fdy) + a[3] * rel;
-  *g = (floatV)(a[1] + a[7] * fdy) + a[4] * rel;
-  *b = (floatV)(a[2] + a[8] * fdy) + a[5] * rel;
+  shade_pixels_at(a, (floatV)(float)dy, rel, r, g, b, lights, materials, viewer);
 }

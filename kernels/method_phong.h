@@ -4,13 +4,15 @@
 
 #include "blinn_phong.h"
 
-INLINE floatV plane_row(__global const float* a, int slot, float fdy, floatV rel) {
-  return (floatV)(a[slot] + a[slot + 6] * fdy) + a[slot + 3] * rel;
+/* A plane at the lanes' row offsets fdy and column offsets rel. The rows of a row segment are one value
+ * (a splat, which the compiler folds back to scalar arithmetic); a stamp's lanes lie on four rows. */
+INLINE floatV plane_row(__global const float* a, int slot, floatV fdy, floatV rel) {
+  return (a[slot] + a[slot + 6] * fdy) + a[slot + 3] * rel;
 }
 
 /* Blinn–Phong with a unit normal per lane; the world position from its planes only when a point light or
  * a local viewer needs it. */
-INLINE void shade_unit_normal(__global const float* a, float fdy, floatV rel, floatV nx, floatV ny, floatV nz, floatV* r,
+INLINE void shade_unit_normal(__global const float* a, floatV fdy, floatV rel, floatV nx, floatV ny, floatV nz, floatV* r,
                               floatV* g, floatV* b, __constant float4* lights, __constant float4* materials,
                               float4 viewer) {
 #if NEED_POSITION
@@ -21,9 +23,8 @@ INLINE void shade_unit_normal(__global const float* a, float fdy, floatV rel, fl
   blinn_phong(materials, (int)a[PHONG_MATERIAL_SLOT], lights, viewer, nx, ny, nz, px, py, pz, r, g, b);
 }
 
-INLINE void shade_pixels(__global const float* a, int dy, floatV rel, floatV* r, floatV* g, floatV* b,
-                         __constant float4* lights, __constant float4* materials, float4 viewer) {
-  const float fdy = (float)dy;
+INLINE void shade_pixels_at(__global const float* a, floatV fdy, floatV rel, floatV* r, floatV* g, floatV* b,
+                            __constant float4* lights, __constant float4* materials, float4 viewer) {
   floatV nx = plane_row(a, 0, fdy, rel), ny = plane_row(a, 1, fdy, rel), nz = plane_row(a, 2, fdy, rel);
   const floatV len2 = nx * nx + ny * ny + nz * nz;
   /* A zero interpolated normal (opposite vertex normals) shades with ambient only, never NaN. */
@@ -32,6 +33,11 @@ INLINE void shade_pixels(__global const float* a, int dy, floatV rel, floatV* r,
   ny *= inv;
   nz *= inv;
   shade_unit_normal(a, fdy, rel, nx, ny, nz, r, g, b, lights, materials, viewer);
+}
+
+INLINE void shade_pixels(__global const float* a, int dy, floatV rel, floatV* r, floatV* g, floatV* b,
+                         __constant float4* lights, __constant float4* materials, float4 viewer) {
+  shade_pixels_at(a, (floatV)(float)dy, rel, r, g, b, lights, materials, viewer);
 }
 
 #if NORMALIZE_METHOD
@@ -68,6 +74,6 @@ INLINE void shade_pixels_span(__global const float* a, int dy, floatV rel, const
   }
   floatV nx, ny, nz;
   span_pixel_normals(s, convert_intV(rel) - xl, xr - xl + 1, &nx, &ny, &nz);
-  shade_unit_normal(a, (float)dy, rel, nx, ny, nz, r, g, b, lights, materials, viewer);
+  shade_unit_normal(a, (floatV)(float)dy, rel, nx, ny, nz, r, g, b, lights, materials, viewer);
 }
 #endif

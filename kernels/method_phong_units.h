@@ -16,7 +16,7 @@ INLINE void shade_unit_normals(const SpanRegisters* regs, intV i, int length, __
   nx *= inv;
   ny *= inv;
   nz *= inv;
-  shade_unit_normal(a, (float)dy, rel, nx, ny, nz, r, g, b, lights, materials, viewer);
+  shade_unit_normal(a, (floatV)(float)dy, rel, nx, ny, nz, r, g, b, lights, materials, viewer);
 }
 
 #endif

@@ -8,7 +8,10 @@
  * The method (method_*.h, chosen by the host) supplies shade_pixels().
  * UNIT_PATH = 1 (Gouraud or Phong through a modeled unit, unit_registers.h): every triangle is walked by
  * whole spans, each span's registers come from its full extent, and the tile that holds a span's
- * left pixel counts its modeled clocks into tile_clocks (spans, pixels, clocks per tile). */
+ * left pixel counts its modeled clocks into tile_clocks (spans, pixels, clocks per tile).
+ * STAMPS = 1 (the plain path only: no unit, combined method, per-span normalization or plan): the tile's
+ * pixels are 4x4 stamps instead of 1xVEC row segments (lane l: row l / 4, column l % 4), so a small
+ * triangle's few pixels fill more of the lanes it shades; the values per pixel are the same. */
 #include "common.h"
 #include "triangle_record.h"
 #include "span.h"
@@ -34,6 +37,17 @@ typedef floatV colourV;
 #endif
 
 #define TILE_VECTORS (TILE * SEGMENTS)
+#ifndef STAMPS
+#define STAMPS 0
+#endif
+#if STAMPS && (PLAN_PASS || UNIT_PATH || COMBINED || SHADE_SPAN || OUTPUT_FLOAT)
+#error "STAMPS: the plain path only"
+#endif
+/* Stamps: STAMP x STAMP pixels, STAMPS_X of them across a tile (TILE_VECTORS in all, as row segments). */
+#define STAMP 4
+#define STAMPS_X (TILE / STAMP)
+#define STAMP_ROW ((intV)(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3))
+#define STAMP_COLUMN ((intV)(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3))
 /* Triangles ahead whose record and attributes the tile loop prefetches. */
 #ifndef PREFETCH_AHEAD
 #define PREFETCH_AHEAD 4
@@ -127,6 +141,42 @@ INLINE void shade_segment(__global const TriangleGeometry* t, __global const flo
 }
 #endif
 
+#if STAMPS
+/* One stamp: columns rel (from the triangle's x0) and rows dy (from its y0) per lane; depth test, shade,
+ * keep. The same operations per pixel as shade_segment's, so the same values. */
+INLINE void shade_stamp(__global const TriangleGeometry* t, __global const float* attr, intV dy, intV rel, intV inside,
+                        int slot, floatV* depth, floatV* cr, floatV* cg, floatV* cb, __constant float4* lights,
+                        __constant float4* materials, float4 viewer) {
+  const floatV frel = convert_floatV(rel), fdy = convert_floatV(dy);
+  const floatV z = (t->z_ref + t->z_ddy * fdy) + t->z_ddx * frel;
+  const intV pass = inside & isless(z, depth[slot]);
+  if (!any_lanes(pass)) return;
+  depth[slot] = select(depth[slot], z, pass);
+  floatV sr, sg, sb;
+  shade_pixels_at(attr, fdy, frel, &sr, &sg, &sb, lights, materials, viewer);
+  keep(pass, sr, sg, sb, &cr[slot], &cg[slot], &cb[slot]);
+}
+
+/* A small triangle's (TRIANGLE_SMALL) coverage of a stamp: small_triangle_inside with a row per lane. */
+INLINE intV small_stamp_inside(__global const TriangleGeometry* t, intV rel, intV dy) {
+  intV inside = (intV)(-1);
+  for (int e = 0; e < 3; ++e) inside &= ((intV)(int)t->edge_c[e] + t->edge_b[e] * dy + t->edge_a[e] * rel) >= 0;
+  return inside;
+}
+#endif
+
+/* VEC pixels of the frame from (x, y) on, those left of the frame's right edge. */
+INLINE void write_frame_segment(uintV rgba, __global uint* out_rgba, int x, int y, int width) {
+  const size_t at = (size_t)y * width + x;
+  if (x + VEC <= width) {
+    store_frame_row(rgba, out_rgba + at);
+  } else {
+    uint lanes[VEC];
+    vstoreV(rgba, 0, lanes);
+    for (int l = 0; l < width - x; ++l) out_rgba[at + l] = lanes[l];
+  }
+}
+
 __kernel __attribute__((reqd_work_group_size(1, 1, 1)))
 void render_tiles(__global const TriangleGeometry* tris, __global const float* attrs,
                   __global const uint* tile_start, __global const uint* tile_tris,
@@ -197,7 +247,11 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
   ulong span_setups = 0, span_fallbacks = 0, span_steps = 0;
 #endif
   const intV lane = LANE_INDEX;
+#if STAMPS
+  int span_lo[TILE + VEC], span_hi[TILE + VEC]; /* per row of the tile (and VEC - 1 past it) */
+#else
   int span_lo[VEC], span_hi[VEC];
+#endif
 
   for (uint k = begin; k < end; ++k) {
     const uint ti = tile_tris[k];
@@ -276,6 +330,55 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
         }
       }
     }
+#elif STAMPS
+    {
+      const int sy_first = (row_first - tile_y) / STAMP, sy_last = (row_last - tile_y) / STAMP;
+      if (t->flags & TRIANGLE_SMALL) {
+        /* Few pixels: every stamp of the box, each pixel's edge functions directly. */
+        const int sx_first = (lo + x0 - tile_x) / STAMP, sx_last = (hi + x0 - tile_x) / STAMP;
+        for (int sy = sy_first; sy <= sy_last; ++sy) {
+          const intV dy = STAMP_ROW + (tile_y + sy * STAMP - y0);
+          const intV rows = (dy >= row_first - y0) & (dy <= row_last - y0);
+          for (int sx = sx_first; sx <= sx_last; ++sx) {
+            const intV rel = STAMP_COLUMN + (tile_x + sx * STAMP - x0);
+            const intV inside = small_stamp_inside(t, rel, dy) & rows & (rel >= lo) & (rel <= hi);
+            shade_stamp(t, attr, dy, rel, inside, sy * STAMPS_X + sx, depth, cr, cg, cb, lights, materials, viewer);
+          }
+        }
+        continue;
+      }
+      /* The spans of the tile's rows, VEC rows at a time, then each stamp's lanes from its four rows. */
+      for (int block = row_first; block <= row_last; block += VEC) {
+        intV lo_v, hi_v;
+        row_spans(t, lane + (block - y0), &lo_v, &hi_v, lo, hi);
+        vstoreV(lo_v, 0, span_lo + (block - tile_y));
+        vstoreV(hi_v, 0, span_hi + (block - tile_y));
+      }
+      for (int sy = sy_first; sy <= sy_last; ++sy) {
+        const int r = sy * STAMP;
+        /* Rows of the stamp outside the triangle's are empty. */
+        int l[STAMP], h[STAMP], left = hi + 1, right = lo - 1;
+        for (int j = 0; j < STAMP; ++j) {
+          const int py = tile_y + r + j;
+          const int in = py >= row_first && py <= row_last;
+          l[j] = in ? span_lo[r + j] : 1;
+          h[j] = in ? span_hi[r + j] : 0;
+          if (l[j] <= h[j]) {
+            left = min(left, l[j]);
+            right = max(right, h[j]);
+          }
+        }
+        if (left > right) continue;
+        const intV lo_s = (intV)(l[0], l[0], l[0], l[0], l[1], l[1], l[1], l[1], l[2], l[2], l[2], l[2], l[3], l[3], l[3], l[3]);
+        const intV hi_s = (intV)(h[0], h[0], h[0], h[0], h[1], h[1], h[1], h[1], h[2], h[2], h[2], h[2], h[3], h[3], h[3], h[3]);
+        const intV dy = STAMP_ROW + (tile_y + r - y0);
+        for (int sx = (left + x0 - tile_x) / STAMP; sx <= (right + x0 - tile_x) / STAMP; ++sx) {
+          const intV rel = STAMP_COLUMN + (tile_x + sx * STAMP - x0);
+          shade_stamp(t, attr, dy, rel, (rel >= lo_s) & (rel <= hi_s), sy * STAMPS_X + sx, depth, cr, cg, cb, lights,
+                      materials, viewer);
+        }
+      }
+    }
 #else
 #if COMBINED
     /* Combined Gouraud/Phong: by whole spans, segment ends counted from each span's left pixel; narrow
@@ -338,26 +441,44 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
 #endif
   }
 
-#if PLAN_PASS != 1
+#if STAMPS
+  /* Each stamp row of the tile through a private line buffer, so the frame is still written VEC pixels
+   * of a row at a time. */
+  for (int sy = 0; sy < STAMPS_X; ++sy) {
+    uint lines[STAMP][TILE];
+    for (int sx = 0; sx < STAMPS_X; ++sx) {
+      const int i = sy * STAMPS_X + sx;
+      const uintV covered = convert_uintV(isless(depth[i], (floatV)INFINITY)) & 0xFF000000u;
+      const uintV rgba = to_level(cr[i]) | (to_level(cg[i]) << 8) | (to_level(cb[i]) << 16) | covered;
+      vstore4(rgba.s0123, 0, &lines[0][sx * STAMP]);
+      vstore4(rgba.s4567, 0, &lines[1][sx * STAMP]);
+      vstore4(rgba.s89ab, 0, &lines[2][sx * STAMP]);
+      vstore4(rgba.scdef, 0, &lines[3][sx * STAMP]);
+    }
+    for (int j = 0; j < STAMP; ++j) {
+      const int y = tile_y + sy * STAMP + j;
+      if (y >= height) break;
+      for (int seg = 0; seg < SEGMENTS; ++seg) {
+        const int x = tile_x + seg * VEC;
+        if (x >= width) break;
+        write_frame_segment(vloadV(0, &lines[j][seg * VEC]), out_rgba, x, y, width);
+      }
+    }
+  }
+#elif PLAN_PASS != 1
   /* The frame is width x height exactly (no padding), so the host can use it without a copy. */
   for (int i = 0; i < TILE_VECTORS; ++i) {
     const int y = tile_y + i / SEGMENTS, x = tile_x + (i % SEGMENTS) * VEC;
     if (y >= height || x >= width) continue;
-    const size_t at = (size_t)y * width + x;
     const uintV covered = convert_uintV(isless(depth[i], (floatV)INFINITY)) & 0xFF000000u;
 #if REGISTER_COLOUR
     const uintV rgba = register_levels(cr[i]) | (register_levels(cg[i]) << 8) | (register_levels(cb[i]) << 16) | covered;
 #else
     const uintV rgba = to_level(cr[i]) | (to_level(cg[i]) << 8) | (to_level(cb[i]) << 16) | covered;
 #endif
-    if (x + VEC <= width) {
-      store_frame_row(rgba, out_rgba + at);
-    } else {
-      uint lanes[VEC];
-      vstoreV(rgba, 0, lanes);
-      for (int l = 0; l < width - x; ++l) out_rgba[at + l] = lanes[l];
-    }
+    write_frame_segment(rgba, out_rgba, x, y, width);
 #if OUTPUT_FLOAT
+    const size_t at = (size_t)y * width + x;
     const size_t plane = (size_t)width * height;
     float fr[VEC], fg[VEC], fb[VEC];
 #if REGISTER_COLOUR

@@ -37,11 +37,17 @@ KernelVariant kernel_variant(const Scene& s, const RenderOptions& o) {
   v.arith = o.arith;
   v.division = o.division;
   v.dda_coverage = o.dda_coverage;
+  v.stamps = o.stamps;
   return v;
 }
 
 std::vector<std::string> kernel_files(const KernelVariant& v) {
   return {"common.h", "triangle_record.h", method_header(v.method), "render_tiles.cl"};
+}
+
+bool KernelVariant::stamps_apply() const {
+  return stamps && method == Method::phong && !unit_path && !combined && !span_normalize && plan_pass == 0 &&
+         !float_output;
 }
 
 std::string KernelVariant::build_options() const {
@@ -88,6 +94,7 @@ std::string KernelVariant::build_options() const {
         << " -D DDA_COVERAGE=" << (dda_coverage ? 1 : 0)
         << " -D UNIT_REGISTER_COLOUR=" << (method == Method::gouraud ? 1 : 0);
   }
+  if (stamps_apply()) opt << " -D STAMPS=1";
   if (plan_pass == 1) opt << " -D PLAN_PASS=1 -D PLAN_DYNAMIC=" << (plan_dynamic ? "1" : "0");
   if (plan_pass == 2) opt << " -D PLAN_PASS=2";
   return opt.str();

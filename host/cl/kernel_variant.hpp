@@ -32,6 +32,11 @@ struct KernelVariant {
   // planned frames: 1 the units' depth pass, 2 the resolve; dynamic: units pull batches from a counter
   int plan_pass = 0;
   bool plan_dynamic = false;
+  bool stamps = false;  // asked for; used where the kernel has them (stamps_apply)
+
+  // 4x4 stamps: the plain path only (no unit, combined method, per-span normalization, plan or float
+  // read-back), and only for Phong, where they pay (docs/pipeline.md).
+  bool stamps_apply() const;
 
   std::string build_options() const;
 };

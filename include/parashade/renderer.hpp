@@ -25,6 +25,9 @@ struct TileKernelArgs;  // host/cl/tile_kernel_args.hpp
 struct RenderOptions : FrameConfig {
   bool float_output = false;  // also read back unclamped float RGB (for EXR and exact error figures)
   int work_items = 0;  // kernel work-items, each rendering every G-th tile; 0: WORK_ITEMS_PER_COMPUTE_UNIT per CU
+  // The kernel's pixel layout where the frame allows a choice (docs/pipeline.md): 4x4 stamps (true) or
+  // 1x16 row segments. The image is the same either way.
+  bool stamps = true;
 };
 
 struct Frame {

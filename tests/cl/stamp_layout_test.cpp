@@ -1,0 +1,79 @@
+// The kernel's 4x4 stamps (RenderOptions::stamps, Phong's plain path) against its 1x16 row segments: the
+// same pixels are covered and shaded with the same operations, so the images must be byte-identical.
+// The scenes cover what the stamp walk treats apart: small triangles (per-pixel edge tests) and large
+// ones (row spans), tiles of 16, 32 and 64, a frame whose width and height are not multiples of the
+// stamp or the tile, slivers, a fan, near-plane clipping, point lights and a local viewer.
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "cl_fixture.hpp"
+#include "parashade/renderer.hpp"
+#include "parashade/scene.hpp"
+#include "parashade/shapes.hpp"
+
+namespace parashade {
+namespace {
+
+using namespace testing_support;
+
+std::vector<std::uint8_t> render_rgba(const Scene& scene, bool stamps, int tile) {
+  RenderOptions o = render_options(Method::phong, false, tile);
+  o.stamps = stamps;
+  Renderer renderer(test_device(), o);
+  const auto& rgba = renderer.render(scene).image.rgba;
+  return {rgba.begin(), rgba.end()};
+}
+
+void expect_same_image(const Scene& scene, const std::string& what) {
+  for (int tile : {16, 32, 64}) {
+    const auto rows = render_rgba(scene, false, tile), stamps = render_rgba(scene, true, tile);
+    ASSERT_EQ(rows.size(), stamps.size());
+    std::size_t covered = 0;
+    for (std::size_t i = 3; i < rows.size(); i += 4) covered += rows[i] != 0;
+    EXPECT_GT(covered, 0u) << what << ": nothing drawn, nothing compared";
+    std::size_t differ = 0, first = rows.size();
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      if (rows[i] != stamps[i]) {
+        ++differ;
+        first = std::min(first, i);
+      }
+    EXPECT_EQ(differ, 0u) << what << ", tile " << tile << ": first differing byte at pixel " << first / 4 << " (x "
+                          << (first / 4) % scene.width << ", y " << (first / 4) / scene.width << ")";
+  }
+}
+
+Scene scene_file(const std::string& relative) {
+  return load_scene(std::filesystem::path(PARASHADE_SOURCE_DIR) / "scenes" / relative);
+}
+
+TEST(StampLayout, SameImageAsRowSegmentsOnTheProjectScenes) {
+  for (const char* name : {"teapot.json", "sphere.json", "robot.json"}) {
+    Scene s = scene_file(name);
+    s.width = 643;  // not a multiple of 4, 16 or 64: stamps and tiles cut by the frame's edges
+    s.height = 357;
+    expect_same_image(s, name);
+  }
+}
+
+TEST(StampLayout, SameImageAsRowSegmentsOnTheHardScenes) {
+  for (const char* name : {"slivers.json", "fan.json", "big.json", "near_plane.json", "one_pixel.json",
+                           "pixel_centres.json", "t_junction.json"}) {
+    expect_same_image(scene_file(std::string("hard/") + name), name);
+  }
+}
+
+// Many small triangles overlapping in depth, so stamps of different triangles compete per pixel.
+TEST(StampLayout, SameImageAsRowSegmentsOnOverlappingSmallTriangles) {
+  Scene s = pixel_scene(301, 203);
+  for (int k = 0; k < 3; ++k) {
+    auto mesh = std::make_shared<Mesh>(make_sphere(48, 24));
+    for (auto& p : mesh->positions) p = p * glm::vec3(90.0f, 90.0f, 4.0f) + glm::vec3(40.0f * float(k) - 40.0f, 10.0f * float(k), -2.0f * float(k));
+    add_object(s, mesh);
+  }
+  expect_same_image(s, "overlapping spheres");
+}
+
+}  // namespace
+}  // namespace parashade
