@@ -39,8 +39,10 @@
 #include "bench_device.hpp"
 
 #include "parashade/device.hpp"
+#include "parashade/frame_pipeline.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/image.hpp"
+#include "parashade/lane_utilization.hpp"
 #include "parashade/metrics.hpp"
 #include "parashade/reference.hpp"
 #include "parashade/renderer.hpp"
@@ -189,6 +191,12 @@ void parashade_frame(benchmark::State& state, const std::string& case_name, cons
   state.counters["kernel_ms"] = kernel_ms / n;
   state.counters["triangles_after_culling"] = double(last->stats.geometry.triangles_out);
   if (options.unit_path()) state.counters["modeled_clocks"] = double(last->stats.clocks.clocks);
+  if (!options.unit_path() && options.method != Method::combined) {  // the plain path's walk, counted on the host
+    FramePipeline pipeline;
+    const LaneUtilization lanes = lane_utilization(pipeline.prepare_frame(*scene, options));
+    state.counters["lanes_rows"] = lanes.rows();
+    state.counters["lanes_stamps"] = lanes.stamps();
+  }
   set_error_counters(state, case_name, *scene, last->image);
 }
 

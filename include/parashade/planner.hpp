@@ -46,6 +46,8 @@ struct WorkCost {
 // visit(dy, xl, xr) for each row dy (from y0) with covered pixels xl..xr (from x0), top to bottom.
 template <typename Visit>
 void for_each_span(const TriangleGeometry& t, Visit visit);
+// The same for one row dy of a record with a non-empty box: false when the row has no covered pixel.
+inline bool record_row_span(const TriangleGeometry& t, int dy, int& xl, int& xr);
 
 // A whole triangle on one unit (the unit path's rule: every triangle by whole spans).
 WorkCost triangle_cost(const TriangleGeometry& t, const UnitConfig& unit, int setup_clocks);
@@ -114,30 +116,34 @@ Plan make_plan(const TriangleGeometry* tris, std::size_t n, const TileBins& bins
 
 // ---- implementation of the template ----
 
+inline bool record_row_span(const TriangleGeometry& t, int dy, int& xl, int& xr) {
+  std::int64_t lo = 0, hi = std::int64_t(t.x1) - t.x0;
+  for (int e = 0; e < 3 && lo <= hi; ++e) {
+    const std::int64_t a = t.edge_a[e];
+    const std::int64_t r = t.edge_c[e] + std::int64_t(dy) * t.edge_b[e];  // E at x0 on this row
+    if (a == 0) {
+      if (r < 0) hi = lo - 1;
+    } else if (a > 0) {  // r + a x >= 0  <=>  x >= ceil(-r / a)
+      std::int64_t q = -r / a;
+      if ((-r) % a != 0 && -r > 0) ++q;
+      lo = q > lo ? q : lo;
+    } else {  // x <= floor(r / -a)
+      const std::int64_t b = -a;
+      std::int64_t q = r / b;
+      if (r % b != 0 && r < 0) --q;
+      hi = q < hi ? q : hi;
+    }
+  }
+  xl = int(lo);
+  xr = int(hi);
+  return lo <= hi;
+}
+
 template <typename Visit>
 void for_each_span(const TriangleGeometry& t, Visit visit) {
   if (t.x0 > t.x1 || t.y0 > t.y1) return;
-  const std::int64_t width = std::int64_t(t.x1) - t.x0;
-  for (int dy = 0; dy <= t.y1 - t.y0; ++dy) {
-    std::int64_t lo = 0, hi = width;
-    for (int e = 0; e < 3 && lo <= hi; ++e) {
-      const std::int64_t a = t.edge_a[e];
-      const std::int64_t r = t.edge_c[e] + std::int64_t(dy) * t.edge_b[e];  // E at x0 on this row
-      if (a == 0) {
-        if (r < 0) hi = lo - 1;
-      } else if (a > 0) {  // r + a x >= 0  <=>  x >= ceil(-r / a)
-        std::int64_t q = -r / a;
-        if ((-r) % a != 0 && -r > 0) ++q;
-        lo = q > lo ? q : lo;
-      } else {  // x <= floor(r / -a)
-        const std::int64_t b = -a;
-        std::int64_t q = r / b;
-        if (r % b != 0 && r < 0) --q;
-        hi = q < hi ? q : hi;
-      }
-    }
-    if (lo <= hi) visit(dy, int(lo), int(hi));
-  }
+  for (int dy = 0, xl, xr; dy <= t.y1 - t.y0; ++dy)
+    if (record_row_span(t, dy, xl, xr)) visit(dy, xl, xr);
 }
 
 }  // namespace parashade

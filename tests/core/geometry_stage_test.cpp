@@ -13,44 +13,12 @@
 #include "parashade/parallel.hpp"
 #include "parashade/reference.hpp"
 #include "parashade/shapes.hpp"
+#include "test_support.hpp"
 
 namespace parashade {
 namespace {
 
-// Orthographic camera looking down -z, 1 world unit = 1 pixel, world (x, y) at pixel (x + W/2, H/2 - y).
-Scene ortho_scene(int width, int height) {
-  Scene s;
-  s.width = width;
-  s.height = height;
-  s.camera.projection = Projection::orthographic;
-  s.camera.position = {0.0f, 0.0f, 10.0f};
-  s.camera.target = {0.0f, 0.0f, 0.0f};
-  s.camera.ortho_height = float(height);
-  s.camera.near_plane = 1.0f;
-  s.camera.far_plane = 20.0f;
-  Light l;
-  l.direction = glm::normalize(glm::vec3(-0.2f, -0.3f, -1.0f));
-  s.lights.push_back(l);
-  Material m;
-  m.ambient = glm::vec3(0.1f);
-  m.diffuse = glm::vec3(0.6f, 0.5f, 0.4f);
-  m.specular = glm::vec3(0.3f);
-  m.shininess = 10.0f;
-  s.materials.push_back(m);
-  return s;
-}
-
-void add_mesh(Scene& s, std::vector<glm::vec3> positions, std::vector<glm::uvec3> triangles,
-              std::vector<glm::vec3> normals = {}) {
-  auto mesh = std::make_shared<Mesh>();
-  mesh->positions = std::move(positions);
-  mesh->triangles = std::move(triangles);
-  if (normals.empty()) normals.assign(mesh->positions.size(), glm::vec3(0.0f, 0.0f, 1.0f));
-  mesh->normals = std::move(normals);
-  Object o;
-  o.mesh = mesh;
-  s.objects.push_back(o);
-}
+using namespace testing_support;
 
 std::int64_t area2(const ScreenGeometry& g, const glm::uvec3& t) {
   const glm::i64vec2 a(g.xy[t.x]), b(g.xy[t.y]), c(g.xy[t.z]);
