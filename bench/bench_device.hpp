@@ -6,6 +6,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "kernels/constants.h"
 #include "parashade/device.hpp"
 
 namespace parashade {
@@ -19,15 +20,30 @@ inline Device& bench_device() {
 }
 
 // A kernel that only writes every pixel of a width x height RGBA8 frame (kernels/fill_limit.cl), timed by
-// its profiling event after two untimed launches.
-inline void run_fill_limit(benchmark::State& state, Device& device, int width, int height) {
+// its profiling event after two untimed launches. plane: the Gouraud floor instead (plane_fill_limit: each
+// pixel's colour and depth from planes, packed and written), for widths that are a multiple of 16.
+inline void run_fill_limit(benchmark::State& state, Device& device, int width, int height, bool plane = false) {
   const int vectors = (width * height + 15) / 16;
   cl::Buffer out(device.context(), CL_MEM_WRITE_ONLY | CL_MEM_ALLOC_HOST_PTR, std::size_t(vectors) * 16 * 4);
-  cl::Kernel kernel(device.program({"common.h", "fill_limit.cl"}, ""), "fill_limit");
+  cl::Kernel kernel(device.program({"common.h", "fill_limit.cl"}, ""), plane ? "plane_fill_limit" : "fill_limit");
   kernel.setArg(0, out);
-  kernel.setArg(1, cl_uint(0xFF336699u));
-  kernel.setArg(2, cl_int(vectors));
-  const cl::NDRange global{std::size_t(vectors)};
+  if (plane) {
+    if (width % 16 != 0) {
+      state.SkipWithError("plane_fill_limit needs a width that is a multiple of 16");
+      return;
+    }
+    // A gradient over the frame's levels and a depth in (0, 1), so every lane rounds and packs real values.
+    kernel.setArg(1, cl_float4{{10.0f, 200.0f, 30.0f, 0.25f}});
+    kernel.setArg(2, cl_float4{{100.0f / float(width), -50.0f / float(width), 0.0f, 1e-5f}});
+    kernel.setArg(3, cl_float4{{0.0f, 40.0f / float(height), 200.0f / float(height), 1e-5f}});
+    kernel.setArg(4, cl_int(width));
+    kernel.setArg(5, cl_int(height));
+  } else {
+    kernel.setArg(1, cl_uint(0xFF336699u));
+    kernel.setArg(2, cl_int(vectors));
+  }
+  // plane: WORK_ITEMS_PER_COMPUTE_UNIT work-items per compute unit, as the frame kernel's default.
+  const cl::NDRange global{plane ? std::size_t(WORK_ITEMS_PER_COMPUTE_UNIT * device.info().compute_units) : std::size_t(vectors)};
   for (int i = 0; i < 2; ++i) device.queue().enqueueNDRangeKernel(kernel, cl::NullRange, global);
   device.queue().finish();
   double sum_ms = 0.0;

@@ -4,6 +4,8 @@
 //   llvmpipe/SCENE/WxH/gouraud|phong   the peer (bench/peer/llvmpipe_peer.hpp)
 //   parashade/SCENE/WxH/flat|gouraud|phong, parashade/teapot/WxH/gouraud:UNIT:ARITH (modeled units)
 //   fill_limit/WxH                     a kernel that only writes every pixel: the device's ceiling
+//   plane_fill_limit/WxH               every pixel's Gouraud colour and depth from planes, packed and
+//                                      written: the least per-pixel work of a full-screen triangle
 // Frame time: llvmpipe — clear, draw, glReadPixels (the meshes stay in vertex buffers uploaded once
 // before timing, as an application keeps them); parashade — the renderer's whole frame (host vertex
 // stage, clip and cull, setup, binning with the upload of the frame's triangles, kernel, read-back).
@@ -200,11 +202,6 @@ void parashade_frame(benchmark::State& state, const std::string& case_name, cons
   set_error_counters(state, case_name, *scene, last->image);
 }
 
-// The ceiling: a kernel that only writes every pixel of a w x h RGBA8 frame (profiling event time).
-void fill_limit(benchmark::State& state, int width, int height) {
-  run_fill_limit(state, bench_device(), width, height);
-}
-
 // The fastest repetition beside Google Benchmark's median: on a shared machine other processes only add
 // time, so the minimum of interleaved repetitions is the steadier estimate of a frame's own cost.
 double minimum(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); }
@@ -259,10 +256,12 @@ void register_all(const std::vector<std::string>& scenes, const std::vector<std:
           ->Unit(benchmark::kMillisecond)
           ->ComputeStatistics("min", minimum);
     }
-    benchmark::RegisterBenchmark(("fill_limit/" + size).c_str(), [=](benchmark::State& st) { fill_limit(st, w, h); })
-        ->UseManualTime()
-        ->Unit(benchmark::kMillisecond)
-        ->ComputeStatistics("min", minimum);
+    for (const bool plane : {false, true})
+      benchmark::RegisterBenchmark(((plane ? "plane_fill_limit/" : "fill_limit/") + size).c_str(),
+                                   [=](benchmark::State& st) { run_fill_limit(st, bench_device(), w, h, plane); })
+          ->UseManualTime()
+          ->Unit(benchmark::kMillisecond)
+          ->ComputeStatistics("min", minimum);
   }
 }
 
