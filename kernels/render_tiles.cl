@@ -349,8 +349,9 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
       }
       /* The spans of the tile's rows, VEC rows at a time, then each stamp's lanes from its four rows. */
       for (int block = row_first; block <= row_last; block += VEC) {
-        intV lo_v, hi_v;
-        row_spans(t, lane + (block - y0), &lo_v, &hi_v, lo, hi);
+        intV lo_v = (intV)lo, hi_v = (intV)hi; /* a block the triangle covers whole needs no span search */
+        if (!rect_covered(t, lo, hi, block - y0, min(block + VEC - 1, row_last) - y0))
+          row_spans(t, lane + (block - y0), &lo_v, &hi_v, lo, hi);
         vstoreV(lo_v, 0, span_lo + (block - tile_y));
         vstoreV(hi_v, 0, span_hi + (block - tile_y));
       }
@@ -416,7 +417,13 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
 #if SHADE_SPAN
       row_spans(t, lane + (block - y0), &lo_v, &hi_v, 0, t->x1 - x0); /* whole spans: their ends matter */
 #else
-      row_spans(t, lane + (block - y0), &lo_v, &hi_v, lo, hi);
+      /* A block the triangle covers whole (large triangles' inner tiles) needs no span search. */
+      if (rect_covered(t, lo, hi, block - y0, min(block + VEC - 1, row_last) - y0)) {
+        lo_v = (intV)lo;
+        hi_v = (intV)hi;
+      } else {
+        row_spans(t, lane + (block - y0), &lo_v, &hi_v, lo, hi);
+      }
 #endif
       vstoreV(lo_v, 0, span_lo);
       vstoreV(hi_v, 0, span_hi);

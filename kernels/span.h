@@ -49,6 +49,17 @@ INLINE void row_spans(__global const TriangleGeometry* t, intV dy, intV* lo_out,
   *hi_out = hi_v;
 }
 
+/* Whether the triangle covers every pixel centre of columns lo..hi and rows dy_lo..dy_hi (relative to x0,
+ * y0): each edge function is linear, so its least value over the rectangle is at a corner. Where it
+ * holds, row_spans over the rectangle with the window [lo, hi] gives [lo, hi] on every row. */
+INLINE int rect_covered(__global const TriangleGeometry* t, int lo, int hi, int dy_lo, int dy_hi) {
+  for (int e = 0; e < 3; ++e) {
+    const long a = t->edge_a[e], b = t->edge_b[e];
+    if ((long)t->edge_c[e] + min(a * lo, a * hi) + min(b * dy_lo, b * dy_hi) < 0) return 0;
+  }
+  return 1;
+}
+
 /* The same for a small triangle (TRIANGLE_SMALL) in 32-bit lanes: its edge values stay below 2^30 over
  * its box and 16 pixels beyond, which is all the search evaluates, so the spans are identical. */
 INLINE void row_spans_small(__global const TriangleGeometry* t, intV dy, intV* lo_out, intV* hi_out, int lo, int hi) {
