@@ -2,7 +2,8 @@
 // same pixels are covered and shaded with the same operations, so the images must be byte-identical.
 // The scenes cover what the stamp walk treats apart: small triangles (per-pixel edge tests) and large
 // ones (row spans), tiles of 16, 32 and 64, a frame whose width and height are not multiples of the
-// stamp or the tile, slivers, a fan, near-plane clipping, point lights and a local viewer.
+// stamp or the tile, slivers, a fan, near-plane clipping, point lights and a local viewer. (Each scene
+// and tile is a kernel build: the hard scenes run on the default tile only, to keep the test quick.)
 #include <filesystem>
 #include <string>
 
@@ -26,8 +27,8 @@ std::vector<std::uint8_t> render_rgba(const Scene& scene, bool stamps, int tile)
   return {rgba.begin(), rgba.end()};
 }
 
-void expect_same_image(const Scene& scene, const std::string& what) {
-  for (int tile : {16, 32, 64}) {
+void expect_same_image(const Scene& scene, const std::string& what, std::initializer_list<int> tiles = {16}) {
+  for (int tile : tiles) {
     const auto rows = render_rgba(scene, false, tile), stamps = render_rgba(scene, true, tile);
     ASSERT_EQ(rows.size(), stamps.size());
     std::size_t covered = 0;
@@ -53,7 +54,7 @@ TEST(StampLayout, SameImageAsRowSegmentsOnTheProjectScenes) {
     Scene s = scene_file(name);
     s.width = 643;  // not a multiple of 4, 16 or 64: stamps and tiles cut by the frame's edges
     s.height = 357;
-    expect_same_image(s, name);
+    expect_same_image(s, name, {16, 32, 64});
   }
 }
 
@@ -72,7 +73,7 @@ TEST(StampLayout, SameImageAsRowSegmentsOnOverlappingSmallTriangles) {
     for (auto& p : mesh->positions) p = p * glm::vec3(90.0f, 90.0f, 4.0f) + glm::vec3(40.0f * float(k) - 40.0f, 10.0f * float(k), -2.0f * float(k));
     add_object(s, mesh);
   }
-  expect_same_image(s, "overlapping spheres");
+  expect_same_image(s, "overlapping spheres", {16, 64});
 }
 
 }  // namespace
