@@ -466,6 +466,40 @@ int run(MpiSession& mpi, const DistributedRender& job) {
 
 bool mpi_built() { return true; }
 
+namespace {
+
+class MpiRankGroup : public RankGroup {
+ public:
+  int rank() const override { return mpi_.rank; }
+  int size() const override { return mpi_.size; }
+  void step(const std::function<void()>& f) override {
+    try {
+      mpi_.step(f);
+    } catch (const distributed::RanksStopped& s) {
+      throw StoppedRanks(s.code);
+    }
+  }
+  std::vector<std::string> gather(const std::string& mine) override {
+    const int n = mpi_.size, bytes = int(mine.size());
+    std::vector<int> counts(mpi_.rank == 0 ? n : 0), displs(counts.size());
+    MPI_Gather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, mpi_.comm);
+    std::size_t total = 0;
+    for (int r = 0; r < int(counts.size()); ++r) displs[r] = int(total), total += std::size_t(counts[r]);
+    std::vector<char> all(total);
+    MPI_Gatherv(mine.data(), bytes, MPI_CHAR, all.data(), counts.data(), displs.data(), MPI_CHAR, 0, mpi_.comm);
+    std::vector<std::string> out;
+    for (int r = 0; r < int(counts.size()); ++r) out.emplace_back(all.data() + displs[r], std::size_t(counts[r]));
+    return out;
+  }
+
+ private:
+  distributed::MpiSession mpi_;
+};
+
+}  // namespace
+
+std::unique_ptr<RankGroup> RankGroup::join() { return std::make_unique<MpiRankGroup>(); }
+
 int run_distributed_render(const DistributedRender& job) {
   distributed::MpiSession mpi;
   try {

@@ -8,12 +8,15 @@
 // MPI_Gather to rank 0. sort-first: bands of tile rows sized by the ranks' measured speed, gathered
 // with MPI_Gatherv. Either way the image is the one-process render's, byte for byte.
 #include <functional>
+#include <memory>
+#include <vector>
 #include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "parashade/combinations.hpp"
+#include "parashade/errors.hpp"
 #include "parashade/image.hpp"
 #include "parashade/planner.hpp"
 #include "parashade/renderer.hpp"
@@ -49,5 +52,26 @@ struct DistributedRender {
 // code; a failure on any rank stops every rank, rank 0 prints each failing rank's message, no image
 // or report is written.
 int run_distributed_render(const DistributedRender& job);
+
+// The ranks of a sharded sweep (`mpirun -np N parashade scaling --mpi`): each rank runs its share of the
+// cases, rank 0 merges. join() initializes MPI (UsageError when built without it); MPI is finalized
+// when the group is destroyed.
+class RankGroup {
+ public:
+  static std::unique_ptr<RankGroup> join();
+  virtual ~RankGroup() = default;
+  virtual int rank() const = 0;
+  virtual int size() const = 0;
+  // Runs `f` on this rank and agrees with every rank: when any failed, rank 0 prints each failing rank's
+  // message and every rank throws StoppedRanks with the largest exit code.
+  virtual void step(const std::function<void()>& f) = 0;
+  // Every rank's text, in rank order, on rank 0 (MPI_Gatherv); empty on the others.
+  virtual std::vector<std::string> gather(const std::string& mine) = 0;
+};
+
+// What every rank throws after a failed step (rank 0 has printed why); main exits with `code`.
+struct StoppedRanks : Error {
+  explicit StoppedRanks(int code) : Error(ExitCode(code), "") {}
+};
 
 }  // namespace parashade

@@ -12,4 +12,9 @@ int run_distributed_render(const DistributedRender&) {
                    "scripts/install-deps.sh, then configure again)");
 }
 
+std::unique_ptr<RankGroup> RankGroup::join() {
+  throw UsageError("--mpi needs MPI, and this parashade was built without it (install Open MPI: "
+                   "scripts/install-deps.sh, then configure again)");
+}
+
 }  // namespace parashade
