@@ -114,7 +114,7 @@ def main():
             identity(tmp, "sort-last", [
                 ("gouraud float", SCENE, [], [(1, []), (2, []), (3, ["--rank-partition", "round-robin"]),
                                               (4, ["--rank-partition", "dynamic", "--batch", "256"])]),
-                ("depth ties", tie, [], [(2, ["--rank-partition", "round-robin"]), (3, ["--rank-partition", "lpt"])]),
+                ("depth ties", tie, [], [(3, ["--rank-partition", "round-robin"]), (2, ["--rank-partition", "lpt"])]),
                 ("phong float", SCENE, ["--method", "phong"], [(3, [])]),
                 ("flat", SCENE, ["--method", "flat"], [(2, [])]),
                 ("counter fixed:12.12", SCENE, ["--units", "counter", "--arith", "fixed:12.12"], [(4, [])]),
