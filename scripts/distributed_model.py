@@ -66,68 +66,80 @@ def main():
                              "--warmup", "1", "--distribute", mode, "--report", rep])
                 runs[(mode, n)] = json.load(open(rep))
 
-    # Model of a rank's compute (prepare + render) on this host: A + B/N, slowed by max(1, N/cores) when
-    # the ranks share the cores; fitted on N = 1, 2 and checked on the others.
-    out = {"alpha_beta": a, "ping_pong": pp, "pixels": pixels, "runs": {}, "model": {}, "prediction": {}}
+    # Model of a rank's compute on this host, in core-ms (a rank's wall ms x its share of the C cores:
+    # C/N for N ranks on C cores, whether they split the cores or time-share them):
+    #   prepare: p x records on the rank (sort-last: R/N; sort-first: every rank prepares all R)
+    #   render:  a x P + s x P / N (a: full-screen passes every rank makes; s: shading, divided)
+    # p, a and s fitted over every N (median; least squares in 1/N). Composite: alpha-beta-gamma from the
+    # ping-pong, nothing fitted, compared with the measured composite; pack (sort-last, local) from N = 1.
+    C = args.cores
+    out = {"alpha_beta": a, "ping_pong": pp, "pixels": pixels, "cores": C, "runs": {}, "model": {},
+           "prediction": {}}
     rows = []
     for mode in ("sort-last", "sort-first"):
         ns = sorted(n for (m, n) in runs if m == mode)
-        comp = {n: max(r["prepare_ms"] + r["render_ms"] for r in runs[(mode, n)]["per_rank"]) / 1e3 for n in ns}
-        share = lambda n: max(1.0, n / args.cores)
-        c1, c2 = comp[ns[0]] / share(ns[0]), comp[ns[1]] / share(ns[1])
-        B = (c1 - c2) / (1 / ns[0] - 1 / ns[1])
-        A = c1 - B / ns[0]
-        out["model"][mode] = {"A_s": A, "B_s": B, "fitted_on": ns[:2]}
+        worst = lambda n, key: max(p[key] for p in runs[(mode, n)]["per_rank"])
+        core = lambda n, key: worst(n, key) * C / n
+        R = runs[(mode, ns[0])]["per_rank"][0]["records"]
+        recs = lambda n: R / n if mode == "sort-last" else R
+        # Least squares over every N (this loaded machine's single runs are too noisy for a two-point fit).
+        p_rec = sorted(core(n, "prepare_ms") / recs(n) for n in ns)[len(ns) // 2]
+        xs, ys = [1 / n for n in ns], [core(n, "render_ms") / pixels for n in ns]
+        mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+        s_px = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
+        a_px = my - s_px * mx
+        if a_px < 0:
+            a_px, s_px = 0.0, sum(y / x for x, y in zip(xs, ys)) / len(xs)
+        pack = worst(ns[0], "pack_ms") * C / ns[0] / pixels if mode == "sort-last" else 0.0
+        out["model"][mode] = {"prepare_core_ms_per_record": p_rec, "render_core_ms_per_pixel_fixed": a_px,
+                              "render_core_ms_per_pixel_divided": s_px, "pack_core_ms_per_pixel": pack,
+                              "fitted_on": ns}
         for n in ns:
             r = runs[(mode, n)]
-            meas_comp = max(p["composite_ms"] for p in r["per_rank"]) / 1e3
-            model_comp = composite_model(mode, n, pixels, a)
-            model_frame = (A + B / n) * share(n) + model_comp
-            rows.append((mode, n, r["frame_ms"], model_frame * 1e3, comp[n] * 1e3, (A + B / n) * share(n) * 1e3,
-                         meas_comp * 1e3, model_comp * 1e3, r["imbalance"]["render_ms"],
-                         sum(p["bytes_sent"] for p in r["per_rank"]),
+            recs = R / n if mode == "sort-last" else R
+            model_compute = (p_rec * recs + a_px * pixels + s_px * pixels / n) * n / C
+            model_pack = pack * pixels * n / C
+            model_comp = composite_model(mode, n, pixels, a) * 1e3
+            meas_comp = max(p["composite_ms"] for p in r["per_rank"])
+            meas_compute = max(p["prepare_ms"] + p["render_ms"] for p in r["per_rank"])
+            rows.append((mode, n, r["frame_ms"], model_compute + model_pack + model_comp, meas_compute, model_compute,
+                         max(p.get("pack_ms", 0) for p in r["per_rank"]), model_pack, meas_comp, model_comp,
+                         r["imbalance"]["render_ms"], sum(p["bytes_sent"] for p in r["per_rank"]),
                          max(p["records"] for p in r["per_rank"]), max(p["peak_rss_mb"] for p in r["per_rank"])))
             out["runs"]["%s/%d" % (mode, n)] = r
 
     print("ping-pong (np 2, one host): alpha %.2f us, beta %.3f ns/byte (%.2f GB/s), gamma %.2f ns/pixel" %
           (a["alpha"] * 1e6, a["beta"] * 1e9, 1 / a["beta"] / 1e9, a["gamma"] * 1e9))
+    for mode, m in out["model"].items():
+        print("%s: prepare %.3g core-us/record, render %.3g + %.3g/N core-ns/pixel, pack %.3g core-ns/pixel" %
+              (mode, m["prepare_core_ms_per_record"] * 1e3, m["render_core_ms_per_pixel_fixed"] * 1e6,
+               m["render_core_ms_per_pixel_divided"] * 1e6, m["pack_core_ms_per_pixel"] * 1e6))
     print()
-    print("| mode | N | frame ms measured | frame ms model | compute ms measured | compute ms model | "
-          "composite ms measured | composite ms model | render imbalance | bytes sent (all ranks) | "
-          "records (largest rank) | peak RSS MB (largest rank) |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    print("| mode | N | frame ms measured | frame ms model | compute ms measured | compute ms model | pack ms measured "
+          "| pack ms model | composite ms measured | composite ms model (α–β) | render imbalance | bytes sent "
+          "(all ranks) | records (largest rank) | peak RSS MB (largest rank) |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for r in rows:
-        print("| %s | %d | %.1f | %.1f | %.1f | %.1f | %.2f | %.2f | %.2f | %d | %d | %.0f |" % r)
+        print("| %s | %d | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.2f | %.2f | %.2f | %d | %d | %.0f |" % r)
 
-    # Prediction: 100M triangles, 3840x2160, one rank per node with the measured per-triangle and
-    # per-pixel costs of one rank (the N = 1 run, this host's cores) and the ping-pong's α, β, γ.
+    # Prediction: 100M triangles at 3840x2160, one rank per node of this VM's kind (C cores), the
+    # per-record and per-pixel costs above, the ping-pong's alpha, beta, gamma.
     T, P = 100e6, 3840 * 2160
     print()
-    print("| ranks | sort-last frame ms | of which composite | sort-first frame ms | of which composite | "
-          "sort-last records per rank | sort-first records per rank |")
-    print("|---:|---:|---:|---:|---:|---:|---:|")
+    print("| ranks | sort-last frame ms | of which composite + pack | sort-first frame ms | of which composite | "
+          "records per rank sort-last / sort-first |")
+    print("|---:|---:|---:|---:|---:|---|")
     pred = []
-    for mode in ("sort-last", "sort-first"):
-        r1 = runs[(mode, 1)]["per_rank"][0]
-        m = out["model"][mode]
-        records = r1["records"]
-        if mode == "sort-last":
-            # A: per pixel on every rank (keys, read-back, pack); B: per triangle, divided among the ranks.
-            per_px, per_tri = m["A_s"] / pixels, m["B_s"] / records
-            out["prediction"][mode] = {"per_pixel_s": per_px, "per_triangle_s": per_tri}
-        else:
-            # Every rank prepares every triangle (A), the bands divide the shading (B, per pixel).
-            per_tri, per_px = m["A_s"] / records, m["B_s"] / pixels
-            out["prediction"][mode] = {"per_pixel_s": per_px, "per_triangle_s": per_tri}
-    for N in [16, 32, 64, 128, 256, 512, 1024]:
-        sl = out["prediction"]["sort-last"]
-        sf = out["prediction"]["sort-first"]
-        sl_c = composite_model("sort-last", N, P, a)
-        sf_c = composite_model("sort-first", N, P, a)
-        sl_t = sl["per_pixel_s"] * P + sl["per_triangle_s"] * T / N + sl_c
-        sf_t = sf["per_triangle_s"] * T + sf["per_pixel_s"] * P / N + sf_c
-        pred.append((N, sl_t * 1e3, sl_c * 1e3, sf_t * 1e3, sf_c * 1e3, T / N, T))
-        print("| %d | %.0f | %.0f | %.0f | %.0f | %.2e | %.2e |" % pred[-1])
+    sl, sf = out["model"]["sort-last"], out["model"]["sort-first"]
+    for N in [1, 16, 32, 64, 128, 256, 512, 1024]:
+        sl_c = composite_model("sort-last", N, P, a) * 1e3 + sl["pack_core_ms_per_pixel"] * P / C
+        sf_c = composite_model("sort-first", N, P, a) * 1e3
+        sl_t = (sl["prepare_core_ms_per_record"] * T / N + sl["render_core_ms_per_pixel_fixed"] * P +
+                sl["render_core_ms_per_pixel_divided"] * P / N) / C + sl_c
+        sf_t = (sf["prepare_core_ms_per_record"] * T + sf["render_core_ms_per_pixel_fixed"] * P +
+                sf["render_core_ms_per_pixel_divided"] * P / N) / C + sf_c
+        pred.append((N, sl_t, sl_c, sf_t, sf_c, "%.2g / %.2g" % (T / N, T)))
+        print("| %d | %.0f | %.0f | %.0f | %.0f | %s |" % pred[-1])
     out["prediction"]["table"] = pred
 
     if args.json:
@@ -141,6 +153,8 @@ def main():
         for mode, mk in (("sort-last", "o"), ("sort-first", "s")):
             rr = [r for r in rows if r[0] == mode]
             ax1.plot([r[1] for r in rr], [r[2] for r in rr], mk + "-", label=mode + " measured")
+            ax1.plot([r[1] for r in rr], [r[8] for r in rr], mk + ":", label=mode + " composite measured")
+            ax1.plot([r[1] for r in rr], [r[9] for r in rr], "x:", label=mode + " composite α–β")
             ax1.plot([r[1] for r in rr], [r[3] for r in rr], mk + "--", label=mode + " model")
         ax1.set_xlabel("ranks (one 2-core host)")
         ax1.set_ylabel("frame ms")

@@ -45,6 +45,7 @@ struct RankFigures {
   double faces = 0, records = 0, pixels = 0, won_pixels = 0, modeled_clocks = 0;
   double prepare_ms = 0, render_ms = 0, frame_ms = 0, composite_ms = 0, bytes_sent = 0;
   double band_first = 0, band_rows = 0, record_bytes = 0;
+  double pack_ms = 0;  // sort-last: keys and colours into the composite's buffer (local, per pixel)
 };
 constexpr int kFigures = sizeof(RankFigures) / sizeof(double);
 
@@ -171,6 +172,7 @@ nlohmann::json figures_json(const RankFigures& f, int rank, Distribute mode) {
                       {"render_ms", f.render_ms},
                       {"rank_frame_ms", f.frame_ms},
                       {"composite_ms", f.composite_ms},
+                      {"pack_ms", f.pack_ms},
                       {"bytes_sent", f.bytes_sent}};
   if (mode == Distribute::sort_last) {
     j["faces"] = f.faces;
@@ -284,7 +286,7 @@ int run(MpiSession& mpi, const DistributedRender& job) {
       rank_timings.push_back(frame->timings);
     }
     fig.frame_ms = now_ms() - t_frame;
-    const double t_comp = now_ms();
+    double t_comp = now_ms();
     if (sort_last) {
       // This rank's keys with the scene face in place of its own record index, its colours, its rank.
       send.assign(block * n, KeyPixel{PLAN_NO_KEY, 0, std::uint32_t(rank)});
@@ -303,6 +305,11 @@ int run(MpiSession& mpi, const DistributedRender& job) {
       }
       fig.faces = double(global_face.size());
       fig.pixels = double(covered);
+      fig.pack_ms = now_ms() - t_comp;
+      // The composite's own time: from the last rank's arrival (a rank that waits for a slower one is
+      // imbalance, not compositing).
+      MPI_Barrier(mpi.comm);
+      t_comp = now_ms();
       MPI_Reduce_scatter_block(send.data(), mine.data(), int(block), pixel_type, min_op, mpi.comm);
       if (rank == 0) all.resize(block * n);
       MPI_Gather(mine.data(), int(block), pixel_type, all.data(), int(block), pixel_type, 0, mpi.comm);
@@ -313,6 +320,8 @@ int run(MpiSession& mpi, const DistributedRender& job) {
       const int y0 = std::min(H, band.first * options.tile_size);
       const int y1 = std::min(H, (band.first + band.second) * options.tile_size);
       fig.pixels = double(y1 - y0) * W;
+      MPI_Barrier(mpi.comm);
+      t_comp = now_ms();
       std::vector<int> counts(n), displs(n);
       const int mine_bytes = int(std::size_t(y1 - y0) * pitch);
       MPI_Allgather(&mine_bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, mpi.comm);
@@ -375,7 +384,7 @@ int run(MpiSession& mpi, const DistributedRender& job) {
            {&RankFigures::faces, &RankFigures::records, &RankFigures::pixels, &RankFigures::won_pixels,
             &RankFigures::modeled_clocks, &RankFigures::prepare_ms, &RankFigures::render_ms, &RankFigures::frame_ms,
             &RankFigures::composite_ms, &RankFigures::bytes_sent, &RankFigures::band_first, &RankFigures::band_rows,
-            &RankFigures::record_bytes})
+            &RankFigures::record_bytes, &RankFigures::pack_ms})
         m.*field = med(r, field);
       if (!sort_last) {  // the last frame's band
         m.band_first = frames.back()[r].band_first;
