@@ -1,4 +1,5 @@
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <optional>
 #include <regex>
@@ -97,7 +98,21 @@ nlohmann::json error_figures(const Scene& scene, Method method, const RenderedIm
 }
 
 // render --distribute: the frame across MPI ranks (docs/distributed.md); every rank runs this.
+int run_distributed_checked(const RenderArgs& a, RenderOptions options, const std::optional<std::pair<int, int>>& size);
+
+// Every rank checks the command line before MPI starts; only rank 0 (or a run without mpirun) says what
+// is wrong, the others leave with the same code and no message (main prints none for an empty one).
 int run_distributed(const RenderArgs& a, RenderOptions options, const std::optional<std::pair<int, int>>& size) {
+  try {
+    return run_distributed_checked(a, options, size);
+  } catch (const UsageError& e) {
+    const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
+    if (rank && std::string(rank) != "0" && *e.what()) throw UsageError("");
+    throw;
+  }
+}
+
+int run_distributed_checked(const RenderArgs& a, RenderOptions options, const std::optional<std::pair<int, int>>& size) {
   DistributedRender job;
   job.mode = parse_distribute(a.distribute);
   if (a.float_output) throw UsageError("--float does not combine with --distribute yet (8-bit images only)");
