@@ -3,7 +3,7 @@
 docs/distributed.md from an MPI ping-pong, checks it against the measured runs and predicts 16..1024 ranks
 for a 100-million-triangle scene at 3840x2160.
 
-    OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 PARASHADE_MESH_DIR=/work/shared/meshes \\
+    OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 PARASHADE_MESH_DIR=/path/to/shared/meshes \\
         scripts/distributed_model.py --build build --scene scenes/bunny.json --size 1920x1080 \\
         --json distributed-model.json --plot docs/distributed-scaling.png
 
