@@ -66,7 +66,10 @@ void check_config_options(const FrameConfig& config, DeviceMode devices) {
         case Axis::choice: flag = "--triangle-choice"; break;
         case Axis::highlight: flag = "--highlight-test"; break;
         case Axis::plan: flag = "--cu/--partition"; break;
-        case Axis::devices: flag = "--device"; break;
+        case Axis::devices:
+          flag = devices == DeviceMode::ranks_sort_first || devices == DeviceMode::ranks_sort_last ? "--distribute"
+                                                                                                  : "--device";
+          break;
       }
       flags += (flags.empty() ? "" : ", ") + std::string(flag);
     }

@@ -1,4 +1,5 @@
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <optional>
 #include <regex>
@@ -15,6 +16,7 @@
 #include "parashade/split_renderer.hpp"
 #include "parashade/sub_devices.hpp"
 #include "parashade/combined.hpp"
+#include "parashade/distributed.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/image.hpp"
@@ -38,6 +40,7 @@ struct RenderArgs {
   bool float_output = false, no_error = false, quiet = false, highlight_test = false;
   PlanArgs plan;
   std::string tune_cache;
+  std::string distribute, rank_partition;  // --distribute: MPI ranks (docs/distributed.md)
   bool no_tuned = false, explicit_config = false, keep_going = false;  // explicit: --tile, --work-items, --cu or --partition given
 };
 
@@ -76,6 +79,85 @@ std::string describe(const ErrorMetrics& e) {
   return buf;
 }
 
+// The image's error against the exact reference: the method's own ideal and exact Phong.
+nlohmann::json error_figures(const Scene& scene, Method method, const RenderedImage& image, std::vector<std::string>& lines) {
+  nlohmann::json errors = nlohmann::json::object();
+  ScreenGeometry g;
+  build_screen_geometry(scene, {method, true}, g);
+  const ReferenceImage ref = render_reference(scene, g, method);
+  const ErrorMetrics ideal =
+      compare_to_reference(image, ref.covered, ref.ideal,
+                           // combined's own ideal is Phong's (segment ends are exact Phong)
+                           method == Method::combined ? "ideal phong" : std::string("ideal ") + method_name(method));
+  const ErrorMetrics exact = compare_to_reference(image, ref.covered, ref.exact, "exact phong");
+  errors["implementation"] = to_json(ideal);
+  errors["method"] = to_json(exact);
+  lines.push_back("error vs " + ideal.reference + ": " + describe(ideal));
+  lines.push_back("error vs " + exact.reference + ": " + describe(exact));
+  return errors;
+}
+
+// render --distribute: the frame across MPI ranks (docs/distributed.md); every rank runs this.
+int run_distributed_checked(const RenderArgs& a, RenderOptions options, const std::optional<std::pair<int, int>>& size);
+
+// Every rank checks the command line before MPI starts; only rank 0 (or a run without mpirun) says what
+// is wrong, the others leave with the same code and no message (main prints none for an empty one).
+int run_distributed(const RenderArgs& a, RenderOptions options, const std::optional<std::pair<int, int>>& size) {
+  try {
+    return run_distributed_checked(a, options, size);
+  } catch (const UsageError& e) {
+    const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
+    if (rank && std::string(rank) != "0" && *e.what()) throw UsageError("");
+    throw;
+  }
+}
+
+int run_distributed_checked(const RenderArgs& a, RenderOptions options, const std::optional<std::pair<int, int>>& size) {
+  DistributedRender job;
+  job.mode = parse_distribute(a.distribute);
+  if (a.float_output) throw UsageError("--float does not combine with --distribute yet (8-bit images only)");
+  if (a.keep_going) throw UsageError("--keep-going does not combine with --distribute: a failing rank stops every rank");
+  if (is_device_list(a.device) || is_sub_device_selector(a.device))
+    throw UsageError("--distribute: each rank opens one device; '" + a.device + "' names several");
+  if (!a.rank_partition.empty()) {
+    if (job.mode != Distribute::sort_last)
+      throw UsageError("--rank-partition assigns triangles to sort-last ranks; sort-first ranks take bands");
+    job.rank_partition = parse_partition(a.rank_partition);
+    if (job.rank_partition == Partition::tiles)
+      throw UsageError("--rank-partition tiles: sort-last ranks take shares of the triangles, not screen tiles "
+                       "(round-robin, lpt or dynamic; --distribute sort-first takes bands of tiles)");
+  }
+  check_config_options(options, distribute_device_mode(job.mode));
+  if (!options.units && options.unit_path() && !a.quiet)
+    std::cerr << "parashade: note: " << (options.arith.fixed ? "--arith " + a.arith : std::string("--coverage dda"))
+              << " runs on the classic unit (--units chooses another)\n";
+  job.options = options;
+  job.rank_batch = a.plan.batch;
+  job.setup_clocks = a.plan.setup_clocks;
+  job.device = a.device;
+  job.output = a.output;
+  job.report = a.report;
+  job.scene_file = a.scene;
+  job.frames = a.frames;
+  job.warmup = a.warmup;
+  job.quiet = a.quiet;
+  job.no_error = a.no_error;
+  job.load_scene = [&] {
+    Scene scene = load_scene_at(a.scene, size, a.size);
+    for (const std::string& w : scene.warnings) std::cerr << "parashade: warning: " << w << "\n";
+    return scene;
+  };
+  job.check_destinations = [&] {
+    check_image_destination(a.output);
+    if (!a.report.empty()) check_report_destination(a.report);
+  };
+  const Method method = options.method;
+  job.error_figures = [method](const Scene& scene, const RenderedImage& image, std::vector<std::string>& lines) {
+    return error_figures(scene, method, image, lines);
+  };
+  return run_distributed_render(job);
+}
+
 int run_render(const RenderArgs& a) {
   const Method method = parse_method(a.method);
   RenderOptions options;
@@ -111,6 +193,8 @@ int run_render(const RenderArgs& a) {
   if (a.frames < 1) throw UsageError("--frames must be at least 1");
   if (a.warmup < 0) throw UsageError("--warmup must not be negative");
   if (a.work_items < 0) throw UsageError("--work-items must not be negative");
+  if (!a.distribute.empty()) return run_distributed(a, options, size);
+  if (!a.rank_partition.empty()) throw UsageError("--rank-partition needs --distribute sort-last");
   // --cu with sub:NAME:N: the units' depth pass spread over the sub-devices; without --cu a device list
   // or sub-devices take bands of the frame (docs/planner.md).
   const bool units_on_sub_devices = options.plan && is_sub_device_selector(a.device);
@@ -174,20 +258,7 @@ int run_render(const RenderArgs& a) {
 
   nlohmann::json errors = nlohmann::json::object();
   std::vector<std::string> error_lines;
-  if (!a.no_error) {
-    ScreenGeometry g;
-    build_screen_geometry(scene, {method, true}, g);
-    const ReferenceImage ref = render_reference(scene, g, method);
-    const ErrorMetrics ideal =
-        compare_to_reference(frame.image, ref.covered, ref.ideal,
-                             // combined's own ideal is Phong's (segment ends are exact Phong)
-                             method == Method::combined ? "ideal phong" : std::string("ideal ") + method_name(method));
-    const ErrorMetrics exact = compare_to_reference(frame.image, ref.covered, ref.exact, "exact phong");
-    errors["implementation"] = to_json(ideal);
-    errors["method"] = to_json(exact);
-    error_lines.push_back("error vs " + ideal.reference + ": " + describe(ideal));
-    error_lines.push_back("error vs " + exact.reference + ": " + describe(exact));
-  }
+  if (!a.no_error) errors = error_figures(scene, method, frame.image, error_lines);
 
   write_image(out_path, frame.image);
   const double pixels = double(scene.width) * scene.height;
@@ -323,6 +394,13 @@ Command add_render_command(CLI::App& app) {
                   "OpenCL device: index or name substring (see 'parashade devices'); 'all' or a comma list splits the "
                   "frame across devices by measured speed; sub:NAME:N or sub:NAME:N1+N2 uses NAME's sub-devices (bands "
                   "of the frame; with --cu, the units' depth pass on them)");
+  cmd->add_option("--distribute", a->distribute,
+                  "Under mpirun: the frame across the MPI ranks, sort-last (shares of the triangles by modeled cost, "
+                  "depth keys composited) or sort-first (bands by measured speed); the image is the one-process "
+                  "render's (docs/distributed.md)");
+  cmd->add_option("--rank-partition", a->rank_partition,
+                  "--distribute sort-last: the planner's strategy for triangles to ranks: lpt (default), round-robin, "
+                  "dynamic (batches of --batch)");
   cmd->add_flag("--keep-going", a->keep_going,
                 "With a device list (bands): drop a failing device (named) and go on with the others");
   cmd->add_option("--size", a->size, "Resolution WIDTHxHEIGHT (at most 4096x4096), overriding the scene's");

@@ -19,6 +19,7 @@
 
 #include "cli_args.hpp"
 #include "commands.hpp"
+#include "parashade/distributed.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/metrics.hpp"
@@ -42,6 +43,7 @@ struct ScalingArgs {
   std::string scene, units = default_units(), arith = kDefaultArith, method = "gouraud", size, device, report;
   int frames = 5, warmup = 1;
   bool float_output = false, markdown = false, quiet = false;
+  bool mpi = false;  // under mpirun: configurations dealt across the ranks, rank 0 merges (docs/distributed.md)
 };
 
 // One configuration: its renderer (kept for the whole run, so that programs and buffers are warm when
@@ -53,6 +55,7 @@ struct Config {
   ModeledClocks clocks;
   GeometryStats geometry;
   ErrorMetrics ideal, exact;
+  nlohmann::json ideal_json, exact_json;  // as the report has them (from another rank with --mpi)
   std::vector<double> total_ms, kernel_ms;
   double frame_ms = 0, kernel_med_ms = 0, frame_min_ms = 0, kernel_min_ms = 0;
   const Config* classic = nullptr;  // classic in the same arithmetic, when it is in the list
@@ -166,19 +169,32 @@ int run_scaling(const ScalingArgs& a) {
   if (a.frames < 1) throw UsageError("--frames must be at least 1");
   if (a.warmup < 1) throw UsageError("--warmup must be at least 1 (the warm-up frame gives the error figures)");
 
-  Scene scene = load_scene_at(a.scene, size, a.size);
-  if (!a.report.empty()) check_report_destination(a.report);
-
-  auto device = open_device(a.device);
+  // --mpi: configuration i runs on rank i mod N; every step agrees across the ranks (a failure on any
+  // rank stops them all), rank 0 merges the rows and writes the one report.
+  std::unique_ptr<RankGroup> group;
+  if (a.mpi) group = RankGroup::join();
+  const int rank = group ? group->rank() : 0, ranks = group ? group->size() : 1;
+  const auto step = [&](const std::function<void()>& f) {
+    if (group) group->step(f);
+    else f();
+  };
+  Scene scene;
+  std::unique_ptr<Device> device;
+  ReferenceImage ref;
+  step([&] {
+    scene = load_scene_at(a.scene, size, a.size);
+    if (!a.report.empty() && rank == 0) check_report_destination(a.report);
+    device = open_device(a.device);
+    // The exact reference, once for the scene: every configuration shades the same screen triangles.
+    if (!a.quiet && rank == 0)
+      std::cerr << "scaling " << scene.name << " (" << scene.width << "x" << scene.height << ", "
+                << scene.triangle_count() << " triangles) on " << device->info().name
+                << (group ? " over " + std::to_string(ranks) + " ranks" : std::string()) << ": exact reference ...\n";
+    ScreenGeometry g;
+    build_screen_geometry(scene, {method, true}, g);
+    ref = render_reference(scene, g, method);
+  });
   const DeviceInfo& dev = device->info();
-
-  // The exact reference, once for the scene: every configuration shades the same screen triangles.
-  if (!a.quiet)
-    std::cerr << "scaling " << scene.name << " (" << scene.width << "x" << scene.height << ", "
-              << scene.triangle_count() << " triangles) on " << dev.name << ": exact reference ...\n";
-  ScreenGeometry g;
-  build_screen_geometry(scene, {method, true}, g);
-  const ReferenceImage ref = render_reference(scene, g, method);
 
   std::vector<Config> configs;
   for (const Arithmetic& ar : ariths)
@@ -195,7 +211,10 @@ int run_scaling(const ScalingArgs& a) {
   // Warm-up: every configuration's program is built and its buffers allocated before any timed frame;
   // the last warm-up frame gives the modeled clocks and the error (the units are deterministic).
   const std::size_t total = configs.size();
+  const auto mine = [&](std::size_t i) { return int(i % std::size_t(ranks)) == rank; };
+  step([&] {
   for (std::size_t i = 0; i < total; ++i) {
+    if (!mine(i)) continue;
     Config& c = configs[i];
     if (!a.quiet)
       std::cerr << "[" << i + 1 << "/" << total << "] " << c.name() << " " << arith_name(c.arith)
@@ -212,6 +231,8 @@ int run_scaling(const ScalingArgs& a) {
     c.geometry = f->stats.geometry;
     c.ideal = compare_to_reference(f->image, ref.covered, ref.ideal, std::string("ideal ") + method_name(method));
     c.exact = compare_to_reference(f->image, ref.covered, ref.exact, "exact phong");
+    c.ideal_json = to_json(c.ideal);
+    c.exact_json = to_json(c.exact);
   }
 
   // Timed frames round-robin, each round starting one configuration later: on a noisy shared machine a
@@ -220,11 +241,44 @@ int run_scaling(const ScalingArgs& a) {
     if (!a.quiet)
       std::cerr << "timing round " << round + 1 << "/" << a.frames << " (" << total << " configurations) ...\n";
     for (std::size_t k = 0; k < total; ++k) {
+      if (!mine((k + std::size_t(round)) % total)) continue;
       Config& c = configs[(k + std::size_t(round)) % total];
       const Frame& f = c.renderer->render(scene);
       c.total_ms.push_back(f.timings.total_ms);
       c.kernel_ms.push_back(f.timings.kernel_ms);
     }
+  }
+  });
+  if (group) {
+    // Every rank's configurations to rank 0, which fills them in (the others are done).
+    nlohmann::json sent = nlohmann::json::array();
+    for (std::size_t i = 0; i < total; ++i) {
+      if (!mine(i) || rank == 0) continue;
+      const Config& c = configs[i];
+      sent.push_back({{"i", i}, {"clocks", to_json(c.clocks)}, {"in", c.geometry.triangles_in},
+                      {"out", c.geometry.triangles_out}, {"ideal", c.ideal_json}, {"exact", c.exact_json},
+                      {"total_ms", c.total_ms}, {"kernel_ms", c.kernel_ms}});
+    }
+    const std::vector<std::string> got = group->gather(sent.dump());
+    if (rank != 0) {
+      step([] {});  // rank 0's report
+      return 0;
+    }
+    for (std::size_t r = 1; r < got.size(); ++r)
+      for (const auto& j : nlohmann::json::parse(got[r])) {
+        Config& c = configs[j["i"].get<std::size_t>()];
+        c.clocks.spans = j["clocks"]["spans"];
+        c.clocks.pixels = j["clocks"]["span_pixels"];
+        c.clocks.clocks = j["clocks"]["clocks"];
+        c.geometry.triangles_in = j["in"];
+        c.geometry.triangles_out = j["out"];
+        c.ideal_json = j["ideal"];
+        c.exact_json = j["exact"];
+        c.ideal.max_abs = c.ideal_json["max_abs"].is_null() ? 0.0 : c.ideal_json["max_abs"].get<double>();
+        c.ideal.nmse = c.ideal_json["nmse"].is_null() ? 0.0 : c.ideal_json["nmse"].get<double>();
+        c.total_ms = j["total_ms"].get<std::vector<double>>();
+        c.kernel_ms = j["kernel_ms"].get<std::vector<double>>();
+      }
   }
   for (Config& c : configs) {
     c.frame_ms = median(c.total_ms);
@@ -248,7 +302,7 @@ int run_scaling(const ScalingArgs& a) {
                     {"kernel_ms_min", c.kernel_min_ms},
                     {"kernel_ms_samples", c.kernel_ms},
                     {"kernel_speedup", optional_number(kernel_speedup(c))},
-                    {"error", {{"implementation", to_json(c.ideal)}, {"method", to_json(c.exact)}}}});
+                    {"error", {{"implementation", c.ideal_json}, {"method", c.exact_json}}}});
   }
   const GeometryStats& geo = configs.front().geometry;
   const nlohmann::json report = {
@@ -269,7 +323,9 @@ int run_scaling(const ScalingArgs& a) {
       {"speedup_note", "classic in the same arithmetic divided by the configuration (modeled clocks, frame_ms, "
                        "kernel_ms); null when classic is not in the list"},
       {"rows", rows}};
-  if (!a.report.empty()) write_text_atomically(a.report, report.dump(2) + "\n");
+  step([&] {
+    if (!a.report.empty()) write_text_atomically(a.report, report.dump(2) + "\n");
+  });
 
   std::printf("%s: %dx%d, %llu triangles (%llu after culling and clipping), %s through modeled shading units\n",
               scene.name.c_str(), scene.width, scene.height, (unsigned long long)geo.triangles_in,
@@ -325,6 +381,9 @@ Command add_scaling_command(CLI::App& app) {
   cmd->add_option("--report", a->report, "Write a JSON report: every row, the device");
   cmd->add_flag("--float", a->float_output, "Error of the unclamped float values instead of the 8-bit image");
   cmd->add_flag("--markdown", a->markdown, "Print the table as Markdown");
+  cmd->add_flag("--mpi", a->mpi,
+                "Under mpirun: deal the configurations across the ranks (configuration i on rank i mod N); rank 0 "
+                "writes the merged report and table (docs/distributed.md)");
   cmd->add_flag("-q,--quiet", a->quiet, "No progress lines");
   return {cmd, [a]() { return run_scaling(*a); }};
 }

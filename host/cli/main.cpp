@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
                  "Run with --help for more information.\n";
     return int(ExitCode::usage);
   } catch (const Error& e) {
-    std::cerr << "parashade: error: " << e.what() << "\n";
+    if (*e.what()) std::cerr << "parashade: error: " << e.what() << "\n";  // empty: MPI ranks stopped, rank 0 said why
     return int(e.code());
   } catch (const std::bad_alloc&) {
     std::cerr << "parashade: error: out of host memory\n";

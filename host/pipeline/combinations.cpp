@@ -19,7 +19,7 @@ const std::vector<std::string> kValues[kAxes] = {
     {"none", "per-triangle"},                                                                    // choice
     {"off", "on"},                                                                               // highlight
     {"none", "planned"},                                                                         // plan
-    {"one", "bands", "unit-sub-devices"},                                                        // devices
+    {"one", "bands", "unit-sub-devices", "ranks-sort-first", "ranks-sort-last"},                 // devices
 };
 const char* const kAxisNames[kAxes] = {"method", "unit", "arith", "coverage", "division", "normalize",
                                        "specular", "choice", "highlight", "plan", "devices"};
@@ -29,7 +29,7 @@ constexpr std::uint32_t kAll = ~std::uint32_t(0);
 constexpr std::uint32_t kFlat = 1, kGouraud = 2, kPhong = 4, kCombined = 8;
 constexpr std::uint32_t kNoUnit = 1, kSierpinski = 64, kInterleaveOwn = 16, kAnyUnit = kAll & ~kNoUnit;
 constexpr std::uint32_t kFloat = 1, kDda = 2, kPerSpan = 2, kModel = 2, kPerTriangle = 2, kOn = 2, kPlanned = 2;
-constexpr std::uint32_t kNoPlan = 1, kBands = 2, kUnitSubDevices = 4;
+constexpr std::uint32_t kNoPlan = 1, kBands = 2, kUnitSubDevices = 4, kRanksSortFirst = 8, kRanksSortLast = 16;
 
 struct Pattern {
   Axis axis;
@@ -77,6 +77,19 @@ const std::vector<Refusal> kRefused = {
            "planned units run on one device, or on the sub-devices of one (sub:NAME:N), not in bands across devices"),
     refuse({{Axis::plan, kNoPlan}, {Axis::devices, kUnitSubDevices}},
            "sub-devices run a plan's units; without a plan, sub-devices take bands of the frame"),
+    // MPI ranks (docs/distributed.md): sort-first ranks take bands of tile rows, sort-last ranks
+    // composite the planned frame's depth keys of their share of the triangles.
+    refuse({{Axis::plan, kPlanned}, {Axis::devices, kRanksSortFirst}},
+           "sort-first ranks take bands of the frame, and a band's plan is not modeled (use --distribute sort-last)"),
+    refuse({{Axis::method, kCombined}, {Axis::devices, kRanksSortLast}},
+           "sort-last ranks composite the planned frame's depth keys, and combined's span walk has no planned depth "
+           "pass (use --distribute sort-first)"),
+    refuse({{Axis::coverage, kDda}, {Axis::devices, kRanksSortLast}},
+           "sort-last ranks composite the planned frame's depth keys, and dda's row table has no planned depth pass "
+           "(use --distribute sort-first)"),
+    refuse({{Axis::unit, kSierpinski}, {Axis::devices, kRanksSortLast}},
+           "sort-last ranks composite the planned frame's depth keys, and the extra triangulation's sub-triangle "
+           "copies have none (use --distribute sort-first)"),
 };
 
 std::uint8_t unit_value(const FrameConfig& c) {

@@ -94,12 +94,14 @@ struct ChunkOutput {
   std::vector<glm::vec3> flat_color;
   std::vector<ClipVertex> new_vertices;
   std::vector<Snapped> new_snapped;
+  std::vector<std::uint32_t> face;  // per triangle: its scene face (ScreenGeometry::face)
   GeometryStats stats;
 };
 
 struct ChunkJob {
   std::size_t object;
   std::size_t first, count;  // triangles of that object
+  std::size_t face_first;    // scene face index of `first` (objects' faces concatenated)
 };
 
 class Assembler {
@@ -134,6 +136,7 @@ class Assembler {
         ++out.stats.clipped;
         clip_and_emit(tri, std::uint8_t(o0 | o1 | o2), obj.material, flat, src, out);
       }
+      out.face.resize(out.triangles.size(), std::uint32_t(job.face_first + (t - job.first)));
     }
   }
 
@@ -344,10 +347,12 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
   // Primitive assembly in chunks, merged in order.
   constexpr std::size_t kChunk = 16384;
   std::vector<ChunkJob> jobs;
+  std::size_t face_base = 0;
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     const std::size_t count = scene.objects[o].mesh->triangles.size();
     for (std::size_t first = 0; first < count; first += kChunk)
-      jobs.push_back({o, first, std::min(kChunk, count - first)});
+      jobs.push_back({o, first, std::min(kChunk, count - first), face_base + first});
+    face_base += count;
   }
   std::vector<ChunkOutput> outputs(jobs.size());
   std::vector<std::uint8_t> used(needs.color ? vertex_count : 0, 0);
@@ -392,6 +397,7 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
   resize_if(g.color, needs.color, total_vertices);
   g.triangles.resize(tri_total);
   g.material.resize(tri_total);
+  g.face.resize(tri_total);
   g.flat_color.resize(needs.flat ? tri_total : 0);
 
   parallel_for(outputs.size(), [&](std::size_t j) {
@@ -411,6 +417,7 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
       const glm::uvec3 tri = out.triangles[t];
       g.triangles[tri_offset[j] + t] = {remap(tri.x), remap(tri.y), remap(tri.z)};
       g.material[tri_offset[j] + t] = out.material[t];
+      g.face[tri_offset[j] + t] = out.face[t];
       if (needs.flat) g.flat_color[tri_offset[j] + t] = out.flat_color[t];
     }
   });

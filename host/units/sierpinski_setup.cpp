@@ -81,12 +81,14 @@ std::uint64_t normalize_vertex_parity(ScreenGeometry& g, int depth, bool odd) {
     g.triangles[kept] = tri;
     if (!g.material.empty()) g.material[kept] = g.material[t];
     if (!g.flat_color.empty()) g.flat_color[kept] = g.flat_color[t];
+    if (!g.face.empty()) g.face[kept] = g.face[t];
     ++kept;
   }
   const std::uint64_t dropped = g.triangles.size() - kept;
   g.triangles.resize(kept);
   if (!g.material.empty()) g.material.resize(kept);
   if (!g.flat_color.empty()) g.flat_color.resize(kept);
+  if (!g.face.empty()) g.face.resize(kept);
   return dropped;
 }
 

@@ -19,8 +19,10 @@ enum class Axis { method, unit, arith, coverage, division, normalize, specular, 
 constexpr int kAxes = 11;
 
 // How a frame is spread over devices: one device; bands of tile rows over a device list or over
-// sub-devices (split_renderer.hpp); or the units' depth pass of a plan over sub-devices (docs/planner.md).
-enum class DeviceMode { one, bands, unit_sub_devices };
+// sub-devices (split_renderer.hpp); or the units' depth pass of a plan over sub-devices (docs/planner.md);
+// or MPI ranks, sort-first (bands) or sort-last (shares of the triangles, depth keys composited;
+// docs/distributed.md).
+enum class DeviceMode { one, bands, unit_sub_devices, ranks_sort_first, ranks_sort_last };
 
 // A configuration as a point on the axes: per axis the index of its value (axis_values).
 struct Combination {

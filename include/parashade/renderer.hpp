@@ -56,6 +56,9 @@ class Renderer : private FrameStorage {
   const RenderOptions& options() const { return options_; }
   // Work-items the kernel runs with for a frame of `tiles` tiles.
   int work_items(int tiles) const;
+  // A planned frame's depth keys after render() (kernels/plan_key.h: per pixel, row-major, the least
+  // (depth, record index) key, PLAN_NO_KEY where nothing covers it): what sort-last ranks composite.
+  std::vector<std::uint64_t> plan_keys(const Scene& scene);
 
  private:
   // FrameStorage: the record buffers and the tile list, mapped for the host stages (one round trip).

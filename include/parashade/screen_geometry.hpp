@@ -56,6 +56,8 @@ struct ScreenGeometry {
   // Per screen triangle, in primitive order (the order of the scene's objects and faces).
   std::vector<glm::uvec3> triangles;   // vertex indices, ordered so that E01(V2) > 0
   std::vector<std::uint32_t> material; // index into Scene::materials
+  std::vector<std::uint32_t> face;     // the scene face it comes from (objects' faces concatenated; a
+                                       // clipped face's pieces share it): sort-last ranks' depth ties
   std::vector<glm::vec3> flat_color;   // Flat: the triangle's value in levels (centroid, face normal)
   GeometryStats stats;
 };

@@ -93,6 +93,19 @@ std::vector<Refused> refused_cases() {
   c.band_rows = 2;  // a band of a frame is a device list's share
   add("plan on a band", c, {"planned", "bands"});
   add("sub-devices for units without a plan", config(Method::gouraud), {"unit-sub-devices"}, DeviceMode::unit_sub_devices);
+  // MPI ranks (docs/distributed.md)
+  c = config(Method::gouraud);
+  c.plan = PlanOptions{};
+  add("plan on sort-first ranks", c, {"planned", "ranks-sort-first"}, DeviceMode::ranks_sort_first);
+  c = config(Method::combined);
+  c.combined = parse_combined("combined:2");
+  add("combined on sort-last ranks", c, {"combined", "ranks-sort-last"}, DeviceMode::ranks_sort_last);
+  c = config(Method::gouraud);
+  c.dda_coverage = true;
+  add("dda on sort-last ranks", c, {"dda", "ranks-sort-last"}, DeviceMode::ranks_sort_last);
+  c = config(Method::gouraud);
+  c.units = parse_units("sierpinski:1");
+  add("sierpinski on sort-last ranks", c, {"sierpinski:1", "ranks-sort-last"}, DeviceMode::ranks_sort_last);
   return out;
 }
 
@@ -150,6 +163,16 @@ TEST(Combinations, ModeledConfigurationsPass) {
   c.plan = PlanOptions{};
   EXPECT_NO_THROW(check_frame_config(c, DeviceMode::unit_sub_devices));
   EXPECT_NO_THROW(check_frame_config(config(Method::flat), DeviceMode::bands));
+  // MPI ranks: combined and dda by bands (sort-first), fixed-point units by depth keys (sort-last).
+  FrameConfig combined = config(Method::combined);
+  combined.combined = parse_combined("combined:2");
+  EXPECT_NO_THROW(check_frame_config(combined, DeviceMode::ranks_sort_first));
+  FrameConfig fixed_unit = config(Method::gouraud);
+  fixed_unit.units = parse_units("counter");
+  fixed_unit.arith = parse_arith("fixed:12.12");
+  EXPECT_NO_THROW(check_frame_config(fixed_unit, DeviceMode::ranks_sort_last));
+  fixed_unit.plan = PlanOptions{};
+  EXPECT_NO_THROW(check_frame_config(fixed_unit, DeviceMode::ranks_sort_last));
 }
 
 TEST(Combinations, ValuesOutOfRangeAreUsageErrors) {

@@ -1,0 +1,175 @@
+#!/usr/bin/env python3
+"""Measures render --distribute for N = 1..4 ranks on this host, fits the α–β cost model of
+docs/distributed.md from an MPI ping-pong, checks it against the measured runs and predicts 16..1024 ranks
+for a 100-million-triangle scene at 3840x2160.
+
+    OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 PARASHADE_MESH_DIR=/path/to/shared/meshes \\
+        scripts/distributed_model.py --build build --scene scenes/bunny.json --size 1920x1080 \\
+        --json distributed-model.json --plot docs/distributed-scaling.png
+
+Prints the Markdown tables docs/distributed.md quotes. Needs mpirun and, for --plot, python3-matplotlib.
+"""
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+
+def sh(cmd):
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    if p.returncode != 0:
+        sys.exit("failed (%d): %s\n%s" % (p.returncode, " ".join(cmd), p.stderr))
+    return p.stdout
+
+
+def composite_model(mode, n_ranks, pixels, a):
+    """Seconds to composite: ring reduce-scatter of 16-byte keys + gather (sort-last), gather of the
+    bands' 4-byte pixels (sort-first). a: alpha, beta, gamma."""
+    N = n_ranks
+    if N == 1:
+        return 0.0
+    f = (N - 1) / N
+    if mode == "sort-last":
+        return 2 * (N - 1) * a["alpha"] + 2 * f * 16 * pixels * a["beta"] + f * pixels * a["gamma"]
+    return (N - 1) * a["alpha"] + f * 4 * pixels * a["beta"]
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--scene", default="scenes/bunny.json")
+    ap.add_argument("--size", default="1920x1080")
+    ap.add_argument("--frames", type=int, default=5)
+    ap.add_argument("--ranks", default="1,2,3,4")
+    ap.add_argument("--cores", type=int, default=os.cpu_count())
+    ap.add_argument("--json")
+    ap.add_argument("--plot")
+    args = ap.parse_args()
+    mpirun = ["mpirun", "--oversubscribe"]
+    binary = os.path.join(args.build, "parashade")
+
+    pp = json.loads(sh(mpirun + ["-np", "2", os.path.join(args.build, "parashade_mpi_ping_pong")]))
+    a = {"alpha": pp["alpha_small_message_s"], "beta": pp["beta_s_per_byte"], "gamma": pp["gamma_s_per_pixel"]}
+    w, h = map(int, args.size.split("x"))
+    pixels = w * h
+
+    runs = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        for mode in ("sort-last", "sort-first"):
+            for n in map(int, args.ranks.split(",")):
+                rep = os.path.join(tmp, "r.json")
+                sh(mpirun + ["-np", str(n), binary, "render", args.scene, "-o", os.path.join(tmp, "i.png"),
+                             "--size", args.size, "--no-error", "-q", "--no-tuned", "--frames", str(args.frames),
+                             "--warmup", "1", "--distribute", mode, "--report", rep])
+                runs[(mode, n)] = json.load(open(rep))
+
+    # Model of a rank's compute on this host, in core-ms (a rank's wall ms x its share of the C cores:
+    # C/N for N ranks on C cores, whether they split the cores or time-share them):
+    #   prepare: p x records on the rank (sort-last: R/N; sort-first: every rank prepares all R)
+    #   render:  a x P + s x P / N (a: full-screen passes every rank makes; s: shading, divided)
+    # p, a and s fitted over every N (median; least squares in 1/N). Composite: alpha-beta-gamma from the
+    # ping-pong, nothing fitted, compared with the measured composite; pack (sort-last, local) from N = 1.
+    C = args.cores
+    out = {"alpha_beta": a, "ping_pong": pp, "pixels": pixels, "cores": C, "runs": {}, "model": {},
+           "prediction": {}}
+    rows = []
+    for mode in ("sort-last", "sort-first"):
+        ns = sorted(n for (m, n) in runs if m == mode)
+        worst = lambda n, key: max(p[key] for p in runs[(mode, n)]["per_rank"])
+        core = lambda n, key: worst(n, key) * C / n
+        R = runs[(mode, ns[0])]["per_rank"][0]["records"]
+        recs = lambda n: R / n if mode == "sort-last" else R
+        # Least squares over every N (this loaded machine's single runs are too noisy for a two-point fit).
+        p_rec = sorted(core(n, "prepare_ms") / recs(n) for n in ns)[len(ns) // 2]
+        xs, ys = [1 / n for n in ns], [core(n, "render_ms") / pixels for n in ns]
+        mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+        s_px = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
+        a_px = my - s_px * mx
+        if a_px < 0:
+            a_px, s_px = 0.0, sum(y / x for x, y in zip(xs, ys)) / len(xs)
+        pack = worst(ns[0], "pack_ms") * C / ns[0] / pixels if mode == "sort-last" else 0.0
+        out["model"][mode] = {"prepare_core_ms_per_record": p_rec, "render_core_ms_per_pixel_fixed": a_px,
+                              "render_core_ms_per_pixel_divided": s_px, "pack_core_ms_per_pixel": pack,
+                              "fitted_on": ns}
+        for n in ns:
+            r = runs[(mode, n)]
+            recs = R / n if mode == "sort-last" else R
+            model_compute = (p_rec * recs + a_px * pixels + s_px * pixels / n) * n / C
+            model_pack = pack * pixels * n / C
+            model_comp = composite_model(mode, n, pixels, a) * 1e3
+            meas_comp = max(p["composite_ms"] for p in r["per_rank"])
+            meas_compute = max(p["prepare_ms"] + p["render_ms"] for p in r["per_rank"])
+            rows.append((mode, n, r["frame_ms"], model_compute + model_pack + model_comp, meas_compute, model_compute,
+                         max(p.get("pack_ms", 0) for p in r["per_rank"]), model_pack, meas_comp, model_comp,
+                         r["imbalance"]["render_ms"], sum(p["bytes_sent"] for p in r["per_rank"]),
+                         max(p["records"] for p in r["per_rank"]), max(p["peak_rss_mb"] for p in r["per_rank"])))
+            out["runs"]["%s/%d" % (mode, n)] = r
+
+    print("ping-pong (np 2, one host): alpha %.2f us, beta %.3f ns/byte (%.2f GB/s), gamma %.2f ns/pixel" %
+          (a["alpha"] * 1e6, a["beta"] * 1e9, 1 / a["beta"] / 1e9, a["gamma"] * 1e9))
+    for mode, m in out["model"].items():
+        print("%s: prepare %.3g core-us/record, render %.3g + %.3g/N core-ns/pixel, pack %.3g core-ns/pixel" %
+              (mode, m["prepare_core_ms_per_record"] * 1e3, m["render_core_ms_per_pixel_fixed"] * 1e6,
+               m["render_core_ms_per_pixel_divided"] * 1e6, m["pack_core_ms_per_pixel"] * 1e6))
+    print()
+    print("| mode | N | frame ms measured | frame ms model | compute ms measured | compute ms model | pack ms measured "
+          "| pack ms model | composite ms measured | composite ms model (α–β) | render imbalance | bytes sent "
+          "(all ranks) | records (largest rank) | peak RSS MB (largest rank) |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for r in rows:
+        print("| %s | %d | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.2f | %.2f | %.2f | %d | %d | %.0f |" % r)
+
+    # Prediction: 100M triangles at 3840x2160, one rank per node of this VM's kind (C cores), the
+    # per-record and per-pixel costs above, the ping-pong's alpha, beta, gamma.
+    T, P = 100e6, 3840 * 2160
+    print()
+    print("| ranks | sort-last frame ms | of which composite + pack | sort-first frame ms | of which composite | "
+          "records per rank sort-last / sort-first |")
+    print("|---:|---:|---:|---:|---:|---|")
+    pred = []
+    sl, sf = out["model"]["sort-last"], out["model"]["sort-first"]
+    for N in [1, 16, 32, 64, 128, 256, 512, 1024]:
+        sl_c = composite_model("sort-last", N, P, a) * 1e3 + sl["pack_core_ms_per_pixel"] * P / C
+        sf_c = composite_model("sort-first", N, P, a) * 1e3
+        sl_t = (sl["prepare_core_ms_per_record"] * T / N + sl["render_core_ms_per_pixel_fixed"] * P +
+                sl["render_core_ms_per_pixel_divided"] * P / N) / C + sl_c
+        sf_t = (sf["prepare_core_ms_per_record"] * T + sf["render_core_ms_per_pixel_fixed"] * P +
+                sf["render_core_ms_per_pixel_divided"] * P / N) / C + sf_c
+        pred.append((N, sl_t, sl_c, sf_t, sf_c, "%.2g / %.2g" % (T / N, T)))
+        print("| %d | %.0f | %.0f | %.0f | %.0f | %s |" % pred[-1])
+    out["prediction"]["table"] = pred
+
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump(out, f, indent=1)
+    if args.plot:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4))
+        for mode, mk in (("sort-last", "o"), ("sort-first", "s")):
+            rr = [r for r in rows if r[0] == mode]
+            ax1.plot([r[1] for r in rr], [r[2] for r in rr], mk + "-", label=mode + " measured")
+            ax1.plot([r[1] for r in rr], [r[8] for r in rr], mk + ":", label=mode + " composite measured")
+            ax1.plot([r[1] for r in rr], [r[9] for r in rr], "x:", label=mode + " composite α–β")
+            ax1.plot([r[1] for r in rr], [r[3] for r in rr], mk + "--", label=mode + " model")
+        ax1.set_xlabel("ranks (one 2-core host)")
+        ax1.set_ylabel("frame ms")
+        ax1.set_title("measured vs model, " + os.path.basename(args.scene) + " " + args.size)
+        ax1.legend(fontsize=8)
+        ax2.loglog([p[0] for p in pred], [p[1] for p in pred], "o-", label="sort-last")
+        ax2.loglog([p[0] for p in pred], [p[2] for p in pred], "o:", label="sort-last composite")
+        ax2.loglog([p[0] for p in pred], [p[3] for p in pred], "s-", label="sort-first")
+        ax2.loglog([p[0] for p in pred], [p[4] for p in pred], "s:", label="sort-first composite")
+        ax2.set_xlabel("ranks")
+        ax2.set_ylabel("predicted frame ms")
+        ax2.set_title("prediction: 100M triangles, 3840x2160")
+        ax2.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(args.plot, dpi=100)
+
+
+main()

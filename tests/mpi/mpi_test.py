@@ -1,0 +1,206 @@
+#!/usr/bin/env python3
+"""The mpi label (docs/distributed.md): `render --distribute` under mpirun against the one-process render.
+
+    mpi_test.py PARASHADE SOURCE_DIR MPIEXEC GROUP
+
+GROUP is one of sort-last, sort-first, faults, sweep. The expected images come from the one-process render
+(`parashade render` without MPI), never from the distributed code; images are compared byte for byte.
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+PARASHADE, SOURCE, MPIEXEC, GROUP = sys.argv[1:5]
+SCENE = os.path.join(SOURCE, "scenes", "teapot.json")
+SIZE = "160x120"
+TIMEOUT = 90  # per run: a hang is a failure, not a stuck CI job
+failures = []
+
+
+def run(cmd, env=None):
+    e = dict(os.environ)
+    e.update(env or {})
+    t0 = time.time()
+    try:
+        p = subprocess.run(cmd, capture_output=True, text=True, timeout=TIMEOUT, env=e)
+    except subprocess.TimeoutExpired:
+        return 124, "", "TIMEOUT after %d s: %s" % (TIMEOUT, " ".join(cmd))
+    print("  %.1fs rc=%d %s" % (time.time() - t0, p.returncode, " ".join(cmd[cmd.index(PARASHADE):][:14])), flush=True)
+    return p.returncode, p.stdout, p.stderr
+
+
+def mpirun(np, args, per_rank_env=None):
+    """mpirun -np NP parashade ARGS; per_rank_env {rank: {VAR: value}} runs those ranks with extra variables
+    (MPMD: one app context per rank)."""
+    base = [MPIEXEC, "--oversubscribe"]
+    if not per_rank_env:
+        return run(base + ["-np", str(np), PARASHADE] + args)
+    cmd = list(base)
+    for r in range(np):
+        if cmd != base:
+            cmd.append(":")
+        cmd += ["-np", "1"]
+        for k, v in per_rank_env.get(r, {}).items():
+            cmd += ["-x", "%s=%s" % (k, v)]
+        cmd += [PARASHADE] + args
+    return run(cmd)
+
+
+def check(cond, what):
+    if not cond:
+        failures.append(what)
+        print("FAIL: " + what, flush=True)
+
+
+def same_bytes(a, b):
+    with open(a, "rb") as fa, open(b, "rb") as fb:
+        return fa.read() == fb.read()
+
+
+COMMON = ["--size", SIZE, "--no-error", "-q", "--no-tuned", "--warmup", "0"]
+
+# A scene whose every pixel of the ball is a depth tie: the same sphere twice, red then blue. The
+# one-process frame keeps the first in primitive order (red); sort-last ranks must too, whichever rank
+# holds which copy.
+TIE_SCENE = {
+    "name": "tie", "resolution": [160, 120], "background": [0.1, 0.1, 0.1],
+    "camera": {"position": [0, 0, 4], "target": [0, 0, 0], "fov": 40, "near": 0.5, "far": 20},
+    "lights": [{"type": "directional", "direction": [1, -1, -1], "color": [1, 1, 1], "intensity": 0.9}],
+    "materials": {"red": {"color": [0.9, 0.1, 0.1], "ka": 0.1, "kd": 0.7, "ks": 0.4, "n": 20},
+                  "blue": {"color": [0.1, 0.1, 0.9], "ka": 0.1, "kd": 0.7, "ks": 0.4, "n": 20}},
+    "objects": [{"shape": {"type": "sphere", "slices": 16, "stacks": 9}, "material": "red"},
+                {"shape": {"type": "sphere", "slices": 16, "stacks": 9}, "material": "blue"}],
+}
+
+
+def identity(tmp, mode, cases):
+    """cases: (label, scene, render options, [(np, extra distributed options)])."""
+    for label, scene, opts, runs in cases:
+        one = os.path.join(tmp, "one.png")
+        rc, out, err = run([PARASHADE, "render", scene, "-o", one, "--frames", "1"] + COMMON + opts)
+        check(rc == 0, "%s: one-process render failed: %s" % (label, err.strip()))
+        if rc != 0:
+            continue
+        for np, extra in runs:
+            img = os.path.join(tmp, "d%d.png" % np)
+            rep = os.path.join(tmp, "d%d.json" % np)
+            rc, out, err = mpirun(np, ["render", scene, "-o", img, "--report", rep, "--frames", "2",
+                                       "--distribute", mode] + COMMON + opts + extra)
+            check(rc == 0, "%s np=%d %s: exit %d: %s" % (label, np, " ".join(extra), rc, err.strip()))
+            if rc != 0:
+                continue
+            check(same_bytes(one, img), "%s np=%d %s: image differs from the one-process render" %
+                  (label, np, " ".join(extra)))
+            r = json.load(open(rep))
+            check(r["ranks"] == np and len(r["per_rank"]) == np, "%s np=%d: report names %s ranks" % (label, np, r["ranks"]))
+            if mode == "sort-last":
+                faces = sum(p["faces"] for p in r["per_rank"])
+                check(faces == r["faces"], "%s np=%d: ranks hold %d of %d faces" % (label, np, faces, r["faces"]))
+            else:
+                rows = sum(p["band_tile_rows"] for p in r["per_rank"])
+                check(rows == (120 + 15) // 16, "%s np=%d: bands cover %d tile rows" % (label, np, rows))
+            os.remove(img)
+
+
+def main():
+    with tempfile.TemporaryDirectory() as tmp:
+        tie = os.path.join(tmp, "tie.json")
+        with open(tie, "w") as f:
+            json.dump(TIE_SCENE, f)
+        if GROUP == "sort-last":
+            identity(tmp, "sort-last", [
+                ("gouraud float", SCENE, [], [(1, []), (2, []), (3, ["--rank-partition", "round-robin"]),
+                                              (4, ["--rank-partition", "dynamic", "--batch", "256"])]),
+                ("depth ties", tie, [], [(3, ["--rank-partition", "round-robin"]), (2, ["--rank-partition", "lpt"])]),
+                ("phong float", SCENE, ["--method", "phong"], [(3, [])]),
+                ("flat", SCENE, ["--method", "flat"], [(2, [])]),
+                ("counter fixed:12.12", SCENE, ["--units", "counter", "--arith", "fixed:12.12"], [(4, [])]),
+                ("segment:4 fixed, --cu 2", SCENE, ["--units", "segment:4", "--arith", "fixed", "--cu", "2"], [(2, [])]),
+                ("phong classic unit", SCENE, ["--method", "phong", "--units", "classic"], [(2, [])]),
+            ])
+        elif GROUP == "sort-first":
+            identity(tmp, "sort-first", [
+                ("gouraud float", SCENE, [], [(1, []), (2, []), (3, []), (4, [])]),
+                ("depth ties", tie, [], [(3, [])]),
+                ("combined:2", SCENE, ["--method", "combined:2"], [(3, [])]),
+                ("dda fixed", SCENE, ["--coverage", "dda", "--arith", "fixed"], [(2, [])]),
+                ("sierpinski:1", SCENE, ["--units", "sierpinski:1"], [(3, [])]),
+                ("phong slerp", SCENE, ["--method", "phong", "--normalize", "slerp"], [(2, [])]),
+            ])
+        elif GROUP == "faults":
+            img = os.path.join(tmp, "f.png")
+            args = ["render", SCENE, "-o", img, "--frames", "1"] + COMMON
+            # A device that fails on one rank (every kernel build there fails) stops every rank.
+            for mode, np, bad in (("sort-last", 3, 1), ("sort-first", 2, 1), ("sort-last", 2, 0)):
+                rc, out, err = mpirun(np, args + ["--distribute", mode],
+                                      {bad: {"PARASHADE_FAIL_DEVICE": "pthread"}})
+                check(rc == 4, "%s: failing device on rank %d: exit %d (want 4): %s" % (mode, bad, rc, err.strip()))
+                check("rank %d of %d" % (bad, np) in err and "PARASHADE_FAIL_DEVICE" in err,
+                      "%s: the message names neither rank %d nor the cause: %s" % (mode, bad, err.strip()))
+                check(not os.path.exists(img), "%s: an image was written after a rank failed" % mode)
+            # Bad input on one rank only (its scene file is missing) and on every rank.
+            missing = os.path.join(tmp, "missing.json")
+            cmd = [MPIEXEC, "--oversubscribe", "-np", "1", PARASHADE] + args + ["--distribute", "sort-last"] + \
+                  [":", "-np", "1", PARASHADE, "render", missing, "-o", img, "--frames", "1"] + COMMON + \
+                  ["--distribute", "sort-last"]
+            rc, out, err = run(cmd)
+            check(rc == 3, "bad input on rank 1: exit %d (want 3): %s" % (rc, err.strip()))
+            check("rank 1 of 2" in err and "missing.json" in err, "bad input on rank 1 not named: %s" % err.strip())
+            check(not os.path.exists(img), "an image was written after bad input on rank 1")
+            rc, out, err = mpirun(2, ["render", missing, "-o", img, "--distribute", "sort-first"] + COMMON)
+            check(rc == 3 and "ranks 0, 1 of 2" in err, "bad input on every rank: exit %d: %s" % (rc, err.strip()))
+            # Refused combinations and options: exit 2 with the reason, before any work.
+            for opts, words in ((["--distribute", "sort-last", "--method", "combined:2"], ["ranks-sort-last", "combined"]),
+                                (["--distribute", "sort-last", "--coverage", "dda"], ["sort-last", "dda"]),
+                                (["--distribute", "sort-last", "--units", "sierpinski:1"], ["sort-last", "sierpinski"]),
+                                (["--distribute", "sort-first", "--cu", "2"], ["sort-first", "band"]),
+                                (["--distribute", "sort-last", "--rank-partition", "tiles"], ["tiles"]),
+                                (["--distribute", "sort-middle"], ["sort-middle"]),
+                                (["--distribute", "sort-last", "--float"], ["--float"])):
+                rc, out, err = mpirun(2, args + opts)
+                check(rc == 2, "%s: exit %d (want 2): %s" % (" ".join(opts), rc, err.strip()))
+                check(all(w in err for w in words), "%s: message lacks %s: %s" % (" ".join(opts), words, err.strip()))
+                check(not os.path.exists(img), "%s: an image was written" % " ".join(opts))
+        elif GROUP == "sweep":
+            # scaling --mpi deals its configurations across the ranks; rank 0's merged report must equal the
+            # one-process report up to the timing fields (and the device's compute units: each rank gets its
+            # share of the cores).
+            timing = {"frame_ms", "frame_ms_min", "frame_ms_samples", "measured_speedup", "kernel_ms",
+                      "kernel_ms_min", "kernel_ms_samples", "kernel_speedup"}
+
+            def untimed(path):
+                r = json.load(open(path))
+                r["device"].pop("compute_units")
+                r["rows"] = [{k: v for k, v in row.items() if k not in timing} for row in r["rows"]]
+                return r
+            args = ["scaling", SCENE, "--size", SIZE, "--frames", "1", "--warmup", "1", "-q",
+                    "--units", "classic,counter,segment:4,interleave:2", "--arith", "float,fixed"]
+            one = os.path.join(tmp, "one.json")
+            rc, out, err = run([PARASHADE] + args + ["--report", one])
+            check(rc == 0, "unsharded scaling failed: " + err.strip())
+            for np in (2, 3):
+                rep = os.path.join(tmp, "m%d.json" % np)
+                rc, out, err = mpirun(np, args + ["--mpi", "--report", rep])
+                check(rc == 0, "scaling --mpi np=%d: exit %d: %s" % (np, rc, err.strip()))
+                if rc == 0:
+                    a, b = untimed(one), untimed(rep)
+                    check(a == b, "scaling --mpi np=%d: merged report differs beyond timings: %s" %
+                          (np, [k for k in a if a[k] != b.get(k)]))
+                    check(out.count("wrote ") == 1, "scaling --mpi np=%d: %d ranks printed the table" % (np, out.count("wrote ")))
+            rep = os.path.join(tmp, "fail.json")
+            rc, out, err = mpirun(3, args + ["--mpi", "--report", rep], {2: {"PARASHADE_FAIL_DEVICE": "pthread"}})
+            check(rc == 4 and "rank 2 of 3" in err and "PARASHADE_FAIL_DEVICE" in err,
+                  "scaling --mpi with a failing rank 2: exit %d: %s" % (rc, err.strip()))
+            check(not os.path.exists(rep), "scaling --mpi wrote a report after rank 2 failed")
+        else:
+            sys.exit("unknown group " + GROUP)
+    if failures:
+        print("%d failure(s)" % len(failures))
+        sys.exit(1)
+    print("ok")
+
+
+main()
