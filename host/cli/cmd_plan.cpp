@@ -28,7 +28,7 @@ int run_plan(const PlanCommandArgs& a) {
   // The frame as render prepares it for Gouraud (the planner costs the unit's spans); each plan below.
   FrameConfig config;
   config.tile_size = a.tile;
-  if (!a.units.empty()) config.units = parse_units(a.units);
+  if (!a.units.empty()) config.units = for_option("--units", [&] { return parse_units(a.units); });
   const UnitConfig unit = config.unit();
   const std::vector<PlanOptions> list = plan_option_list(a.plan);
   for (const PlanOptions& o : list) {

@@ -97,16 +97,17 @@ int run_render(const RenderArgs& a) {
     if (!(a.max_error > 0 && a.max_error <= 255)) throw UsageError("--max-error must be in (0, 255] levels");
     options.combined.max_error = a.max_error;
   }
-  if (!a.triangle_choice.empty()) parse_triangle_rule(a.triangle_choice, options.combined);
-  if (!a.units.empty()) options.units = parse_units(a.units);
-  options.arith = parse_arith(a.arith);
-  options.division = parse_division(a.division);
+  if (!a.triangle_choice.empty())
+    for_option("--triangle-choice", [&] { parse_triangle_rule(a.triangle_choice, options.combined); });
+  if (!a.units.empty()) options.units = for_option("--units", [&] { return parse_units(a.units); });
+  options.arith = for_option("--arith", [&] { return parse_arith(a.arith); });
+  options.division = for_option("--div", [&] { return parse_division(a.division); });
   if (a.coverage != "centre" && a.coverage != "dda")
     throw UsageError("unknown coverage '" + a.coverage + "' (valid: centre, dda)");
   options.dda_coverage = a.coverage == "dda";
   options.plan = plan_options(a.plan);
-  options.specular = parse_specular(a.specular);
-  options.normalize = parse_normalize(a.normalize);
+  options.specular = for_option("--specular", [&] { return parse_specular(a.specular); });
+  options.normalize = for_option("--normalize", [&] { return parse_normalize(a.normalize); });
   const auto size = parse_size(a.size);
   if (a.frames < 1) throw UsageError("--frames must be at least 1");
   if (a.warmup < 0) throw UsageError("--warmup must not be negative");
@@ -138,7 +139,7 @@ int run_render(const RenderArgs& a) {
   SubDevices sub;  // with units_on_sub_devices: the parent (renders) and the sub-devices (run the units)
   std::vector<Device*> unit_devices;
   if (units_on_sub_devices) {
-    sub = open_sub_devices(a.device, SubDeviceContext::shared);
+    sub = for_option("--device", [&] { return open_sub_devices(a.device, SubDeviceContext::shared); });
     for (const auto& d : sub.subs) unit_devices.push_back(d.get());
   }
   auto device = units_on_sub_devices ? std::move(sub.parent) : open_device(a.device);

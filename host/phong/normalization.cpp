@@ -324,7 +324,7 @@ NormalizeMethod parse_normalize(const std::string& text) {
   static const std::regex re(
       R"((exact|slerp)|dichotomy:(exact|linear|quadratic|linear-fit|quadratic-fit)(?::(\d))?(:extrapolate)?|quadratic:(exact|quad|cubic|cubic-fit)|recurrence(-diff)?(?::(exact|table|table-fixed))?(?::(\d{1,5}))?)");
   if (!std::regex_match(text, g, re))
-    throw UsageError("--normalize '" + text +
+    throw UsageError("normalization '" + text +
                      "': expected exact, slerp, dichotomy:exact|linear|quadratic|linear-fit|quadratic-fit[:K][:extrapolate], "
                      "quadratic:exact|quad|cubic|cubic-fit or recurrence[-diff][:exact|table|table-fixed][:R]");
   if (g[1].matched) {
@@ -340,7 +340,7 @@ NormalizeMethod parse_normalize(const std::string& text) {
     if (g[3].matched) {
       m.segment_log2 = std::stoi(g[3]);
       if (m.segment_log2 < 1 || m.segment_log2 > 6)
-        throw UsageError("--normalize '" + text + "': segment size 2^K needs K in 1..6");
+        throw UsageError("normalization '" + text + "': segment size 2^K needs K in 1..6");
     }
     m.extrapolate_last = g[4].matched;
   } else if (g[5].matched) {
@@ -355,7 +355,7 @@ NormalizeMethod parse_normalize(const std::string& text) {
     m.arccos = s == "exact" ? Arccos::exact : s == "table" ? Arccos::table_source : Arccos::table_fixed;
     if (g[8].matched) {
       m.reanchor = std::stoi(g[8]);
-      if (m.reanchor < 2) throw UsageError("--normalize '" + text + "': re-anchor period R needs R >= 2");
+      if (m.reanchor < 2) throw UsageError("normalization '" + text + "': re-anchor period R needs R >= 2");
     }
   }
   return m;

@@ -84,7 +84,7 @@ SpecularModel parse_specular(const std::string& text) {
   static const std::regex re(R"((exact)|cosk:(taylor|lobe):([24])|(quadratic)|7n16(?::(\d(?:\.\d{1,3})?))?)");
   std::smatch g;
   if (!std::regex_match(text, g, re))
-    throw UsageError("--specular '" + text + "': expected exact, cosk:taylor:2|4, cosk:lobe:2|4, quadratic or 7n16[:P]");
+    throw UsageError("specular model '" + text + "': expected exact, cosk:taylor:2|4, cosk:lobe:2|4, quadratic or 7n16[:P]");
   SpecularModel m;
   if (g[1].matched) m.kind = SpecularKind::exact;
   else if (g[2].matched) {
@@ -94,7 +94,7 @@ SpecularModel parse_specular(const std::string& text) {
   else {
     m.kind = SpecularKind::sevenths;
     if (g[5].matched) m.p = std::stod(g[5]);
-    if (!(m.p >= 1.0 && m.p <= 8.0)) throw UsageError("--specular '" + text + "': exponent P must be in 1..8");
+    if (!(m.p >= 1.0 && m.p <= 8.0)) throw UsageError("specular model '" + text + "': exponent P must be in 1..8");
   }
   return m;
 }

@@ -58,7 +58,7 @@ std::optional<std::smatch> match_lanes(const std::string& spec, const char* patt
   std::smatch m;
   if (!std::regex_match(spec, m, std::regex(pattern))) return std::nullopt;
   if (!valid(std::stoi(m[1])))
-    throw UsageError("--units '" + spec + "': " + letter + " = " + m[1].str() + " is not " + rule);
+    throw UsageError("unit '" + spec + "': " + letter + " = " + m[1].str() + " is not " + rule);
   return m;
 }
 

@@ -58,7 +58,7 @@ const UnitRow& unit_row(UnitKind kind);
 
 // For a unit's parser: the match of a spec whose first group is its lane count N (`pattern`, e.g.
 // "interleave:(\d{1,3})(:own)?"), nullopt for a spec it does not match; throws UsageError
-// "--units 'SPEC': LETTER = N is not RULE" when `valid` refuses N.
+// "unit 'SPEC': LETTER = N is not RULE" when `valid` refuses N.
 std::optional<std::smatch> match_lanes(const std::string& spec, const char* pattern, const char* letter,
                                        bool (*valid)(int lanes), const char* rule);
 
