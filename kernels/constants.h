@@ -42,10 +42,13 @@
  *   offset by M for interleave:M:own with a float quotient, exact while (i + 1/2) / M stays >= 1/32 away
  *   from an integer (unit_registers.h), and setup's plane limit leaves room for 16 * dI (setup.hpp);
  * segment:P, P a power of two in 2..MAX_SEGMENT_LANES: the sources' adder table ends at P = 64 (SEEDS §4);
+ * sierpinski:D, 1 <= D <= MAX_SIERPINSKI_DEPTH: a bound we set, not a figure of the sources; setup writes
+ *   4^D sub-triangle records per triangle (64 at D = 3), and the golden tests cover D = 1..3;
  * --cu U, 1 <= U <= MAX_MODELED_UNITS: a bound the planner sets on its per-unit tables (one work list and
  *   one load entry per unit), not a figure of the sources. */
 #define MAX_INTERLEAVE_LANES 16
 #define MAX_SEGMENT_LANES 64
+#define MAX_SIERPINSKI_DEPTH 3
 #define MAX_MODELED_UNITS 4096
 
 #endif

@@ -305,7 +305,8 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("-o,--output", a->output, "Image to write; format from the extension (png, jpg, tif, ppm, exr ...)")
       ->required();
   cmd->add_option("--method", a->method,
-                  "Shading method: flat, gouraud, phong, combined:K (Phong at the ends of 2^K-pixel segments, K = 0..6), "
+                  "Shading method: flat, gouraud, phong, combined:K (Phong at the ends of 2^K-pixel segments, K = 0.." +
+                      std::to_string(kCombinedMaxK) + "), "
                   "combined:auto (K per span from --max-error); which options combine: parashade combinations")
       ->capture_default_str();
   cmd->add_option("--max-error", a->max_error,
@@ -326,14 +327,19 @@ Command add_render_command(CLI::App& app) {
                   "of the frame; with --cu, the units' depth pass on them)");
   cmd->add_flag("--keep-going", a->keep_going,
                 "With a device list (bands): drop a failing device (named) and go on with the others");
-  cmd->add_option("--size", a->size, "Resolution WIDTHxHEIGHT (at most 4096x4096), overriding the scene's");
+  cmd->add_option("--size", a->size,
+                  "Resolution WIDTHxHEIGHT (at most " + std::to_string(kMaxResolution) + "x" +
+                      std::to_string(kMaxResolution) + "), overriding the scene's");
   cmd->add_option("--report", a->report, "Write a JSON report (timings, stages, error figures)");
   cmd->add_option("--frames", a->frames, "Timed frames; the median is reported")->capture_default_str();
   cmd->add_option("--warmup", a->warmup, "Untimed frames first (program build, work-group compilation)")
       ->capture_default_str();
-  cmd->add_option("--tile", a->tile, "Screen tile size: 16, 32 or 64")->capture_default_str()->check(CLI::IsMember({16, 32, 64}));
+  cmd->add_option("--tile", a->tile, "Screen tile size: " + tile_sizes_text())
+      ->capture_default_str()
+      ->check(CLI::IsMember(tile_sizes()));
   cmd->add_option("--work-items", a->work_items,
-                  "Kernel work-items, each rendering every N-th tile (0: 16 per compute unit)")
+                  "Kernel work-items, each rendering every N-th tile (0: " + std::to_string(WORK_ITEMS_PER_COMPUTE_UNIT) +
+                      " per compute unit)")
       ->capture_default_str();
   cmd->add_option("--units", a->units,
                   "Gouraud through a modeled shading unit: " + unit_specs_help() + "; reports modeled clocks");
