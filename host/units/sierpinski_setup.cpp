@@ -1,4 +1,4 @@
-#include "parashade/sierpinski.hpp"
+#include "parashade/sierpinski_setup.hpp"
 
 #include <algorithm>
 #include <array>
