@@ -363,7 +363,7 @@ Command add_render_command(CLI::App& app) {
                   "expected error meets --max-error), sources[:M,Q,P] (the thesis's thresholds 0.9,0.004,0.008), "
                   "sources-literal[:M,Q,P] (its listing as printed), none (combined:K's default); docs/triangle-choice.md");
   cmd->add_flag("--highlight-test", a->highlight_test,
-                "combined:*: skip the specular term per triangle and light where no highlight can fall (SEEDS §8)");
+                "combined:*: skip the specular term per triangle and light where no highlight can fall ([Dembitsky 2025, software/hardware rendering] ch. 3)");
   cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
   cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");
   cmd->add_flag("-q,--quiet", a->quiet, "No progress line");

@@ -1,4 +1,4 @@
-// Unit normals along a span (SEEDS §7): exact, slerp, dichotomy, quadratic, spherical-angular
+// Unit normals along a span ([Dembitsky 2025, software/hardware rendering] ch. 2): exact, slerp, dichotomy, quadratic, spherical-angular
 // recurrence, and the polynomial approximations they use. Coefficients: docs/phong-methods.md, where
 // the "fit" ones were produced by minimax_fit (Remez) on the stated interval.
 #include "parashade/normalization.hpp"
@@ -206,7 +206,7 @@ const std::vector<PolyApprox> kMid = {
     {"cubic_source", {0.707, -0.341, 0.193, -0.059}, 0.0, 1.0},
     {"cubic_fit", {0.706818541, -0.342553233, 0.196821778, -0.0613753257}, 0.0, 1.0},
 };
-// Table 3.1 of source 000 as printed, columns read as C + B x + A x^2.
+// Table 3.1 of [Dembitsky 2025, software/hardware rendering] as printed, columns read as C + B x + A x^2.
 const std::vector<PolyApprox> kArccosSource = {
     {"0-0.5", {1.57, -0.972, -0.144}, 0.0, 0.5},
     {"0.5-0.75", {1.439, -0.447, -0.677}, 0.5, 0.75},

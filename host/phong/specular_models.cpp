@@ -1,4 +1,4 @@
-// Lower-degree specular models (SEEDS §8). The lobe rule solves
+// Lower-degree specular models ([Dembitsky 2025, software/hardware rendering] ch. 3). The lobe rule solves
 //   int_0^{pi/2} cos^n(x) sin(x) dx = 1/(n+1) = int_0^{min(pi/(2a), pi/2)} cos^k(a x) sin(x) dx
 // for a by bisection (the right side falls as a grows), with Simpson's rule for the integral.
 #include "parashade/specular_models.hpp"
