@@ -1,8 +1,8 @@
 // Per-pixel cost of the normalization methods in scalar float C++ (the host library,
 // host/phong/normalization.cpp) on spans of 16 and 256 pixels, end normals 0.3 rad apart (Google Benchmark).
-// SEEDS §7 claims per-pixel speed-ups over the exact per-pixel normalization (2-2.4x, 3.6x, 1.7x) for
+// [Dembitsky 2025, software/hardware rendering] ch. 2 claims per-pixel speed-ups over the exact per-pixel normalization (2-2.4x, 3.6x, 1.7x) for
 // software; compare items_per_second of one run (docs/phong-methods.md). mid/*: the span's middle normal
-// alone (SEEDS §7: h(r) by a quadratic, "mid normal 2.5x faster"), exact normalize(Na + Nb) against
+// alone ([Dembitsky 2025, software/hardware rendering] ch. 2: h(r) by a quadratic, "mid normal 2.5x faster"), exact normalize(Na + Nb) against
 // (Na + Nb) * h(Na.Nb) with the minimax quadratic h, over 256 normal pairs.
 #include <cmath>
 #include <string>

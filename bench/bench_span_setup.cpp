@@ -1,4 +1,4 @@
-// Host cost of Gouraud span increments per triangle (SEEDS §2 and §5), whole triangles: edge walking,
+// Host cost of Gouraud span increments per triangle ([Gouraud simplification] and [Romanyuk & Obidnyk 2011, faster shading]), whole triangles: edge walking,
 // edge intensities, span increments, pixel intensities by accumulation, 8-bit RGB pixels written to a
 // frame. Only the span increment differs between the variants:
 //   div_*         one division per span and channel, (I_R - I_L) / k (double, float, 16.16 integers);
@@ -17,7 +17,7 @@
 // (3 MB) to show what those misses do. Ratios against the division variants are printed after the run
 // (CPU time; minimum and median of the repetitions, all from this one run). On a shared machine use
 // --benchmark_repetitions=9 --benchmark_enable_random_interleaving=true.
-//   --print-table  Table 1 of source 003 recomputed, its summary claims, and the extension to other k, n
+//   --print-table  Table 1 of [Romanyuk & Obidnyk 2011, faster shading] recomputed, its summary claims, and the extension to other k, n
 //   --print-ops    operation counts for the example triangle per variant (vs the source's 408 / 42) and
 //                  each variant's pixel error against the classic method and against the exact plane
 // Both are handled before benchmark::Initialize and exit without running benchmarks.
@@ -555,7 +555,7 @@ class RatioReporter : public benchmark::ConsoleReporter {
 };
 
 // ---------------------------------------------------------------------------------------------------
-// --print-table: Table 1 of source 003 and its claims.
+// --print-table: Table 1 of [Romanyuk & Obidnyk 2011, faster shading] and its claims.
 struct PrintedRow {
   int k;
   const char* terms;
@@ -585,7 +585,7 @@ const char* mode_name(ReciprocalRounding r) { return r == ReciprocalRounding::ne
 
 void print_table() {
   using R = ReciprocalRounding;
-  std::printf("Table 1 of source 003 recomputed: k = 2..16, n = 8, dI for a 0 -> 255 ramp over k pixels\n"
+  std::printf("Table 1 of [Romanyuk & Obidnyk 2011, faster shading] recomputed: k = 2..16, n = 8, dI for a 0 -> 255 ramp over k pixels\n"
               "(error = dI_approx - dI_exact, as the source prints it; 'adds' = adder activations, i_j = 1)\n\n");
   std::printf("%3s | %-28s %8s %6s | %-28s %9s %8s %7s %4s | %-28s %9s %7s %4s\n", "k", "source: terms", "error",
               "rel%", "nearest at bit 8: terms", "dI", "error", "rel%", "adds", "truncated: terms", "error", "rel%",

@@ -1,4 +1,4 @@
-/* Blinn–Phong per pixel (SEEDS §9): I = ambient + sum_l I_l*(k_d*max(0,N.L) + k_s*max(0,N.H)^n).
+/* Blinn–Phong per pixel ([Dembitsky 2025, software/hardware rendering] §4.1): I = ambient + sum_l I_l*(k_d*max(0,N.L) + k_s*max(0,N.H)^n).
  * Lights: two float4 each — (direction toward the light | position, 0 | 1), (I_l x 255, 0).
  * Materials: three float4 each — (ambient x I_a x 255, n), (diffuse, 0), (specular, 0).
  * Specialized per scene: NUM_LIGHTS, POINT_LIGHTS (bit mask), LOCAL_VIEWER. viewer = eye position
@@ -8,7 +8,7 @@
 
 #include "specular_models.h"
 
-/* The specular term only for the lights in `needed` (a bit mask; the highlight-presence unit of SEEDS §8,
+/* The specular term only for the lights in `needed` (a bit mask; the highlight-presence unit of [Dembitsky 2025, software/hardware rendering] ch. 3,
  * highlight.hpp, clears the lights no highlight can reach in a triangle): the others add their diffuse
  * term only. The mask is uniform over a triangle, so the branch is too; with every bit set (blinn_phong
  * below) the compiler removes it. */

@@ -8,7 +8,7 @@
  * 3 * MAX_RESOLUTION pixels, in sub-pixels, times 2^SUBPIXEL_BITS) below 2^31 (triangle_record.h). */
 #define SUBPIXEL_BITS 8
 
-/* Pixel addresses are 12 bits, as in the sources' hardware (SEEDS §4): resolutions up to
+/* Pixel addresses are 12 bits, as in the sources' hardware ([Malovanyi 2019, parallel Gouraud] ch. 3): resolutions up to
  * MAX_RESOLUTION x MAX_RESOLUTION, and so spans of at most MAX_RESOLUTION pixels. */
 #define SCREEN_ADDRESS_BITS 12
 #define MAX_RESOLUTION (1 << SCREEN_ADDRESS_BITS)
@@ -41,11 +41,14 @@
  * interleave:M, 1 <= M <= MAX_INTERLEAVE_LANES. The code relies on it twice: the kernels split a pixel
  *   offset by M for interleave:M:own with a float quotient, exact while (i + 1/2) / M stays >= 1/32 away
  *   from an integer (unit_registers.h), and setup's plane limit leaves room for 16 * dI (setup.hpp);
- * segment:P, P a power of two in 2..MAX_SEGMENT_LANES: the sources' adder table ends at P = 64 (SEEDS §4);
+ * segment:P, P a power of two in 2..MAX_SEGMENT_LANES: the sources' adder table ends at P = 64 ([Malovanyi 2019, parallel Gouraud] ch. 3);
+ * sierpinski:D, 1 <= D <= MAX_SIERPINSKI_DEPTH: a bound we set, not a figure of the sources; setup writes
+ *   4^D sub-triangle records per triangle (64 at D = 3), and the golden tests cover D = 1..3;
  * --cu U, 1 <= U <= MAX_MODELED_UNITS: a bound the planner sets on its per-unit tables (one work list and
  *   one load entry per unit), not a figure of the sources. */
 #define MAX_INTERLEAVE_LANES 16
 #define MAX_SEGMENT_LANES 64
+#define MAX_SIERPINSKI_DEPTH 3
 #define MAX_MODELED_UNITS 4096
 
 #endif

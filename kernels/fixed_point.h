@@ -37,7 +37,7 @@ typedef std::uint32_t ps_uint;
 /* Gouraud planes of one triangle in setup's format, indexed like TriangleGeometry. */
 typedef struct {
   ps_long ref[3]; /* r, g, b at the box corner pixel centre (x0 + 1/2, y0 + 1/2) */
-  ps_long ddx[3]; /* the constant span increment dI_G (SEEDS formula 2.16) */
+  ps_long ddx[3]; /* the constant span increment dI_G ([Malovanyi 2019, parallel Gouraud] formula (2.16)) */
   ps_long ddy[3];
 } FixedPlanes;
 

@@ -1,4 +1,4 @@
-/* Combined Gouraud/Phong on digital segments (SEEDS §6, docs/combined.md): each span is cut into
+/* Combined Gouraud/Phong on digital segments ([Romanyuk & Romanyuk, combined shading], docs/combined.md): each span is cut into
  * segments of 2^K pixels starting at its left pixel; Blinn–Phong is exact (method_phong.h's
  * normalized interpolated normal) at the segment ends and linear inside, I_v = I_a + (I_b - I_a) v/2^K.
  * The last, shorter segment is treated as 2^K long (its far end extrapolated past the span) and

@@ -1,5 +1,5 @@
 /* Gouraud: the vertex values interpolated linearly. Along a span each channel steps by the constant
- * span increment dI_G of its triangle (attribute ddx, computed once in setup, SEEDS §2); the start of
+ * span increment dI_G of its triangle (attribute ddx, computed once in setup, [Gouraud simplification]); the start of
  * the row comes from the y increment. Float arithmetic here; the fixed-point units come later. */
 #define ATTR_FLOATS GOURAUD_ATTR_FLOATS
 

@@ -1,4 +1,4 @@
-/* Dichotomy (SEEDS §7): unit normals by binary bisection inside segments of 2^K pixels whose end
+/* Dichotomy ([Dembitsky 2025, software/hardware rendering] ch. 2): unit normals by binary bisection inside segments of 2^K pixels whose end
  * normals are exact. It follows the host library's float rule step for step (dichotomy_span in
  * host/phong/normalization.cpp), including the last, shorter segment: bisected between the span's real
  * ends, three levels finer than it needs when its length is no power of two, each pixel taking the

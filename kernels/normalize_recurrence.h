@@ -1,4 +1,4 @@
-/* The spherical-angular recurrence (SEEDS §7) as a sequential unit: N(t+1) = 2 cos(dtheta) N(t) - N(t-1),
+/* The spherical-angular recurrence ([Dembitsky 2025, software/hardware rendering] ch. 2) as a sequential unit: N(t+1) = 2 cos(dtheta) N(t) - N(t-1),
  * or with NORMALIZE_DIFFERENCE N(t+1) = N(t) + D(t), D(t) = D(t-1) - k N(t), k = 4 sin^2(dtheta/2);
  * dtheta = theta/(m-1), theta = arccos(a.b) by NORMALIZE_ARCCOS (0 exact, 1 the source's table 3.1 as
  * printed, 2 our refit); the unit loads pixels jR and jR+1 from slerp with that theta (NORMALIZE_REANCHOR

@@ -1,4 +1,4 @@
-/* Per-span unit normals for Phong without a per-pixel normalization (SEEDS §7; the host library
+/* Per-span unit normals for Phong without a per-pixel normalization ([Dembitsky 2025, software/hardware rendering] ch. 2; the host library
  * host/phong/normalization.cpp is the reference, docs/phong-methods.md the measured errors). Chosen by
  * -D NORMALIZE_METHOD: 1 slerp, 2 quadratic N(t) = G t^2 + P t + Q through the exact mid normal
  * h (Na + Nb), with NORMALIZE_MID: 0 exact h, 1 quadratic fit, 2 the source's cubic, 3 cubic fit

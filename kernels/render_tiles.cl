@@ -8,7 +8,7 @@
  * The method (method_*.h, chosen by the host) supplies shade_pixels().
  * UNIT_PATH = 1 (Gouraud or Phong through a modeled unit, unit_registers.h): every triangle is walked by
  * whole spans, each span's registers come from its full extent, and the tile that holds a span's
- * left pixel counts its modeled clocks into tile_clocks (spans, pixels, clocks per tile).
+ * left pixel counts its modeled clocks into tile_counters (spans, pixels, clocks per tile).
  * STAMPS = 1 (the plain path only: no unit, combined method, per-span normalization or plan): the tile's
  * pixels are 4x4 stamps instead of 1xVEC row segments (lane l: row l / 4, column l % 4), so a small
  * triangle's few pixels fill more of the lanes it shades; the values per pixel are the same. */
@@ -100,7 +100,7 @@ INLINE void keep(intV pass, colourV sr, colourV sg, colourV sb, colourV* cr, col
 #if SHADE_SPAN
 /* Per-span normalization (method_phong.h): a span's setup, once per span and tile, for the tile's
  * pixels first..last of it; its end normals, the fallback count and a sequential unit's steps (spans,
- * fallbacks, steps) go to tile_clocks. */
+ * fallbacks, steps) go to tile_counters. */
 #define SPAN_SETUP(attr, dy, xl, xr, first, last) \
   SpanNormals span_n; \
   span_steps += span_setup(&span_n, attr, dy, xl, xr, first, last, tile_x - x0); \
@@ -182,7 +182,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
                   __global const uint* tile_start, __global const uint* tile_tris,
                   __constant float4* lights, __constant float4* materials, float4 viewer, float4 background,
                   int tiles_x, int num_tiles, int width, int height, __global uint* out_rgba,
-                  __global float* out_float, __global const FixedPlanes* fixed, __global ulong* tile_clocks,
+                  __global float* out_float, __global const FixedPlanes* fixed, __global ulong* tile_counters,
                   __global const SierpinskiLeaf* leaves, __global const uint* dda_first,
                   __global const int* dda_rows
 #if PLAN_PASS
@@ -507,14 +507,14 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
   }
 #endif
 #if SHADE_SPAN && PLAN_PASS != 1
-  tile_clocks[3 * tile] = span_setups;
-  tile_clocks[3 * tile + 1] = span_fallbacks;
-  tile_clocks[3 * tile + 2] = span_steps;
+  tile_counters[3 * tile] = span_setups;
+  tile_counters[3 * tile + 1] = span_fallbacks;
+  tile_counters[3 * tile + 2] = span_steps;
 #endif
 #if UNIT_PATH && PLAN_PASS != 1
-  tile_clocks[3 * tile] = spans;
-  tile_clocks[3 * tile + 1] = span_pixels;
-  tile_clocks[3 * tile + 2] = clocks;
+  tile_counters[3 * tile] = spans;
+  tile_counters[3 * tile + 1] = span_pixels;
+  tile_counters[3 * tile + 2] = clocks;
 #endif
   }
   FRAME_STORES_DONE();

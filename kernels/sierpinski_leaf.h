@@ -1,4 +1,4 @@
-/* The extra-triangulation unit (SEEDS §4, "Sierpinski"): a triangle split by its midlines, recursively
+/* The extra-triangulation unit ([Malovanyi 2019, parallel Gouraud] ch. 3, "Sierpinski"): a triangle split by its midlines, recursively
  * to depth D, into 4^D congruent sub-triangles. The code interpolator shades one of them (the one at
  * the top vertex); every other one is that sub-triangle translated by a whole number of pixels (same
  * orientation) or point-reflected (the middle ones), and its intensities come from the shaded one

@@ -1,5 +1,5 @@
 /* The span increment by a division per span (--div exact | shiftadd:N), instead of the constant
- * increment dI_G once per triangle (SEEDS §2 vs §5): dI = (E - S) / k from the span's end registers,
+ * increment dI_G once per triangle ([Gouraud simplification] vs [Romanyuk & Obidnyk 2011, faster shading]): dI = (E - S) / k from the span's end registers,
  * k = L - 1 pixels between them. Shared by host and kernels; the golden models use the independent
  * host implementation (host/units/shift_add_division.cpp) so that the tests compare two of them.
  *   exact:     round to nearest, ties up: floor((2 (E - S) + k) / 2k)

@@ -1,4 +1,4 @@
-/* Lower-degree specular models (SEEDS §8, host/phong/specular_models.cpp, docs/phong-methods.md), chosen by
+/* Lower-degree specular models ([Dembitsky 2025, software/hardware rendering] ch. 3, host/phong/specular_models.cpp, docs/phong-methods.md), chosen by
  * -D SPECULAR_MODEL: 0 exact cos^n, 1 cos^k(a alpha) (a from the Taylor or the lobe rule: the host puts
  * a in the material's diffuse .w), 3 (1 + (n/2)(cos-1))^2, 4 (1 + (7n/16)(cos-1))^SPECULAR_P. SPECULAR_K = k.
  * Unused models are not compiled. */

@@ -5,7 +5,7 @@
 # then the report (plots, image strip, claims table) when python3-matplotlib is present.
 #   scripts/bench-suite.sh [OUT_DIR]          whole suite (sizes 1920x1080, 512x512, 3840x2160; ~1 h here)
 #   scripts/bench-suite.sh --quick [OUT_DIR]  CI subset: sphere_8k and fullscreen_quad at 512x512 (< 1 min)
-#   scripts/bench-suite.sh --phong [OUT_DIR]  the Phong family (SEEDS §6-§8) and the claims table only (~5 min)
+#   scripts/bench-suite.sh --phong [OUT_DIR]  the Phong family ([Romanyuk & Romanyuk, combined shading]; [Dembitsky 2025, software/hardware rendering] ch. 2-3) and the claims table only (~5 min)
 # Environment: PARASHADE_MESH_DIR (bunny, fandisk; skipped without it), PARASHADE_DEVICE, BUILD (default build).
 set -eu
 cd "$(dirname "$0")/.."
@@ -30,7 +30,7 @@ if [ "$QUICK" = 1 ]; then
       --benchmark_min_time=0.05 \
       --benchmark_out="$OUT/peer.json" --benchmark_out_format=json >/dev/null
   "$PYTHON" scripts/check_bench_json.py "$OUT/peer.json"
-  "$BUILD/parashade" phong-study --json "$OUT/phong-study.json" >/dev/null  # ~2 s: the §7 approximation rows
+  "$BUILD/parashade" phong-study --json "$OUT/phong-study.json" >/dev/null  # ~2 s: the normalization approximation rows
   "$PYTHON" scripts/claims.py --results "$OUT" -o "$OUT/claims.md"  # the registry parses, the generator runs
   exit 0
 fi
@@ -58,21 +58,21 @@ for scene in teapot sphere; do
       --arith float,fixed:12.12 --frames 9 --report "$OUT/scaling-$scene.json" >/dev/null
 done
 
-# Fixed-point error of the units against the source's formulas (SEEDS §4).
+# Fixed-point error of the units against the source's formulas ([Malovanyi 2019, parallel Gouraud] ch. 3).
 "$BUILD/parashade" unit-error --json "$OUT/unit-error.json" >/dev/null
 
-# Host model of whole-triangle shading: constant increment and shift-add division (SEEDS §2, §5).
+# Host model of whole-triangle shading: constant increment and shift-add division ([Gouraud simplification], [Romanyuk & Obidnyk 2011, faster shading]).
 if [ -x "$BUILD/bench/bench_span_setup" ]; then
   "$BUILD/bench/bench_span_setup" --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true \
       --benchmark_report_aggregates_only=true --benchmark_min_time=0.1 \
       --benchmark_out="$OUT/span.json" --benchmark_out_format=json >/dev/null
-  "$BUILD/bench/bench_span_setup" --print-table >"$OUT/span-table.txt"  # source 003's Table 1 recomputed
+  "$BUILD/bench/bench_span_setup" --print-table >"$OUT/span-table.txt"  # [Romanyuk & Obidnyk 2011, faster shading] Table 1 recomputed
   "$BUILD/bench/bench_span_setup" --print-ops >"$OUT/span-ops.txt"      # operation counts, example triangle
 fi
 
 fi  # PHONG_ONLY
 
-# Phong family (SEEDS §6-§8): approximation errors (parashade phong-study), the combined method's and the
+# Phong family ([Romanyuk & Romanyuk, combined shading]; [Dembitsky 2025, software/hardware rendering] ch. 2-3): approximation errors (parashade phong-study), the combined method's and the
 # normalization / specular variants' speed and error through render reports, the host normalization
 # methods in scalar C++ (bench_normalize), and the best variant at NMSE <= 1e-4 derived from the two studies.
 "$BUILD/parashade" phong-study --json "$OUT/phong-study.json" >/dev/null

@@ -5,7 +5,7 @@ in rounds (methods interleaved, so load from other processes spreads over all of
 Markdown table with frame and kernel time, their ratio to Phong's from the same round (median over the
 rounds), and the error against Phong (the method's ideal: screen-space Phong in double) and against
 exact (perspective-correct) Phong. With --json it also writes the measurements and the source claims
-(SEEDS §6: combined k = 2 1.3x / 1.8x, k = 3 1.48x / 2.09x) as {claim, source, measured}. Example:
+([Romanyuk & Romanyuk, combined shading]: combined k = 2 1.3x / 1.8x, k = 3 1.48x / 2.09x) as {claim, source, measured}. Example:
 
     scripts/combined_study.py --scenes scenes/teapot.json scenes/bunny.json --frames 11 --json combined.json
 """
@@ -105,21 +105,21 @@ def main():
         for k, diffuse, with_linear in ((2, 1.3, 1.8), (3, 1.48, 2.09)):
             for rec in records:
                 if rec["method"] == f"combined:{k}":
-                    claims.append({"claim": f"combined-k{k}-speedup", "source": "SEEDS §6 (001)",
+                    claims.append({"claim": f"combined-k{k}-speedup", "source": "[Romanyuk & Romanyuk, combined shading]",
                                    "source_figure": f"{diffuse}x (diffuse), {with_linear}x with the linear normal approximation",
                                    "scene": rec["scene"], "measured_figure": rec["speedup_vs_phong_frame"],
                                    "measured_kernel_figure": rec["speedup_vs_phong_kernel"],
                                    "note": "speed-up of the whole frame (and of the kernel) against --method phong, "
                                            + ("the Phong run right before" if args.paired else "same round")
                                            + "; shared, loaded machine"})
-        # The sources' adaptive Gouraud/Phong listing (SEEDS §8), as printed and as intended, and the
+        # The sources' adaptive Gouraud/Phong listing ([Dembitsky 2025, software/hardware rendering] ch. 3), as printed and as intended, and the
         # per-triangle choice of combined:auto against its budget (issue 4: faster than Phong, within budget).
         for rec in records:
             words = rec["method"].split()
             choice = rec["triangle_choice"]
             if "--triangle-choice" in words and choice:
                 rule = words[words.index("--triangle-choice") + 1]
-                claims.append({"claim": "adaptive-" + rule.split(":")[0], "source": "SEEDS §8 (000, listing)",
+                claims.append({"claim": "adaptive-" + rule.split(":")[0], "source": "[Dembitsky 2025, software/hardware rendering] ch. 3, listing",
                                "source_figure": "thresholds 0.9, 0.004, 0.008", "scene": rec["scene"],
                                "gouraud_fraction": choice["gouraud"] / max(1, choice["triangles"]),
                                "measured_figure": rec["speedup_vs_phong_frame"],

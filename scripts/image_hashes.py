@@ -67,8 +67,8 @@ CASES = [
     ["--method", "gouraud", "--cu", "2", "--partition", "lpt", "--device", "sub:pthread:1"],
     ["--method", "phong", "--device", "sub:pthread:1+1"],
 ] + [["--method", "phong", "--normalize", n] for n in [
-    "slerp", "quadratic:exact", "quad", "cubic", "cubic-fit", "dichotomy:exact", "dichotomy:linear:2",
-    "dichotomy:quadratic:3:extrapolate", "dichotomy:linear-fit", "recurrence", "recurrence-diff:table:8",
+    "slerp", "quadratic:exact", "quadratic:quad", "quadratic:cubic", "quadratic:cubic-fit", "dichotomy:exact",
+    "dichotomy:linear:2", "dichotomy:quadratic:3:extrapolate", "dichotomy:linear-fit", "recurrence", "recurrence-diff:table:8",
     "recurrence:table-fixed"]] + [["--method", "phong", "--specular", s] for s in [
     "cosk:taylor:2", "cosk:lobe:4", "quadratic", "7n16", "7n16:3"]] + [
     ["--method", "gouraud", "--units", u, "--arith", a] for u in UNITS for a in ["float"] + FIXED]

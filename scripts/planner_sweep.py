@@ -6,7 +6,7 @@ over all of them). Every planned image is compared byte for byte with the plain 
 count. Prints Markdown tables of the median (over rounds) of each run's median frame time, with the units'
 depth pass and resolve kernel times beside it, and writes everything to --json. Example:
 
-    PARASHADE_MESH_DIR=../shared/meshes scripts/planner_sweep.py --scenes scenes/teapot.json scenes/bunny.json \\
+    PARASHADE_MESH_DIR=/path/to/meshes scripts/planner_sweep.py --scenes scenes/teapot.json scenes/bunny.json \\
         --rounds 3 --json planner-sweep.json
 """
 import argparse

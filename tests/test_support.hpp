@@ -22,7 +22,7 @@ inline void set_perspective(Camera& c, glm::vec3 position, glm::vec3 target, flo
   c.far_plane = far_plane;
 }
 
-// ../shared/meshes as given by PARASHADE_MESH_DIR; nullopt (and the test skips) when unset or absent.
+// The real meshes' folder, PARASHADE_MESH_DIR (README); nullopt (and the test skips) when unset or absent.
 inline std::optional<std::filesystem::path> mesh_dir() {
   const char* dir = std::getenv("PARASHADE_MESH_DIR");
   if (!dir || !*dir || !std::filesystem::is_directory(dir)) return std::nullopt;

@@ -27,7 +27,7 @@ std::vector<std::unique_ptr<Device>> open_devices(const std::string& selector) {
     while (from <= selector.size()) {
       const std::size_t comma = std::min(selector.find(',', from), selector.size());
       const std::string name = selector.substr(from, comma - from);
-      if (name.empty()) throw UsageError("--device '" + selector + "' has an empty entry");
+      if (name.empty()) throw UsageError("device list '" + selector + "' has an empty entry");
       names.push_back(name);
       from = comma + 1;
     }
@@ -37,7 +37,7 @@ std::vector<std::unique_ptr<Device>> open_devices(const std::string& selector) {
   for (const std::string& n : names) {
     auto d = open_device(n);
     if (!seen.insert(d->info().index).second)
-      throw UsageError("--device '" + selector + "' names device '" + d->info().name + "' twice");
+      throw UsageError("device list '" + selector + "' names device '" + d->info().name + "' twice");
     out.push_back(std::move(d));
   }
   return out;

@@ -28,7 +28,7 @@ SubDevices open_sub_devices(const std::string& selector, SubDeviceContext contex
   }
   const bool bad = name.empty() || counts.empty() || std::any_of(counts.begin(), counts.end(), [](int n) { return n < 1; });
   if (!is_sub_device_selector(selector) || bad)
-    throw UsageError("--device '" + selector +
+    throw UsageError("sub-device selector '" + selector +
                      "': expected sub:NAME:N (N compute units per sub-device) or sub:NAME:N1+N2+... (by counts)");
   SubDevices out;
   out.parent = open_device(name);

@@ -6,7 +6,7 @@ namespace {
 // render_tiles' parameters in signature order (kernels/render_tiles.cl).
 enum TileArg : cl_uint {
   kTriangles, kAttributes, kTileStart, kTileList, kLights, kMaterials, kViewer, kBackground, kTilesX, kNumTiles,
-  kWidth, kHeight, kOutRgba, kOutFloat, kFixed, kTileClocks, kLeaves, kDdaFirst, kDdaRows,
+  kWidth, kHeight, kOutRgba, kOutFloat, kFixed, kTileCounters, kLeaves, kDdaFirst, kDdaRows,
   // PLAN_PASS only
   kKeys, kPacketFirst, kVtileTile, kPacketCounter, kNumPackets,
 };
@@ -29,7 +29,7 @@ void set_tile_kernel_args(cl::Kernel& k, const TileKernelArgs& a) {
   k.setArg(kOutRgba, *a.out_rgba);
   k.setArg(kOutFloat, *a.out_float);
   k.setArg(kFixed, *a.fixed);
-  k.setArg(kTileClocks, *a.tile_clocks);
+  k.setArg(kTileCounters, *a.tile_counters);
   k.setArg(kLeaves, *a.leaves);
   k.setArg(kDdaFirst, *a.dda_first);
   k.setArg(kDdaRows, *a.dda_rows);

@@ -18,7 +18,7 @@ struct TileKernelArgs {
   const cl::Buffer* out_rgba;
   const cl::Buffer* out_float;
   const cl::Buffer* fixed;        // fixed point: the records' planes
-  const cl::Buffer* tile_clocks;  // per tile: modeled spans, pixels, clocks (or normalization counts)
+  const cl::Buffer* tile_counters;  // per tile: modeled spans, pixels, clocks (or normalization counts)
   const cl::Buffer* leaves;       // sierpinski: the records' leaves
   const cl::Buffer* dda_first;    // dda coverage: the row table
   const cl::Buffer* dda_rows;

@@ -15,6 +15,18 @@ namespace parashade::cli {
 // "a,b,c" -> {"a", "b", "c"}; an empty entry is a usage error naming the option.
 std::vector<std::string> split_list(const std::string& list, const std::string& option);
 
+// Runs `call` (a library parser or device opener) and puts `option` in front of its usage error: the
+// library names the value at fault but knows no flags ("--units: unit 'interleave:17': M = 17 is not in
+// 1..16").
+template <typename Call>
+decltype(auto) for_option(const std::string& option, Call&& call) {
+  try {
+    return call();
+  } catch (const UsageError& e) {
+    throw UsageError(option + ": " + e.what());
+  }
+}
+
 // A comma-separated list of values, each parsed; two entries naming the same value (by `name`) are a
 // usage error naming the option.
 template <typename Parse, typename Name>
@@ -22,7 +34,7 @@ auto parse_unique_list(const std::string& list, const std::string& option, Parse
   std::vector<decltype(parse(list))> out;
   std::vector<std::string> names;
   for (const std::string& spec : split_list(list, option)) {
-    auto value = parse(spec);
+    auto value = for_option(option, [&] { return parse(spec); });
     const std::string n = name(value);
     for (const std::string& seen : names)
       if (seen == n) throw UsageError(option + " lists '" + spec + "' twice (as " + n + ")");

@@ -1,4 +1,4 @@
-// parashade phong-study: every normalization method, approximation and specular model of SEEDS §7–§8
+// parashade phong-study: every normalization method, approximation and specular model of [Dembitsky 2025, software/hardware rendering] ch. 2–3
 // measured against double-precision exact values (the study: host/studies/phong_study.cpp); this
 // checks the destinations, prints the Markdown and writes the files.
 #include <filesystem>

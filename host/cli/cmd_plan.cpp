@@ -28,7 +28,7 @@ int run_plan(const PlanCommandArgs& a) {
   // The frame as render prepares it for Gouraud (the planner costs the unit's spans); each plan below.
   FrameConfig config;
   config.tile_size = a.tile;
-  if (!a.units.empty()) config.units = parse_units(a.units);
+  if (!a.units.empty()) config.units = for_option("--units", [&] { return parse_units(a.units); });
   const UnitConfig unit = config.unit();
   const std::vector<PlanOptions> list = plan_option_list(a.plan);
   for (const PlanOptions& o : list) {
@@ -66,7 +66,9 @@ Command add_plan_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("plan", "Print the planner's per-unit load for a scene (modeled clocks), without rendering");
   cmd->add_option("scene", a->scene, "Scene file (.json) or mesh (.obj .off .ply .stl)")->required();
   cmd->add_option("--size", a->size, "Resolution WIDTHxHEIGHT, overriding the scene's");
-  cmd->add_option("--tile", a->tile, "Screen tile size: 16, 32 or 64")->capture_default_str()->check(CLI::IsMember({16, 32, 64}));
+  cmd->add_option("--tile", a->tile, "Screen tile size: " + tile_sizes_text())
+      ->capture_default_str()
+      ->check(CLI::IsMember(tile_sizes()));
   cmd->add_option("--units", a->units, "The modeled unit whose clocks are the cost (as render --units); default classic");
   cmd->add_option("--report", a->report, "Write the plans as JSON");
   cmd->add_flag("--per-unit", a->per_unit, "Print every unit's load");

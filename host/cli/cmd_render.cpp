@@ -179,16 +179,17 @@ int run_render(const RenderArgs& a) {
     if (!(a.max_error > 0 && a.max_error <= 255)) throw UsageError("--max-error must be in (0, 255] levels");
     options.combined.max_error = a.max_error;
   }
-  if (!a.triangle_choice.empty()) parse_triangle_rule(a.triangle_choice, options.combined);
-  if (!a.units.empty()) options.units = parse_units(a.units);
-  options.arith = parse_arith(a.arith);
-  options.division = parse_division(a.division);
+  if (!a.triangle_choice.empty())
+    for_option("--triangle-choice", [&] { parse_triangle_rule(a.triangle_choice, options.combined); });
+  if (!a.units.empty()) options.units = for_option("--units", [&] { return parse_units(a.units); });
+  options.arith = for_option("--arith", [&] { return parse_arith(a.arith); });
+  options.division = for_option("--div", [&] { return parse_division(a.division); });
   if (a.coverage != "centre" && a.coverage != "dda")
     throw UsageError("unknown coverage '" + a.coverage + "' (valid: centre, dda)");
   options.dda_coverage = a.coverage == "dda";
   options.plan = plan_options(a.plan);
-  options.specular = parse_specular(a.specular);
-  options.normalize = parse_normalize(a.normalize);
+  options.specular = for_option("--specular", [&] { return parse_specular(a.specular); });
+  options.normalize = for_option("--normalize", [&] { return parse_normalize(a.normalize); });
   const auto size = parse_size(a.size);
   if (a.frames < 1) throw UsageError("--frames must be at least 1");
   if (a.warmup < 0) throw UsageError("--warmup must not be negative");
@@ -222,7 +223,7 @@ int run_render(const RenderArgs& a) {
   SubDevices sub;  // with units_on_sub_devices: the parent (renders) and the sub-devices (run the units)
   std::vector<Device*> unit_devices;
   if (units_on_sub_devices) {
-    sub = open_sub_devices(a.device, SubDeviceContext::shared);
+    sub = for_option("--device", [&] { return open_sub_devices(a.device, SubDeviceContext::shared); });
     for (const auto& d : sub.subs) unit_devices.push_back(d.get());
   }
   auto device = units_on_sub_devices ? std::move(sub.parent) : open_device(a.device);
@@ -375,7 +376,8 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("-o,--output", a->output, "Image to write; format from the extension (png, jpg, tif, ppm, exr ...)")
       ->required();
   cmd->add_option("--method", a->method,
-                  "Shading method: flat, gouraud, phong, combined:K (Phong at the ends of 2^K-pixel segments, K = 0..6), "
+                  "Shading method: flat, gouraud, phong, combined:K (Phong at the ends of 2^K-pixel segments, K = 0.." +
+                      std::to_string(kCombinedMaxK) + "), "
                   "combined:auto (K per span from --max-error); which options combine: parashade combinations")
       ->capture_default_str();
   cmd->add_option("--max-error", a->max_error,
@@ -403,14 +405,19 @@ Command add_render_command(CLI::App& app) {
                   "dynamic (batches of --batch)");
   cmd->add_flag("--keep-going", a->keep_going,
                 "With a device list (bands): drop a failing device (named) and go on with the others");
-  cmd->add_option("--size", a->size, "Resolution WIDTHxHEIGHT (at most 4096x4096), overriding the scene's");
+  cmd->add_option("--size", a->size,
+                  "Resolution WIDTHxHEIGHT (at most " + std::to_string(kMaxResolution) + "x" +
+                      std::to_string(kMaxResolution) + "), overriding the scene's");
   cmd->add_option("--report", a->report, "Write a JSON report (timings, stages, error figures)");
   cmd->add_option("--frames", a->frames, "Timed frames; the median is reported")->capture_default_str();
   cmd->add_option("--warmup", a->warmup, "Untimed frames first (program build, work-group compilation)")
       ->capture_default_str();
-  cmd->add_option("--tile", a->tile, "Screen tile size: 16, 32 or 64")->capture_default_str()->check(CLI::IsMember({16, 32, 64}));
+  cmd->add_option("--tile", a->tile, "Screen tile size: " + tile_sizes_text())
+      ->capture_default_str()
+      ->check(CLI::IsMember(tile_sizes()));
   cmd->add_option("--work-items", a->work_items,
-                  "Kernel work-items, each rendering every N-th tile (0: 16 per compute unit)")
+                  "Kernel work-items, each rendering every N-th tile (0: " + std::to_string(WORK_ITEMS_PER_COMPUTE_UNIT) +
+                      " per compute unit)")
       ->capture_default_str();
   cmd->add_option("--units", a->units,
                   "Gouraud through a modeled shading unit: " + unit_specs_help() + "; reports modeled clocks");
@@ -434,7 +441,7 @@ Command add_render_command(CLI::App& app) {
                   "expected error meets --max-error), sources[:M,Q,P] (the thesis's thresholds 0.9,0.004,0.008), "
                   "sources-literal[:M,Q,P] (its listing as printed), none (combined:K's default); docs/triangle-choice.md");
   cmd->add_flag("--highlight-test", a->highlight_test,
-                "combined:*: skip the specular term per triangle and light where no highlight can fall (SEEDS §8)");
+                "combined:*: skip the specular term per triangle and light where no highlight can fall ([Dembitsky 2025, software/hardware rendering] ch. 3)");
   cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
   cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");
   cmd->add_flag("-q,--quiet", a->quiet, "No progress line");

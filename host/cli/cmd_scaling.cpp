@@ -371,7 +371,9 @@ Command add_scaling_command(CLI::App& app) {
   cmd->add_option("--arith", a->arith,
                   "Comma-separated span arithmetics: float, fixed (= fixed:12.12), fixed:I.F (I >= 9, I + F <= 32)")
       ->capture_default_str();
-  cmd->add_option("--size", a->size, "Resolution WIDTHxHEIGHT (at most 4096x4096), overriding the scene's");
+  cmd->add_option("--size", a->size,
+                  "Resolution WIDTHxHEIGHT (at most " + std::to_string(kMaxResolution) + "x" +
+                      std::to_string(kMaxResolution) + "), overriding the scene's");
   cmd->add_option("--frames", a->frames, "Timed frames per configuration (round-robin); the median is reported")
       ->capture_default_str();
   cmd->add_option("--warmup", a->warmup,

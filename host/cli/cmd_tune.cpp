@@ -29,7 +29,8 @@ std::vector<RenderOptions> candidates(const RenderOptions& base, int cus) {
   std::vector<RenderOptions> out;
   out.push_back(base);
   std::vector<RenderOptions> rest;
-  for (int tile : {16, 32, 64})
+  const std::vector<int> tiles = tile_sizes();
+  for (int tile : tiles)
     for (int wi : {0, cus, 4 * cus, 64 * cus}) {
       RenderOptions o = base;
       o.tile_size = tile;
@@ -38,7 +39,7 @@ std::vector<RenderOptions> candidates(const RenderOptions& base, int cus) {
     }
   for (Partition p : {Partition::round_robin, Partition::lpt, Partition::tiles, Partition::dynamic})
     for (int u : {cus, 2 * cus, 4 * cus, 16})
-      for (int tile : {16, 32})
+      for (int tile : std::vector<int>(tiles.begin(), tiles.end() - 1))  // not the largest
         for (int batch : p == Partition::dynamic ? std::vector<int>{16, 64, 256} : std::vector<int>{64}) {
           RenderOptions o = base;
           o.tile_size = tile;

@@ -44,11 +44,11 @@ std::vector<int> parse_lengths(const std::string& list) {
 }
 
 int run(const UnitErrorArgs& args) {
-  const Arithmetic a = parse_arith(args.arith);
+  const Arithmetic a = for_option("--arith", [&] { return parse_arith(args.arith); });
   if (!a.fixed) throw UsageError("--arith '" + args.arith + "': the unit error study needs fixed point, fixed:I.F");
   std::vector<UnitConfig> units;
   for (const std::string& u : split_list(args.units, "--units")) {
-    units.push_back(parse_units(u));
+    units.push_back(for_option("--units", [&] { return parse_units(u); }));
     if (!is_span_unit(units.back()))
       throw UsageError("--units '" + u + "': the study covers the span units " + unit_specs_help(true));
   }

@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_args.hpp"
+
 #include "parashade/image.hpp"
 #include "parashade/report.hpp"
 #include "parashade/split_renderer.hpp"
@@ -13,7 +15,7 @@
 namespace parashade::cli {
 
 int run_split_render(const Scene& scene, const RenderOptions& options, const SplitRenderArgs& a) {
-  SplitRenderer renderer(open_devices(a.devices), options, a.keep_going);
+  SplitRenderer renderer(for_option("--device", [&] { return open_devices(a.devices); }), options, a.keep_going);
   std::string warning;
   const auto warn = [&] {
     if (!warning.empty()) std::cerr << "parashade: warning: " << warning;

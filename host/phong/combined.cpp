@@ -35,14 +35,14 @@ void parse_triangle_rule(const std::string& text, CombinedConfig& c) {
   else if (name == "bound") c.rule = TriangleRule::bound;
   else if (name == "sources") c.rule = TriangleRule::sources;
   else if (name == "sources-literal") c.rule = TriangleRule::sources_literal;
-  else throw UsageError("--triangle-choice '" + text + "': expected none, bound, sources[:M,Q,P] or sources-literal[:M,Q,P]");
+  else throw UsageError("triangle choice '" + text + "': expected none, bound, sources[:M,Q,P] or sources-literal[:M,Q,P]");
   if (colon == std::string::npos) return;
   const bool sources = c.rule == TriangleRule::sources || c.rule == TriangleRule::sources_literal;
   double v[3];
   char tail = 0;
   if (!sources || std::sscanf(text.c_str() + colon + 1, "%lf,%lf,%lf%c", &v[0], &v[1], &v[2], &tail) != 3 ||
       !(v[0] >= -1.0 && v[0] <= 1.0) || !(v[1] >= 0.0) || !(v[2] >= 0.0) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
-    throw UsageError("--triangle-choice '" + text +
+    throw UsageError("triangle choice '" + text +
                      "': thresholds go with sources only, as M,Q,P (M in [-1, 1], Q and P >= 0), e.g. sources:0.9,0.004,0.008");
   c.source_m = v[0];
   c.source_q = v[1];

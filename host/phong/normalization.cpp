@@ -1,4 +1,4 @@
-// Unit normals along a span (SEEDS §7): exact, slerp, dichotomy, quadratic, spherical-angular
+// Unit normals along a span ([Dembitsky 2025, software/hardware rendering] ch. 2): exact, slerp, dichotomy, quadratic, spherical-angular
 // recurrence, and the polynomial approximations they use. Coefficients: docs/phong-methods.md, where
 // the "fit" ones were produced by minimax_fit (Remez) on the stated interval.
 #include "parashade/normalization.hpp"
@@ -206,7 +206,7 @@ const std::vector<PolyApprox> kMid = {
     {"cubic_source", {0.707, -0.341, 0.193, -0.059}, 0.0, 1.0},
     {"cubic_fit", {0.706818541, -0.342553233, 0.196821778, -0.0613753257}, 0.0, 1.0},
 };
-// Table 3.1 of source 000 as printed, columns read as C + B x + A x^2.
+// Table 3.1 of [Dembitsky 2025, software/hardware rendering] as printed, columns read as C + B x + A x^2.
 const std::vector<PolyApprox> kArccosSource = {
     {"0-0.5", {1.57, -0.972, -0.144}, 0.0, 0.5},
     {"0.5-0.75", {1.439, -0.447, -0.677}, 0.5, 0.75},
@@ -324,7 +324,7 @@ NormalizeMethod parse_normalize(const std::string& text) {
   static const std::regex re(
       R"((exact|slerp)|dichotomy:(exact|linear|quadratic|linear-fit|quadratic-fit)(?::(\d))?(:extrapolate)?|quadratic:(exact|quad|cubic|cubic-fit)|recurrence(-diff)?(?::(exact|table|table-fixed))?(?::(\d{1,5}))?)");
   if (!std::regex_match(text, g, re))
-    throw UsageError("--normalize '" + text +
+    throw UsageError("normalization '" + text +
                      "': expected exact, slerp, dichotomy:exact|linear|quadratic|linear-fit|quadratic-fit[:K][:extrapolate], "
                      "quadratic:exact|quad|cubic|cubic-fit or recurrence[-diff][:exact|table|table-fixed][:R]");
   if (g[1].matched) {
@@ -340,7 +340,7 @@ NormalizeMethod parse_normalize(const std::string& text) {
     if (g[3].matched) {
       m.segment_log2 = std::stoi(g[3]);
       if (m.segment_log2 < 1 || m.segment_log2 > 6)
-        throw UsageError("--normalize '" + text + "': segment size 2^K needs K in 1..6");
+        throw UsageError("normalization '" + text + "': segment size 2^K needs K in 1..6");
     }
     m.extrapolate_last = g[4].matched;
   } else if (g[5].matched) {
@@ -355,7 +355,7 @@ NormalizeMethod parse_normalize(const std::string& text) {
     m.arccos = s == "exact" ? Arccos::exact : s == "table" ? Arccos::table_source : Arccos::table_fixed;
     if (g[8].matched) {
       m.reanchor = std::stoi(g[8]);
-      if (m.reanchor < 2) throw UsageError("--normalize '" + text + "': re-anchor period R needs R >= 2");
+      if (m.reanchor < 2) throw UsageError("normalization '" + text + "': re-anchor period R needs R >= 2");
     }
   }
   return m;

@@ -1,4 +1,4 @@
-// Lower-degree specular models (SEEDS §8). The lobe rule solves
+// Lower-degree specular models ([Dembitsky 2025, software/hardware rendering] ch. 3). The lobe rule solves
 //   int_0^{pi/2} cos^n(x) sin(x) dx = 1/(n+1) = int_0^{min(pi/(2a), pi/2)} cos^k(a x) sin(x) dx
 // for a by bisection (the right side falls as a grows), with Simpson's rule for the integral.
 #include "parashade/specular_models.hpp"
@@ -84,7 +84,7 @@ SpecularModel parse_specular(const std::string& text) {
   static const std::regex re(R"((exact)|cosk:(taylor|lobe):([24])|(quadratic)|7n16(?::(\d(?:\.\d{1,3})?))?)");
   std::smatch g;
   if (!std::regex_match(text, g, re))
-    throw UsageError("--specular '" + text + "': expected exact, cosk:taylor:2|4, cosk:lobe:2|4, quadratic or 7n16[:P]");
+    throw UsageError("specular model '" + text + "': expected exact, cosk:taylor:2|4, cosk:lobe:2|4, quadratic or 7n16[:P]");
   SpecularModel m;
   if (g[1].matched) m.kind = SpecularKind::exact;
   else if (g[2].matched) {
@@ -94,7 +94,7 @@ SpecularModel parse_specular(const std::string& text) {
   else {
     m.kind = SpecularKind::sevenths;
     if (g[5].matched) m.p = std::stod(g[5]);
-    if (!(m.p >= 1.0 && m.p <= 8.0)) throw UsageError("--specular '" + text + "': exponent P must be in 1..8");
+    if (!(m.p >= 1.0 && m.p <= 8.0)) throw UsageError("specular model '" + text + "': exponent P must be in 1..8");
   }
   return m;
 }

@@ -1,16 +1,26 @@
 #include "parashade/combinations.hpp"
 
+#include <algorithm>
 #include <sstream>
+#include <stdexcept>
 
 #include "parashade/frame_config.hpp"
+#include "parashade/unit_table.hpp"
 
 namespace parashade {
 namespace {
 
+// The unit axis: no unit, then the unit table's values (a new unit is a new value without an edit here).
+std::vector<std::string> unit_axis() {
+  std::vector<std::string> values{"none"};
+  for (std::string& v : unit_combination_values()) values.push_back(std::move(v));
+  return values;
+}
+
 // Each axis's values, in index order; a value's bit in a mask is 1 << index.
 const std::vector<std::string> kValues[kAxes] = {
     {"flat", "gouraud", "phong", "combined"},                                                    // method
-    {"none", "classic", "counter", "interleave", "interleave:own", "segment", "sierpinski"},    // unit
+    unit_axis(),                                                                                 // unit
     {"float", "fixed"},                                                                          // arith
     {"centre", "dda"},                                                                           // coverage
     {"constant", "per-span"},                                                                    // division
@@ -25,9 +35,19 @@ const char* const kAxisNames[kAxes] = {"method", "unit", "arith", "coverage", "d
                                        "specular", "choice", "highlight", "plan", "devices"};
 
 constexpr std::uint32_t kAll = ~std::uint32_t(0);
+
+// The bit of a unit axis value, by name (a refusal names the units it refuses).
+std::uint32_t unit_bit(const std::string& name) {
+  const std::vector<std::string>& v = kValues[int(Axis::unit)];
+  const auto at = std::find(v.begin(), v.end(), name);
+  if (at == v.end() || at - v.begin() >= 32) throw std::logic_error("no unit axis value '" + name + "' for a mask");
+  return std::uint32_t(1) << (at - v.begin());
+}
+
 // Value bits, by axis.
 constexpr std::uint32_t kFlat = 1, kGouraud = 2, kPhong = 4, kCombined = 8;
-constexpr std::uint32_t kNoUnit = 1, kSierpinski = 64, kInterleaveOwn = 16, kAnyUnit = kAll & ~kNoUnit;
+constexpr std::uint32_t kNoUnit = 1, kAnyUnit = kAll & ~kNoUnit;
+const std::uint32_t kSierpinski = unit_bit("sierpinski"), kInterleaveOwn = unit_bit("interleave:own");
 constexpr std::uint32_t kFloat = 1, kDda = 2, kPerSpan = 2, kModel = 2, kPerTriangle = 2, kOn = 2, kPlanned = 2;
 constexpr std::uint32_t kNoPlan = 1, kBands = 2, kUnitSubDevices = 4, kRanksSortFirst = 8, kRanksSortLast = 16;
 
@@ -92,18 +112,7 @@ const std::vector<Refusal> kRefused = {
            "copies have none (use --distribute sort-first)"),
 };
 
-std::uint8_t unit_value(const FrameConfig& c) {
-  if (!c.unit_path()) return 0;
-  const UnitConfig u = c.unit();
-  switch (u.kind) {
-    case UnitKind::classic: return 1;
-    case UnitKind::counter: return 2;
-    case UnitKind::interleave: return u.own_step ? 4 : 3;
-    case UnitKind::segment: return 5;
-    case UnitKind::sierpinski: return 6;
-  }
-  return 1;
-}
+std::uint8_t unit_value(const FrameConfig& c) { return c.unit_path() ? std::uint8_t(1 + unit_combination_value(c.unit())) : 0; }
 
 }  // namespace
 

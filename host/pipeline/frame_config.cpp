@@ -1,13 +1,29 @@
 #include "parashade/frame_config.hpp"
 
+#include <algorithm>
+
 #include "parashade/combinations.hpp"
 
 namespace parashade {
 
+std::vector<int> tile_sizes() {
+  std::vector<int> sizes;
+  for (int t = TILE_MIN; t <= TILE_MAX; t *= 2) sizes.push_back(t);
+  return sizes;
+}
+
+std::string tile_sizes_text() {
+  const std::vector<int> sizes = tile_sizes();
+  std::string text;
+  for (std::size_t i = 0; i < sizes.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == sizes.size() ? " or " : ", ") + std::to_string(sizes[i]);
+  return text;
+}
+
 void check_frame_config(const FrameConfig& c, DeviceMode devices) {
-  // Powers of two from one vector row (TILE_MIN) to TILE_MAX: 16, 32 or 64.
-  if (c.tile_size < TILE_MIN || c.tile_size > TILE_MAX || (c.tile_size & (c.tile_size - 1)) != 0)
-    throw UsageError("tile size " + std::to_string(c.tile_size) + " is not supported (16, 32 or 64)");
+  const std::vector<int> sizes = tile_sizes();
+  if (std::find(sizes.begin(), sizes.end(), c.tile_size) == sizes.end())
+    throw UsageError("tile size " + std::to_string(c.tile_size) + " is not supported (" + tile_sizes_text() + ")");
   if (c.plan) check_plan_options(*c.plan);
   ValueNames names;
   names[int(Axis::method)] = c.method == Method::combined ? combined_name(c.combined) : method_name(c.method);

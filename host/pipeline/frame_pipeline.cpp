@@ -7,7 +7,7 @@
 #include "parashade/geometry_stage.hpp"
 #include "parashade/highlight.hpp"
 #include "parashade/setup.hpp"
-#include "parashade/sierpinski.hpp"
+#include "parashade/sierpinski_setup.hpp"
 
 namespace parashade {
 namespace {

@@ -13,7 +13,8 @@ Method parse_method(const std::string& name) {
     parse_combined(name);  // validates K
     return Method::combined;
   }
-  throw UsageError("unknown method '" + name + "' (valid: flat, gouraud, phong, combined:K (K = 0..6), combined:auto)");
+  throw UsageError("unknown method '" + name + "' (valid: flat, gouraud, phong, combined:K (K = 0.." +
+                   std::to_string(kCombinedMaxK) + "), combined:auto)");
 }
 
 const char* method_name(Method m) {

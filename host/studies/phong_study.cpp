@@ -1,5 +1,5 @@
 // parashade phong-study's measurements (docs/phong-methods.md, docs/phong-study.md): every normalization
-// method, approximation and specular model of SEEDS §7–§8 against double-precision exact values; each
+// method, approximation and specular model of [Dembitsky 2025, software/hardware rendering] ch. 2–3 against double-precision exact values; each
 // numeric claim of the sources gets its measured figure and a verdict. Deterministic: no random draws.
 #include "parashade/phong_study.hpp"
 
@@ -152,21 +152,21 @@ PhongStudy phong_study() {
                       {"h_quadratic", {{"coeffs", refit_hq.coeffs}, {"max_abs", refit_hq.max_error}}},
                       {"h_cubic", {{"coeffs", refit_hc.coeffs}, {"max_abs", refit_hc.max_error}}}};
 
-  claims.add("7.bisector.linear", "000 ch.2 / 001", "1/sqrt(2+z) ~ -0.07z + 0.64", "abs <= 0.0005, rel 0.12 %",
+  claims.add("7.bisector.linear", "[Dembitsky 2025, software/hardware rendering] ch. 2; [Romanyuk & Romanyuk, combined shading]", "1/sqrt(2+z) ~ -0.07z + 0.64", "abs <= 0.0005, rel 0.12 %",
              "printed coefficients on [sqrt2, 2] (bisected angle <= 45 deg): abs " + num(lin_src.first) + ", rel " +
                  num(100 * lin_src.second) + " %; on [1.9, 2]: abs " + num(lin_src_narrow) +
                  "; best linear (Remez) on [sqrt2, 2]: abs " + num(lin_fit.first) + ", rel " + num(100 * lin_fit.second) + " %",
              lin_src.first <= 5e-4 ? "holds" : "does not hold: no linear reaches 0.0005 on [sqrt2, 2]; rel 0.12 % holds only for the minimax fit");
-  claims.add("7.bisector.quadratic", "000 ch.2 / 001", "1/sqrt(2+z) ~ 0.014z^2 - 0.119z + 0.681", "abs <= 2e-5, rel 0.004 %",
+  claims.add("7.bisector.quadratic", "[Dembitsky 2025, software/hardware rendering] ch. 2; [Romanyuk & Romanyuk, combined shading]", "1/sqrt(2+z) ~ 0.014z^2 - 0.119z + 0.681", "abs <= 2e-5, rel 0.004 %",
              "printed coefficients on [sqrt2, 2]: abs " + num(quad_src.first) + ", rel " + num(100 * quad_src.second) +
                  " %; minimax quadratic on [sqrt2, 2]: abs " + num(quad_fit.first) + ", rel " + num(100 * quad_fit.second) + " %",
              quad_src.first <= 2e-5 ? "holds"
                                     : "holds only for unrounded minimax coefficients (0.680850, -0.118922, 0.014253); the printed 3-digit ones are 50x worse");
-  claims.add("7.h.quadratic", "000 ch.2", "h(r) = 1/sqrt(2(1+r)) by a quadratic", "abs <= 0.002, rel <= 0.36 %",
+  claims.add("7.h.quadratic", "[Dembitsky 2025, software/hardware rendering] ch. 2", "h(r) = 1/sqrt(2(1+r)) by a quadratic", "abs <= 0.002, rel <= 0.36 %",
              "minimax quadratic on r in [0, 1]: abs " + num(hq_fit.first) + ", rel " + num(100 * hq_fit.second) + " %",
              hq_fit.first <= 0.002 ? "holds (for r in [0, 1], end normals within 90 deg; rel " + num(100 * hq_fit.second) + " % is slightly above 0.36 %)"
                                    : "does not hold");
-  claims.add("7.h.cubic", "000 ch.2", "h ~ -0.059r^3 + 0.193r^2 - 0.341r + 0.707", "abs <= 0.00038, rel 0.054 %",
+  claims.add("7.h.cubic", "[Dembitsky 2025, software/hardware rendering] ch. 2", "h ~ -0.059r^3 + 0.193r^2 - 0.341r + 0.707", "abs <= 0.00038, rel 0.054 %",
              "printed coefficients on [0, 1]: abs " + num(hc_src.first) + ", rel " + num(100 * hc_src.second) +
                  " %; minimax cubic on [0, 1]: abs " + num(hc_fit.first) + ", rel " + num(100 * hc_fit.second) + " %",
              hc_src.first <= 3.8e-4 ? "holds" : "does not hold with the printed coefficients (rounding); the minimax cubic meets abs 0.00038");
@@ -200,7 +200,7 @@ PhongStudy phong_study() {
   double worst_printed = 0;
   for (const auto& row : acos_rows) worst_printed = std::fmax(worst_printed, row["printed_max_rel"].get<double>());
   report["arccos_worst"] = {{"printed_max_rel", worst_printed}, {"refit_max_rel", worst_fixed}};
-  claims.add("7.arccos", "000 table 3.1", "arccos by piecewise quadratic Chebyshev polynomials", "rel <= 0.2 %",
+  claims.add("7.arccos", "[Dembitsky 2025, software/hardware rendering] Table 3.1", "arccos by piecewise quadratic Chebyshev polynomials", "rel <= 0.2 %",
              "printed table fails on " + failed + "; refit (last interval as sqrt(1-x) q(x)): max rel " + num(100 * worst_fixed) + " %",
              failed.empty() ? "holds" : "does not hold as printed; holds after the refit");
 
@@ -218,7 +218,7 @@ PhongStudy phong_study() {
         worst = std::fmax(worst, glm::length((l * na + nb) / m - bis));
       }
     }
-    claims.add("7.dichotomy.closed_form", "SEEDS §7 (verify)", "N_{1/2^n} = (L_n Na + Nb)/M_n, M_n = 2 M_{n-1} cos(theta/2^n), L_n = L_{n-1} + M_{n-1}",
+    claims.add("7.dichotomy.closed_form", "[Romanyuk & Romanyuk, combined shading] (verify)", "N_{1/2^n} = (L_n Na + Nb)/M_n, M_n = 2 M_{n-1} cos(theta/2^n), L_n = L_{n-1} + M_{n-1}",
                "exact", "max |closed form - repeated bisection| over theta in {0.1,1,2,3}, n <= 10: " + num(worst),
                worst < 1e-12 ? "holds" : "does not hold");
   }
@@ -268,7 +268,7 @@ PhongStudy phong_study() {
     double worst16 = 0;
     for (double theta : {0.05, 0.2, 0.5, 1.0})
       for (int length : {2, 3, 4, 8, 16}) worst16 = std::fmax(worst16, span_error<double>(d, theta, length, exact).diffuse);
-    claims.add("7.dichotomy.short", "000 ch.2", "binary angle division is good for short spans", "m <= 16",
+    claims.add("7.dichotomy.short", "[Dembitsky 2025, software/hardware rendering] ch. 2", "binary angle division is good for short spans", "m <= 16",
                "dichotomy:quadratic-fit, m <= 16, theta <= 1 rad: max diffuse error " + num(worst16) + " (" +
                    num(255 * worst16) + " levels at k_d I = 1)",
                worst16 * 255 < 1 ? "holds (below one 8-bit level)" : "holds only for small theta");
@@ -361,20 +361,20 @@ PhongStudy phong_study() {
       if (i == 50) at2 = w;
     }
     report["sevenths_exponent_scan"] = scan;
-    claims.add("8.7n16.exponent", "000 ch.3 (verify)", "cos-quadratic variant with 7n/16 (shifts only)", "exponent not legible",
+    claims.add("8.7n16.exponent", "[Dembitsky 2025, software/hardware rendering] ch. 3 (verify)", "cos-quadratic variant with 7n/16 (shifts only)", "exponent not legible",
                "(1 + (7n/16)(cos-1))^p: worst abs error over n = 2..1000 is least at p = " + num(best_p) + " (" + num(best) +
                    "); p = 2: " + num(at2) + "; equal slope at alpha = 0 needs p = 16/7 = 2.286",
                "p = 2 (squaring, shifts only) is within " + num(100 * (at2 - best) / best, 2) + " % of the best exponent; the quadratic model with n/2 is worse");
   }
-  // The 4 % claim (§6/§8): 1 - cos^n(phi/2) <= 0.04.
+  // The 4 % claim ([Romanyuk & Romanyuk, combined shading]): 1 - cos^n(phi/2) <= 0.04.
   {
     const double phi100 = 2 * std::acos(std::pow(0.96, 1.0 / 100)), phi10 = 2 * std::acos(std::pow(0.96, 1.0 / 10));
     report["specular_4pct_phi_deg"] = {{"n100", phi100 * 180 / kPi}, {"n10", phi10 * 180 / kPi}};
-    claims.add("6.specular.4pct", "001", "specular error 1 - cos^n(phi/2) <= 4 % for n <= 100 below a small phi", "<= 4 %",
+    claims.add("6.specular.4pct", "[Romanyuk & Romanyuk, combined shading]", "specular error 1 - cos^n(phi/2) <= 4 % for n <= 100 below a small phi", "<= 4 %",
                "threshold phi for 4 %: n = 100: " + num(phi100 * 180 / kPi) + " deg; n = 10: " + num(phi10 * 180 / kPi) + " deg",
                "holds only when the end-normal angle phi <= " + num(phi100 * 180 / kPi) + " deg (n = 100)");
   }
-  claims.add("7.recurrence.drift", "SEEDS §7", "N(t+1) = 2cos(dtheta)N(t) - N(t-1), each unit vector from the two before", "-",
+  claims.add("7.recurrence.drift", "[Dembitsky 2025, software/hardware rendering] ch. 2", "N(t+1) = 2cos(dtheta)N(t) - N(t-1), each unit vector from the two before", "-",
              "float, theta = 1, 4096 px, max |len - 1|: " + drift_summary,
              "holds in double; in float 2cos(dtheta) rounds (dtheta = 1/4095 rad: cos = 1 - 3e-8, float spacing 6e-8), so the 2cos form drifts; the difference form or re-anchoring fixes it (see table)");
 

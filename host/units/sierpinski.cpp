@@ -7,6 +7,7 @@
 
 #include "parashade/errors.hpp"
 #include "parashade/unit_table.hpp"
+#include "kernels/constants.h"
 
 namespace parashade {
 namespace {
@@ -16,7 +17,8 @@ std::optional<UnitConfig> parse(const std::string& spec) {
   if (!std::regex_match(spec, m, std::regex(R"(sierpinski(:(\d{1,2}))?(:(even|odd|touch|overlap))?(:seal)?)")))
     return std::nullopt;
   const int depth = m[2].matched ? std::stoi(m[2]) : 1;
-  if (depth < 1 || depth > 3) throw UsageError("--units '" + spec + "': depth D = " + m[2].str() + " is not in 1..3");
+  if (depth < 1 || depth > MAX_SIERPINSKI_DEPTH)
+    throw UsageError("unit '" + spec + "': depth D = " + m[2].str() + " is not in 1.." + std::to_string(MAX_SIERPINSKI_DEPTH));
   const std::string grid = m[4].matched ? m[4].str() : "even";
   const SierpinskiGrid g = grid == "odd"       ? SierpinskiGrid::odd
                            : grid == "touch"   ? SierpinskiGrid::touch

@@ -1,4 +1,4 @@
-#include "parashade/sierpinski.hpp"
+#include "parashade/sierpinski_setup.hpp"
 
 #include <algorithm>
 #include <array>
@@ -17,7 +17,7 @@ using v2 = glm::i64vec2;
 
 // A sub-triangle of ABC at depth D, in the slot order of A, B, C: sign * S_D + t + T, where T is the top
 // vertex and S_D the shaded sub-triangle's shape relative to it. Corner children keep the sign, the middle
-// child flips it (SEEDS §4: AKM, KBL, MLC translated, LMK rotated by 180°).
+// child flips it ([Malovanyi 2019, parallel Gouraud] ch. 3: AKM, KBL, MLC translated, LMK rotated by 180°).
 struct Leaf {
   int sign;
   v2 t;  // sub-pixels, relative to the top vertex

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "parashade/errors.hpp"
+#include "kernels/constants.h"
 
 namespace parashade {
 
@@ -12,19 +13,23 @@ extern const UnitModel kClassicModel, kCounterModel, kInterleaveModel, kSegmentM
 
 const std::vector<UnitRow>& unit_table() {
   static const std::vector<UnitRow> table = {
-      {UnitKind::classic, "classic", 1, &kClassicModel, {"classic"}, {"classic"}, {"classic"}},
-      {UnitKind::counter, "counter", 2, &kCounterModel, {"counter"}, {"counter"}, {"counter"}},
-      {UnitKind::interleave, "interleave:M[:own] with M = 1..16", 0, &kInterleaveModel,
+      {UnitKind::classic, "classic", {"classic"}, 1, &kClassicModel, {"classic"}, {"classic"}, {"classic"}},
+      {UnitKind::counter, "counter", {"counter"}, 2, &kCounterModel, {"counter"}, {"counter"}, {"counter"}},
+      {UnitKind::interleave, "interleave:M[:own] with M = 1.." + std::to_string(MAX_INTERLEAVE_LANES),
+       {"interleave", "interleave:own"}, 0, &kInterleaveModel,
        {"interleave:1", "interleave:2", "interleave:3", "interleave:4", "interleave:7", "interleave:16",
         "interleave:2:own", "interleave:3:own", "interleave:16:own"},
        {"interleave:1", "interleave:2", "interleave:3", "interleave:4", "interleave:8", "interleave:16",
         "interleave:2:own", "interleave:4:own"},
        {"interleave:2", "interleave:2:own", "interleave:4:own"}},
-      {UnitKind::segment, "segment:P with P = 2, 4, ..., 64", 0, &kSegmentModel,
+      {UnitKind::segment, "segment:P with P = 2, 4, ..., " + std::to_string(MAX_SEGMENT_LANES), {"segment"}, 0,
+       &kSegmentModel,
        {"segment:2", "segment:4", "segment:16", "segment:64"},
        {"segment:2", "segment:4", "segment:8", "segment:16", "segment:32", "segment:64"},
        {"segment:8"}},
-      {UnitKind::sierpinski, "sierpinski[:D][:even|:odd|:touch|:overlap][:seal] with D = 1..3", 0, &kSierpinskiModel,
+      {UnitKind::sierpinski,
+       "sierpinski[:D][:even|:odd|:touch|:overlap][:seal] with D = 1.." + std::to_string(MAX_SIERPINSKI_DEPTH),
+       {"sierpinski"}, 0, &kSierpinskiModel,
        {"sierpinski:1", "sierpinski:2:odd", "sierpinski:3", "sierpinski:2:seal", "sierpinski:1:overlap",
         "sierpinski:2:touch:seal"},
        {"sierpinski:1:seal", "sierpinski:2:seal"},
@@ -58,8 +63,23 @@ std::optional<std::smatch> match_lanes(const std::string& spec, const char* patt
   std::smatch m;
   if (!std::regex_match(spec, m, std::regex(pattern))) return std::nullopt;
   if (!valid(std::stoi(m[1])))
-    throw UsageError("--units '" + spec + "': " + letter + " = " + m[1].str() + " is not " + rule);
+    throw UsageError("unit '" + spec + "': " + letter + " = " + m[1].str() + " is not " + rule);
   return m;
+}
+
+std::vector<std::string> unit_combination_values() {
+  std::vector<std::string> out;
+  for (const UnitRow& row : unit_table()) out.insert(out.end(), row.combination_values.begin(), row.combination_values.end());
+  return out;
+}
+
+std::size_t unit_combination_value(const UnitConfig& unit) {
+  std::size_t index = 0;
+  for (const UnitRow& row : unit_table()) {
+    if (row.kind == unit.kind) return index + (unit.own_step && row.combination_values.size() > 1 ? 1 : 0);
+    index += row.combination_values.size();
+  }
+  throw std::invalid_argument("unknown unit");
 }
 
 ps_int span_clocks(const UnitConfig& unit, ps_int length) {
@@ -69,7 +89,7 @@ ps_int span_clocks(const UnitConfig& unit, ps_int length) {
 std::string unit_specs_help(bool span_units_only) {
   std::string out;
   for (const UnitRow& row : unit_table())
-    if (!span_units_only || row.model->error_bound) out += (out.empty() ? "" : ", ") + std::string(row.spec);
+    if (!span_units_only || row.model->error_bound) out += (out.empty() ? "" : ", ") + row.spec;
   return out;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Combined Gouraud/Phong shading on digital segments (SEEDS §6, docs/combined.md): exact Blinn–Phong
+// Combined Gouraud/Phong shading on digital segments ([Romanyuk & Romanyuk, combined shading], docs/combined.md): exact Blinn–Phong
 // at the ends of segments of 2^k pixels along each span, linear interpolation inside. Here: the
 // method's parameters and the worst-case error bounds that `combined:auto` chooses k from.
 #include <string>

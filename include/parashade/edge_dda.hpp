@@ -1,11 +1,11 @@
 #pragma once
-// The sources' edge-walking rasterization (SEEDS §1, §3; thesis 002 §2.2, §4.3): vertices at integer
+// The sources' edge-walking rasterization ([Malovanyi 2019, parallel Gouraud] §2.2, §4.3): vertices at integer
 // pixel addresses, each edge walked by the line interpolator of the Obidnyk–Petukh algorithm (one pixel
 // per clock along the major axis; the evaluation function OF starts at floor(BP/2), gains MP each clock,
 // and a minor step is taken when it reaches BP), spans filled between the two chains, intensities
 // carried along the edges by the edge increment dI = (I_end - I_start) / BP.
 // A host-side study: its coverage is compared with the pixel-centre top-left rule, and its edge
-// intensities with the plane through the vertices (the error delta_E of SEEDS §3).
+// intensities with the plane through the vertices (the error delta_E of [Malovanyi 2019, parallel Gouraud] §2.2).
 #include <cstdint>
 #include <vector>
 

@@ -5,6 +5,8 @@
 // is prepared on the host (prepare_frame), rendered by any device, or only planned (`parashade plan`).
 // Which of these combine is one table (combinations.hpp), checked by check_frame_config.
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "parashade/combinations.hpp"
 #include "parashade/combined.hpp"
@@ -45,6 +47,11 @@ struct FrameConfig {
   // The sierpinski unit splits every triangle into 4^D sub-triangle records.
   bool splits_triangles() const { return unit_path() && unit().kind == UnitKind::sierpinski; }
 };
+
+// The supported screen tile sizes, the powers of two from TILE_MIN to TILE_MAX (kernels/constants.h), in
+// increasing order; and as text for help and errors ("16, 32 or 64").
+std::vector<int> tile_sizes();
+std::string tile_sizes_text();
 
 // Checks the values (tile size, plan limits) and the combination, on `devices`, against the table
 // (combinations.hpp). Throws ConfigError naming the values at fault, never a command-line flag.

@@ -1,6 +1,6 @@
 #pragma once
 // Golden models of the shading units: plain C++ that steps each unit's registers clock by clock, as
-// the block diagrams of SEEDS §4 describe (slow, small, obviously right). In fixed point the kernels
+// the block diagrams of [Malovanyi 2019, parallel Gouraud] ch. 3 describe (slow, small, obviously right). In fixed point the kernels
 // must reproduce them bit for bit (tests/cl/unit_golden_test.cpp). Each unit's model is in
 // host/units/<unit>.cpp (unit_table.hpp); what they share (the span load, the adder) is here.
 #include <cstdint>

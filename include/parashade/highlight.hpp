@@ -1,5 +1,5 @@
 #pragma once
-// Highlight-presence test (SEEDS §8): may a triangle show a specular highlight? Its shaded normals are
+// Highlight-presence test ([Dembitsky 2025, software/hardware rendering] ch. 3): may a triangle show a specular highlight? Its shaded normals are
 // normalized interpolations of its vertex normals, so they lie in the spherical triangle of the unit
 // vertex normals (for barycentric weights >= 0). With a directional light and a distant viewer H is
 // constant, and the largest N.H over that spherical triangle bounds the specular term.

@@ -1,5 +1,5 @@
 #pragma once
-// Blinn–Phong in double precision, written from the formula (SEEDS §9). Used by the vertex stage for
+// Blinn–Phong in double precision, written from the formula ([Dembitsky 2025, software/hardware rendering] §4.1). Used by the vertex stage for
 // Gouraud vertex values and by the exact reference; the kernels have their own implementation.
 #include <glm/glm.hpp>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Unit normals along a span without a per-pixel normalization (SEEDS §7, docs/phong-methods.md).
+// Unit normals along a span without a per-pixel normalization ([Dembitsky 2025, software/hardware rendering] ch. 2, docs/phong-methods.md).
 // A span of `length` pixels runs from the unit normal na (pixel 0) to the unit normal nb (pixel
 // length-1); the renderer's exact Phong normal at pixel i is normalize(na + (nb - na) w), w = i/(length-1).
 // Every method writes one vector per pixel (not renormalized: the methods' own length error is part
@@ -30,7 +30,7 @@ struct NormalizeMethod {
   Arccos arccos = Arccos::exact;                  // recurrence
   int segment_log2 = 4;   // dichotomy: segments of 2^k pixels with exact ends
   // dichotomy, last (shorter) segment: false = bisect between its real ends and take the nearest dyadic
-  // point per pixel; true = the source's rule (SEEDS §6): 2^k long with an extrapolated end normal.
+  // point per pixel; true = the source's rule ([Romanyuk & Romanyuk, combined shading]): 2^k long with an extrapolated end normal.
   bool extrapolate_last = false;
   int reanchor = 0;       // recurrence: restart from exact normals every this many pixels (0: never)
   // recurrence in difference form: N(t+1) = N(t) + D(t), D(t) = D(t-1) - k N(t), k = 4 sin^2(dtheta/2);

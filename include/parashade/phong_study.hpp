@@ -1,6 +1,6 @@
 #pragma once
 // The Phong-family study (`parashade phong-study`; docs/phong-methods.md, docs/phong-study.md): every
-// normalization method, approximation and specular model of SEEDS §7–§8 measured against
+// normalization method, approximation and specular model of [Dembitsky 2025, software/hardware rendering] ch. 2–3 measured against
 // double-precision exact values, each numeric claim of the sources with its measured figure and a
 // verdict. Deterministic: no random draws.
 #include <cstdint>

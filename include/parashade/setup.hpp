@@ -1,7 +1,8 @@
 #pragma once
 // Triangle setup: screen triangles -> fixed-point edge functions, bounding boxes and attribute planes
 // (the records of kernels/triangle_record.h). For Gouraud the x increment of each channel is the
-// constant span increment dI_G of SEEDS §2, computed once per triangle with formula (2.16).
+// constant span increment dI_G of [Gouraud simplification], computed once per triangle with
+// [Malovanyi 2019, parallel Gouraud] formula (2.16).
 #include <cstddef>
 #include <cstdint>
 
@@ -43,7 +44,7 @@ void move_plane_anchor(const TriangleGeometry& from, const float* attr, const Fi
 constexpr double kPlaneLimit = double(1 << 26);
 std::int64_t to_plane_register(double levels);
 
-// The constant span increment dI_G (SEEDS formula 2.16) for vertex values ia, ib, ic at screen
+// The constant span increment dI_G ([Malovanyi 2019, parallel Gouraud] formula (2.16)) for vertex values ia, ib, ic at screen
 // positions a, b, c (pixels): [(Ic-Ia)*dy_BC - (Ic-Ib)*dy_AC] / [dx_AC*dy_BC - dx_BC*dy_AC].
 double constant_span_increment(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double ia, double ib, double ic);
 // Formula (2.16) as setup evaluates it: the denominator depends only on the triangle, so its

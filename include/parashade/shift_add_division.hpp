@@ -1,5 +1,5 @@
 #pragma once
-// Division by a span length k with shifts and adds (SEEDS §5, source 003): 1/k is replaced by n binary
+// Division by a span length k with shifts and adds ([Romanyuk & Obidnyk 2011, faster shading]): 1/k is replaced by n binary
 // digits, 1/k ~ sum_{j=1..n} i_j * 2^-j with i_j in {0, 1}, and a quotient D/k becomes the sum of D
 // shifted right by j for every j with i_j = 1 -- a shift register feeding an accumulating adder that
 // adds only where i_j = 1. The digits are the n-bit expansion of 1/k, truncated or rounded to nearest

@@ -1,5 +1,5 @@
 #pragma once
-// Lower-degree specular models replacing cos^n(alpha), cos(alpha) = N.H (SEEDS §8, source 000 ch. 3;
+// Lower-degree specular models replacing cos^n(alpha), cos(alpha) = N.H ([Dembitsky 2025, software/hardware rendering] ch. 3;
 // docs/phong-methods.md). All return values in [0, 1] and 0 for cos(alpha) <= 0.
 #include <string>
 

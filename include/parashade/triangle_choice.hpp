@@ -1,5 +1,5 @@
 #pragma once
-// Per-triangle choice of the shading method inside the combined method (SEEDS §8 "adaptive
+// Per-triangle choice of the shading method inside the combined method ([Dembitsky 2025, software/hardware rendering] ch. 3 "adaptive
 // Gouraud/Phong", issue 4(b, c); docs/triangle-choice.md): each triangle is shaded either by Gouraud
 // (its vertex intensities interpolated linearly) or by Phong's normals — per pixel, or at the ends of
 // 2^K-pixel segments (combined:K / combined:auto).

@@ -1,5 +1,5 @@
 #pragma once
-// Accumulated fixed-point error of the shading units (SEEDS §4) as a function of span length and
+// Accumulated fixed-point error of the shading units ([Malovanyi 2019, parallel Gouraud] ch. 3) as a function of span length and
 // fraction bits: random exact spans go through setup's plane registers and a unit's golden model,
 // and every pixel's register is compared with the exact value. Also the analytic bounds of our
 // register model and the source's printed formulas (δ_K, δ_KH). Derivations: docs/unit-error.md.

@@ -42,9 +42,12 @@ struct UnitModel {
 struct UnitRow {
   UnitKind kind;
   // `--units`: the unit's word ("classic") or the form of its spec ("interleave:M[:own] with M = 1..16"),
-  // as the help and the errors list it; the lanes (intensities per clock) of a unit without parameters,
-  // 0 where its parser sets them.
-  const char* spec;
+  // as the help and the errors list it.
+  std::string spec;
+  // Its values on the unit axis of the table of what combines (combinations.hpp): its word, and where
+  // the table tells the own-step variant apart (UnitConfig::own_step) a second value for it.
+  std::vector<std::string> combination_values;
+  // The lanes (intensities per clock) of a unit without parameters, 0 where its parser sets them.
   int lanes;
   const UnitModel* model;
   // The configurations run by the golden-model tests (kernel against golden model), by default in
@@ -58,9 +61,14 @@ const UnitRow& unit_row(UnitKind kind);
 
 // For a unit's parser: the match of a spec whose first group is its lane count N (`pattern`, e.g.
 // "interleave:(\d{1,3})(:own)?"), nullopt for a spec it does not match; throws UsageError
-// "--units 'SPEC': LETTER = N is not RULE" when `valid` refuses N.
+// "unit 'SPEC': LETTER = N is not RULE" when `valid` refuses N.
 std::optional<std::smatch> match_lanes(const std::string& spec, const char* pattern, const char* letter,
                                        bool (*valid)(int lanes), const char* rule);
+
+// The unit axis of the table of what combines, after its "none": every row's combination_values in
+// table order; and a unit's index among them.
+std::vector<std::string> unit_combination_values();
+std::size_t unit_combination_value(const UnitConfig& unit);
 
 // The unit's span clocks (UnitModel::span_clocks), without the load clock.
 ps_int span_clocks(const UnitConfig& unit, ps_int length);

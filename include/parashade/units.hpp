@@ -1,5 +1,5 @@
 #pragma once
-// The modeled shading units (SEEDS §4) and their arithmetic: what `--units` and `--arith` select.
+// The modeled shading units ([Malovanyi 2019, parallel Gouraud] ch. 3) and their arithmetic: what `--units` and `--arith` select.
 // A unit decides how many intensities a clock produces and, in fixed point, which values are
 // quantized where (kernels/fixed_point.h, docs/units.md). Units apply to Gouraud's code interpolators.
 #include <cstdint>
@@ -16,10 +16,10 @@ enum class UnitKind {
   counter = UNIT_COUNTER,
   interleave = UNIT_INTERLEAVE,
   segment = UNIT_SEGMENT,
-  sierpinski = UNIT_SIERPINSKI,  // extra triangulation (SEEDS §4): one of 4^D sub-triangles shaded, the rest copied
+  sierpinski = UNIT_SIERPINSKI,  // extra triangulation ([Malovanyi 2019, parallel Gouraud] ch. 3): one of 4^D sub-triangles shaded, the rest copied
 };
 
-// How the extra triangulation gets its midpoints onto pixel corners (SEEDS §4, the sources' two remedies).
+// How the extra triangulation gets its midpoints onto pixel corners ([Malovanyi 2019, parallel Gouraud] ch. 3, the sources' two remedies).
 enum class SierpinskiGrid {
   even,     // (a) every vertex to the nearest pixel corner = 0 (mod 2^D): exact midpoints
   odd,      // (a) the same with corners = 1 (mod 2^D)

@@ -70,7 +70,7 @@ TEST(GouraudKernel, EightBitOutputWithinHalfALevelPlusBound) {
   EXPECT_EQ(e.pixels_over_1_level, 0u);
 }
 
-// SEEDS §2: along every span the kernel's values step by the triangle's constant increment dI_G.
+// [Gouraud simplification]: along every span the kernel's values step by the triangle's constant increment dI_G.
 TEST(GouraudKernel, SpanIncrementsEqualConstantIncrement) {
   std::mt19937 rng(99);
   for (int trial = 0; trial < 20; ++trial) {

@@ -19,7 +19,7 @@
 #include "parashade/reference.hpp"
 #include "parashade/renderer.hpp"
 #include "parashade/setup.hpp"
-#include "parashade/sierpinski.hpp"
+#include "parashade/sierpinski_setup.hpp"
 #include "parashade/unit_table.hpp"
 
 namespace parashade {

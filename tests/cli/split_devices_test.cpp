@@ -46,10 +46,10 @@ TEST_F(SplitDevices, TwoDevicesGiveTheSingleDeviceImage) {
 
 TEST_F(SplitDevices, BadListsAreNamed) {
   const auto scene = input("ball.json", sphere_scene());
-  EXPECT_TRUE(fails_with(render(scene, {"--device", "pthread,pthread"}), kUsage, {"twice"}));
+  EXPECT_TRUE(fails_with(render(scene, {"--device", "pthread,pthread"}), kUsage, {"--device", "twice"}));
   EXPECT_TRUE(fails_with(render(scene, {"--device", "pthread,nosuchdevice"}), kDeviceFailure, {"nosuchdevice"}));
-  EXPECT_TRUE(fails_with(render(scene, {"--device", "sub:pthread:1+x"}), kUsage, {"sub:pthread:1+x"}));
-  EXPECT_TRUE(fails_with(render(scene, {"--device", "sub:pthread:0"}), kUsage, {"sub:pthread:0"}));
+  EXPECT_TRUE(fails_with(render(scene, {"--device", "sub:pthread:1+x"}), kUsage, {"--device", "sub:pthread:1+x"}));
+  EXPECT_TRUE(fails_with(render(scene, {"--device", "sub:pthread:0"}), kUsage, {"--device", "sub:pthread:0"}));
   EXPECT_TRUE(fails_with(render(scene, {"--device", "pthread", "--keep-going"}), kUsage, {"--keep-going", "one device"}));
   EXPECT_TRUE(nothing_written());
 }

@@ -52,14 +52,14 @@ TEST_F(CliUnitError, TableVerdictsAndJson) {
 
 TEST_F(CliUnitError, BadCommandLines) {
   EXPECT_TRUE(fails_with(run({"--units", "classic,diagonal"}), kUsage, {"diagonal"}));
-  EXPECT_TRUE(fails_with(run({"--units", "interleave:17"}), kUsage, {"interleave:17"}));
+  EXPECT_TRUE(fails_with(run({"--units", "interleave:17"}), kUsage, {"--units", "interleave:17"}));
   EXPECT_TRUE(fails_with(run({"--units", "classic,,counter"}), kUsage, {"--units", "empty"}));
   EXPECT_TRUE(fails_with(run({"--lengths", "0"}), kUsage, {"--lengths", "'0'"}));
   EXPECT_TRUE(fails_with(run({"--lengths", "8,x"}), kUsage, {"--lengths", "'x'"}));
   EXPECT_TRUE(fails_with(run({"--lengths", "8,"}), kUsage, {"--lengths"}));
   EXPECT_TRUE(fails_with(run({"--lengths", "70000"}), kUsage, {"70000"}));
   EXPECT_TRUE(fails_with(run({"--arith", "float"}), kUsage, {"float", "fixed"}));
-  EXPECT_TRUE(fails_with(run({"--arith", "fixed:8.8"}), kUsage, {"fixed:8.8"}));
+  EXPECT_TRUE(fails_with(run({"--arith", "fixed:8.8"}), kUsage, {"--arith", "fixed:8.8"}));
   EXPECT_TRUE(fails_with(run({"--trials", "0"}), kUsage, {"--trials"}));
   EXPECT_TRUE(fails_with(run({"--trials", "many"}), kUsage, {"--trials"}));
   EXPECT_TRUE(fails_with(run({"--formula-bits", "0"}), kUsage, {"--formula-bits"}));

@@ -1,5 +1,5 @@
 // The sources' edge-walking DDA: its pixels, its coverage against the pixel-centre top-left rule, and
-// the edge intensity error delta_E against the sources' bound |I_C - I_A| / (2 MP) (SEEDS §3).
+// the edge intensity error delta_E against the sources' bound |I_C - I_A| / (2 MP) ([Malovanyi 2019, parallel Gouraud] §2.2).
 #include <cmath>
 #include <cstdio>
 #include <random>

@@ -1,7 +1,7 @@
 // The vertex stage and primitive assembly: snapping to the sub-pixel grid, winding, back-face culling,
 // near-plane and guard-band clipping (new vertices on the plane, attributes interpolated in clip
 // space), invalid coordinates, and independence from the thread count. Expected values come from the
-// formulas of screen_geometry.hpp and SEEDS §9 (lighting.hpp), not from the code under test.
+// formulas of screen_geometry.hpp and [Dembitsky 2025, software/hardware rendering] §4.1 (lighting.hpp), not from the code under test.
 #include <cmath>
 #include <memory>
 
@@ -74,7 +74,7 @@ TEST(GeometryStage, NearPlaneClippingPutsNewVerticesOnThePlaneWithInterpolatedCo
     const double t = z_near / 8.0;
     const glm::dvec3 expected_world = glm::dvec3(p[from]) + t * (glm::dvec3(p[2]) - glm::dvec3(p[from]));
     EXPECT_NEAR(glm::length(glm::dvec3(g.world[v]) - expected_world), 0.0, 1e-4);
-    // Gouraud colour: the lit colours of the edge's ends, interpolated with the same t (SEEDS §9 formula).
+    // Gouraud colour: the lit colours of the edge's ends, interpolated with the same t ([Dembitsky 2025, software/hardware rendering] §4.1 formula).
     const glm::dvec3 c_from = blinn_phong(s, s.materials[0], p[from], n[from]);
     const glm::dvec3 c_to = blinn_phong(s, s.materials[0], p[2], n[2]);
     const glm::dvec3 expected = c_from + t * (c_to - c_from);

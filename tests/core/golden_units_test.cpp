@@ -62,7 +62,7 @@ TEST(GoldenUnits, SegmentProducesPPerClockFromMultiples) {
   EXPECT_EQ(wide.clocks, 1u);
 }
 
-// The sources print w(P) = 2, 4, 8, 14, 22, 32 for P = 2..64 (SEEDS §4). Our construction needs P/2 - 1
+// The sources print w(P) = 2, 4, 8, 14, 22, 32 for P = 2..64 ([Malovanyi 2019, parallel Gouraud] ch. 3). Our construction needs P/2 - 1
 // adders for the multiples (odd multiples only), P - 1 output adders and one accumulator.
 TEST(GoldenUnits, SegmentAdderCountsOfOurConstruction) {
   const int p[] = {2, 4, 8, 16, 32, 64};

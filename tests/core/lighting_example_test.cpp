@@ -1,4 +1,4 @@
-// The worked lighting example of SEEDS §9 (source 000 §4.1) through blinn_phong_terms.
+// The worked lighting example of [Dembitsky 2025, software/hardware rendering] §4.1 through blinn_phong_terms.
 //
 // N = (0,0,1), L = (0.577,0.577,0.577) (normalized: (1,1,1)/sqrt(3), N.L = 0.57735), V = (0,0,1),
 // k_a = 0.1, I_a = 0.2, k_d = 0.7, I_d = 0.8, k_s = 0.5, I_s = 1.0, n = 10. True values:

@@ -1,4 +1,4 @@
-// Fast unit normals (SEEDS §7): each method against properties worked out independently of the code
+// Fast unit normals ([Dembitsky 2025, software/hardware rendering] ch. 2): each method against properties worked out independently of the code
 // (slerp's equal angles, the exact bisector, the quadratic through the exact mid normal), the hard
 // cases of issue 4 (theta -> 0, theta -> pi, a zero interpolated normal, spans of 1, 2, 3 and 4096
 // pixels) with no NaN or Inf, and the documented error bounds of every approximation.

@@ -1,4 +1,4 @@
-// Division by shifts and adds (SEEDS §5): the source's worked example and Table 1 with values typed in
+// Division by shifts and adds ([Romanyuk & Obidnyk 2011, faster shading]): the source's worked example and Table 1 with values typed in
 // from the source and worked out by hand, exactness for powers of two, the error bounds checked in
 // exact integer arithmetic, the hardware model of the quotient, and bad input.
 #include "parashade/shift_add_division.hpp"
@@ -22,7 +22,7 @@ std::vector<int> terms_of(const ShiftAddReciprocal& r) {
   return js;
 }
 
-// Source 003: k = 7, n = 6: 1/7 ~ 1/8 + 1/64; dI for 0 -> 255 is 35.8594 instead of 36.4286, absolute
+// [Romanyuk & Obidnyk 2011, faster shading]: k = 7, n = 6: 1/7 ~ 1/8 + 1/64; dI for 0 -> 255 is 35.8594 instead of 36.4286, absolute
 // error 0.5692, relative 1.56 %. 64/7 = 9.14, so truncation and rounding agree here.
 TEST(ShiftAddDivision, SourceExampleSevenSixShifts) {
   for (R mode : {R::truncate, R::nearest}) {
@@ -40,7 +40,7 @@ TEST(ShiftAddDivision, SourceExampleSevenSixShifts) {
   }
 }
 
-// Table 1 of source 003 (k = 2..16, n = 8): the printed approximations and dI errors for 0 -> 255.
+// Table 1 of [Romanyuk & Obidnyk 2011, faster shading] (k = 2..16, n = 8): the printed approximations and dI errors for 0 -> 255.
 // Every row is the expansion rounded to nearest at bit 8; truncation differs at k = 6, 7, 10, 13.
 struct SourceRow {
   int k;

@@ -1,4 +1,4 @@
-// Lower-degree specular models (SEEDS §8): values worked out by hand, the lobe rule checked against the
+// Lower-degree specular models ([Dembitsky 2025, software/hardware rendering] ch. 3): values worked out by hand, the lobe rule checked against the
 // closed-form lobe integral of cos^2, zero thresholds, N.H <= 0, and n = 1 and n = 1000+.
 #include "parashade/specular_models.hpp"
 
