@@ -10,7 +10,7 @@ namespace {
 // Each axis's values, in index order; a value's bit in a mask is 1 << index.
 const std::vector<std::string> kValues[kAxes] = {
     {"flat", "gouraud", "phong", "combined"},                                                    // method
-    {"none", "classic", "counter", "interleave", "interleave:own", "segment", "sierpinski"},    // unit
+    {"none", "classic", "counter", "interleave", "interleave:own", "segment", "sierpinski", "pipelined"},  // unit
     {"float", "fixed"},                                                                          // arith
     {"centre", "dda"},                                                                           // coverage
     {"constant", "per-span"},                                                                    // division
@@ -88,6 +88,7 @@ std::uint8_t unit_value(const FrameConfig& c) {
     case UnitKind::interleave: return u.own_step ? 4 : 3;
     case UnitKind::segment: return 5;
     case UnitKind::sierpinski: return 6;
+    case UnitKind::pipelined: return 7;
   }
   return 1;
 }

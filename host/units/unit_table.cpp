@@ -8,7 +8,8 @@
 
 namespace parashade {
 
-extern const UnitModel kClassicModel, kCounterModel, kInterleaveModel, kSegmentModel, kSierpinskiModel;
+extern const UnitModel kClassicModel, kCounterModel, kInterleaveModel, kSegmentModel, kSierpinskiModel,
+    kPipelinedModel;
 
 const std::vector<UnitRow>& unit_table() {
   static const std::vector<UnitRow> table = {
@@ -29,6 +30,8 @@ const std::vector<UnitRow>& unit_table() {
         "sierpinski:2:touch:seal"},
        {"sierpinski:1:seal", "sierpinski:2:seal"},
        {}},
+      {UnitKind::pipelined, "pipelined:M with M = 1..16", 0, &kPipelinedModel, {"pipelined:1", "pipelined:4"},
+       {"pipelined:1", "pipelined:2", "pipelined:4", "pipelined:8", "pipelined:16"}, {}},
   };
   return table;
 }
