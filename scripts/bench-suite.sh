@@ -61,6 +61,14 @@ done
 # Fixed-point error of the units against the source's formulas (SEEDS §4).
 "$BUILD/parashade" unit-error --json "$OUT/unit-error.json" >/dev/null
 
+# The units' RTL synthesized (Yosys): adders, flip-flops, muxes, depth per M, P; throughput against area
+# (docs/hardware.md; ~10 min). Skipped without yosys.
+if command -v yosys >/dev/null 2>&1; then
+  BUILD="$BUILD" "$PYTHON" scripts/hw_synth.py --out "$OUT/hw" >"$OUT/hw-synthesis.txt"
+else
+  echo "bench-suite: yosys is not installed: no synthesis of hw/ (scripts/install-deps.sh)" >&2
+fi
+
 # Host model of whole-triangle shading: constant increment and shift-add division (SEEDS §2, §5).
 if [ -x "$BUILD/bench/bench_span_setup" ]; then
   "$BUILD/bench/bench_span_setup" --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true \
