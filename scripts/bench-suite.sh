@@ -54,7 +54,7 @@ done
 # Interpolator count -> modeled and measured speed-up and error (Gouraud on the teapot and the sphere).
 for scene in teapot sphere; do
   "$BUILD/parashade" scaling "scenes/$scene.json" -q \
-      --units classic,counter,interleave:2,interleave:4,interleave:8,segment:8,segment:16,segment:64,sierpinski \
+      --units classic,counter,interleave:2,interleave:4,interleave:8,segment:8,segment:16,segment:64,pipelined:4,pipelined:16,sierpinski \
       --arith float,fixed:12.12 --frames 9 --report "$OUT/scaling-$scene.json" >/dev/null
 done
 

@@ -31,7 +31,7 @@ const std::vector<UnitRow>& unit_table() {
        {"sierpinski:1:seal", "sierpinski:2:seal"},
        {}},
       {UnitKind::pipelined, "pipelined:M with M = 1..16", 0, &kPipelinedModel, {"pipelined:1", "pipelined:4"},
-       {"pipelined:1", "pipelined:2", "pipelined:4", "pipelined:8", "pipelined:16"}, {}},
+       {"pipelined:1", "pipelined:4", "pipelined:16"}, {}},
   };
   return table;
 }
