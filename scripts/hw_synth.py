@@ -103,6 +103,7 @@ def synthesize(unit, lanes, i, f, work):
                     counts["ff_bits_datapath"] += width
             elif t in ("$mux", "$pmux"):
                 counts["mux_bits"] += width
+    counts["adders_w"] = counts["adders_datapath"] + counts["adders_multiples"]  # the unit's own W-bit adders
     m = re.findall(r"Number of cells:\s+(\d+)", full)
     counts["gates"] = int(m[-1]) if m else None
     d = re.findall(r"Longest topological path in \S+ \(length=(\d+)\)", full)
