@@ -24,7 +24,7 @@ import tempfile
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 LEN = 13  # hw/'s span length bits
 
-# The sources' printed adder counts for the segment-parallel unit (SEEDS: w(P)).
+# The sources' printed adder counts w(P) for the segment-parallel unit (the master's thesis's table).
 SOURCE_W = {2: 2, 4: 4, 8: 8, 16: 14, 32: 22, 64: 32}
 
 
