@@ -54,12 +54,20 @@ done
 # Interpolator count -> modeled and measured speed-up and error (Gouraud on the teapot and the sphere).
 for scene in teapot sphere; do
   "$BUILD/parashade" scaling "scenes/$scene.json" -q \
-      --units classic,counter,interleave:2,interleave:4,interleave:8,segment:8,segment:16,segment:64,sierpinski \
+      --units classic,counter,interleave:2,interleave:4,interleave:8,segment:8,segment:16,segment:64,pipelined:4,pipelined:16,sierpinski \
       --arith float,fixed:12.12 --frames 9 --report "$OUT/scaling-$scene.json" >/dev/null
 done
 
 # Fixed-point error of the units against the source's formulas ([Malovanyi 2019, parallel Gouraud] ch. 3).
 "$BUILD/parashade" unit-error --json "$OUT/unit-error.json" >/dev/null
+
+# The units' RTL synthesized (Yosys): adders, flip-flops, muxes, depth per M, P; throughput against area
+# (docs/hardware.md; ~10 min). Skipped without yosys.
+if command -v yosys >/dev/null 2>&1; then
+  BUILD="$BUILD" "$PYTHON" scripts/hw_synth.py --out "$OUT/hw" >"$OUT/hw-synthesis.txt"
+else
+  echo "bench-suite: yosys is not installed: no synthesis of hw/ (scripts/install-deps.sh)" >&2
+fi
 
 # Host model of whole-triangle shading: constant increment and shift-add division ([Gouraud simplification], [Romanyuk & Obidnyk 2011, faster shading]).
 if [ -x "$BUILD/bench/bench_span_setup" ]; then

@@ -1,7 +1,8 @@
 #!/bin/sh
 # Installs the Debian (bookworm) packages parashade builds, tests and benchmarks with (clang and its
 # runtimes: the libFuzzer targets that scripts/test.sh runs, docs/robustness.md; oclgrind: the second
-# OpenCL implementation of the anydevice tests, registered by the tests only, docs/pipeline.md).
+# OpenCL implementation of the anydevice tests, registered by the tests only, docs/pipeline.md; verilator
+# and yosys: the units' RTL tests and synthesis, docs/hardware.md).
 # openmpi-bin, libopenmpi-dev: render --distribute and the mpi test label (docs/distributed.md).
 # Runs as root or through sudo; safe to run again. scripts/report.py (plots) also needs python3-matplotlib,
 # which CI does not install.
@@ -17,5 +18,5 @@ $SUDO apt-get install -y -q --no-install-recommends \
     nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev \
     libegl-dev libgl-dev libgl1-mesa-dri python3 \
     clang libclang-rt-dev \
-    openmpi-bin libopenmpi-dev \
+    openmpi-bin libopenmpi-dev verilator yosys \
     ca-certificates

@@ -19,5 +19,6 @@ Command add_plan_command(CLI::App& app);
 Command add_tune_command(CLI::App& app);
 Command add_scaling_command(CLI::App& app);
 Command add_unit_error_command(CLI::App& app);
+Command add_vectors_command(CLI::App& app);
 
 }  // namespace parashade::cli

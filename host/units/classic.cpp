@@ -12,6 +12,7 @@ SpanTrace run(const Adder& add, const SpanLoad& s, const UnitConfig&) {
   std::int32_t reg = s.start;
   for (int x = 0; x < s.length; ++x, ++t.clocks) {
     t.values.push_back(reg);
+    t.clock.push_back(std::uint32_t(t.clocks));
     reg = add(reg, s.step);
   }
   return t;

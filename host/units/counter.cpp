@@ -13,12 +13,15 @@ namespace {
 SpanTrace run(const Adder& add, const SpanLoad& s, const UnitConfig&) {
   SpanTrace t;
   t.values.assign(std::size_t(s.length), 0);
+  t.clock.assign(std::size_t(s.length), 0);
   std::int32_t left = s.start, right = s.end;
   const std::int32_t minus_step = add(~s.step, 1);  // two's complement: the right interpolator subtracts
   for (int a = 0, b = s.length - 1; a <= b; ++t.clocks) {
+    t.clock[std::size_t(a)] = std::uint32_t(t.clocks);
     t.values[std::size_t(a++)] = left;
     left = add(left, s.step);
     if (a <= b) {
+      t.clock[std::size_t(b)] = std::uint32_t(t.clocks);
       t.values[std::size_t(b--)] = right;
       right = add(right, minus_step);
     }

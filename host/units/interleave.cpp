@@ -28,6 +28,7 @@ SpanTrace run(const Adder& add, const SpanLoad& s, const UnitConfig& unit) {
   const int m = unit.lanes;
   SpanTrace t;
   t.values.assign(std::size_t(s.length), 0);
+  t.clock.assign(std::size_t(s.length), 0);
   std::int32_t step = 0;
   for (int j = 0; j < m; ++j) step = add(step, s.step);
   if (unit.own_step) step = s.own_step;
@@ -37,6 +38,7 @@ SpanTrace run(const Adder& add, const SpanLoad& s, const UnitConfig& unit) {
   for (int first = 0; first < s.length; first += m, ++t.clocks) {
     for (int j = 0; j < m && first + j < s.length; ++j) {
       t.values[std::size_t(first + j)] = reg[std::size_t(j)];
+      t.clock[std::size_t(first + j)] = std::uint32_t(t.clocks);
       reg[std::size_t(j)] = add(reg[std::size_t(j)], step);
     }
   }

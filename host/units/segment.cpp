@@ -42,12 +42,15 @@ SpanTrace run(const Adder& add, const SpanLoad& s, const UnitConfig& unit) {
   const int p = unit.lanes;
   SpanTrace t;
   t.values.assign(std::size_t(s.length), 0);
+  t.clock.assign(std::size_t(s.length), 0);
   int adders = 0;
   const std::vector<std::int32_t> multiple = segment_multiples(add, s.step, p, &adders);
   std::int32_t base = s.start;
   for (int first = 0; first < s.length; first += p, ++t.clocks) {
-    for (int i = 0; i < p && first + i < s.length; ++i)
+    for (int i = 0; i < p && first + i < s.length; ++i) {
       t.values[std::size_t(first + i)] = i == 0 ? base : add(base, multiple[std::size_t(i)]);
+      t.clock[std::size_t(first + i)] = std::uint32_t(t.clocks);
+    }
     base = add(base, multiple[std::size_t(p)]);
   }
   return t;

@@ -52,11 +52,13 @@ SpanTrace run(const Adder& add, const SpanLoad& s, const UnitConfig& unit) {
   SpanTrace t;
   t.clocks = shaded.clocks;
   t.values.assign(std::size_t(s.length), 0);
+  t.clock.assign(std::size_t(s.length), 0);
   const std::int32_t offset = s.offset;
   for (int x = 0; x < s.length; ++x) {
     const std::int32_t v = shaded.values[std::size_t(x)];
-    if (s.sign > 0) t.values[std::size_t(x)] = add(offset, v);
-    else t.values[std::size_t(s.length - 1 - x)] = add(offset, add(~v, 1));
+    const std::size_t i = std::size_t(s.sign > 0 ? x : s.length - 1 - x);
+    t.values[i] = s.sign > 0 ? add(offset, v) : add(offset, add(~v, 1));
+    t.clock[i] = shaded.clock[std::size_t(x)];
   }
   return t;
 }

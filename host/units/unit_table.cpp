@@ -9,7 +9,8 @@
 
 namespace parashade {
 
-extern const UnitModel kClassicModel, kCounterModel, kInterleaveModel, kSegmentModel, kSierpinskiModel;
+extern const UnitModel kClassicModel, kCounterModel, kInterleaveModel, kSegmentModel, kSierpinskiModel,
+    kPipelinedModel;
 
 const std::vector<UnitRow>& unit_table() {
   static const std::vector<UnitRow> table = {
@@ -34,6 +35,8 @@ const std::vector<UnitRow>& unit_table() {
         "sierpinski:2:touch:seal"},
        {"sierpinski:1:seal", "sierpinski:2:seal"},
        {}},
+      {UnitKind::pipelined, "pipelined:M with M = 1.." + std::to_string(MAX_INTERLEAVE_LANES), {"pipelined"}, 0,
+       &kPipelinedModel, {"pipelined:1", "pipelined:4"}, {"pipelined:1", "pipelined:4", "pipelined:16"}, {}},
   };
   return table;
 }

@@ -41,6 +41,7 @@ struct Adder {
 
 struct SpanTrace {
   std::vector<std::int32_t> values;  // span register value per pixel, left to right
+  std::vector<std::uint32_t> clock;  // per pixel, the clock (0 = the first after the load) that produced it
   std::uint64_t clocks = 0;          // clocks the unit took for the span's pixels (without the load)
 };
 

@@ -17,6 +17,7 @@ enum class UnitKind {
   interleave = UNIT_INTERLEAVE,
   segment = UNIT_SEGMENT,
   sierpinski = UNIT_SIERPINSKI,  // extra triangulation ([Malovanyi 2019, parallel Gouraud] ch. 3): one of 4^D sub-triangles shaded, the rest copied
+  pipelined = UNIT_PIPELINED,    // interleave:M with double-buffered span registers: the load overlaps the last span
 };
 
 // How the extra triangulation gets its midpoints onto pixel corners ([Malovanyi 2019, parallel Gouraud] ch. 3, the sources' two remedies).
@@ -29,7 +30,7 @@ enum class SierpinskiGrid {
 
 struct UnitConfig {
   UnitKind kind = UnitKind::classic;
-  int lanes = 1;          // intensities per clock: classic 1, counter 2, interleave M (1..16), segment P (2..64), sierpinski 4^D
+  int lanes = 1;          // intensities per clock: classic 1, counter 2, interleave and pipelined M (1..16), segment P (2..64), sierpinski 4^D
   bool own_step = false;  // interleave: M*dI quantized from setup's plane on its own (else M times the quantized dI)
   int depth = 0;          // sierpinski: subdivision depth D (1..3)
   SierpinskiGrid grid = SierpinskiGrid::even;  // sierpinski: the parity remedy
