@@ -6,6 +6,7 @@
 #include "parashade/combined.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/highlight.hpp"
+#include "parashade/parallel.hpp"
 #include "parashade/setup.hpp"
 #include "parashade/sierpinski.hpp"
 
@@ -60,6 +61,7 @@ const PreparedFrame& FramePipeline::prepare_frame(const Scene& scene, const Fram
   t0 = Clock::now();
   bin(scene, config, storage);
   t.binning_ms = ms_since(t0);
+  parallel_rest();  // the device's kernel comes next, on the same cores
   return frame_;
 }
 
