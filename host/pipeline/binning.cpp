@@ -32,7 +32,7 @@ void Binner::for_each_tile_of(const TriangleGeometry& t, Visit visit) const {
   }
 }
 
-void Binner::count(const TriangleGeometry* tris, std::size_t n, int width, int height, int tile_size) {
+void Binner::begin(const TriangleGeometry* tris, std::size_t n, int width, int height, int tile_size) {
   tris_ = tris;
   n_ = n;
   tile_size_ = tile_size;
@@ -40,17 +40,40 @@ void Binner::count(const TriangleGeometry* tris, std::size_t n, int width, int h
   tiles_y_ = (height + tile_size - 1) / tile_size;
   const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
   // Chunks are contiguous ranges of triangles; their lists are concatenated in chunk order per tile,
-  // so the result is in primitive order whatever the number of threads.
-  const std::size_t chunks = std::max<std::size_t>(1, std::min<std::size_t>(2 * std::size_t(host_threads()), n / 4096));
+  // so the result is in primitive order whatever the number of threads. About four per thread (a
+  // thread slowed by other work leaves its share to the others), each of at least 1024 triangles
+  // (the per-chunk counters, tiles x 4 bytes, are summed over all chunks).
+  const std::size_t chunks =
+      std::max<std::size_t>(1, std::min<std::size_t>(4 * std::size_t(host_threads()), n / 1024));
   chunk_first_.resize(chunks + 1);
   for (std::size_t c = 0; c <= chunks; ++c) chunk_first_[c] = n * c / chunks;
   chunk_cursor_.assign(chunks * tiles, 0);
-  parallel_for(chunks, [&](std::size_t c) {
-    std::uint32_t* counts = &chunk_cursor_[c * tiles];
-    for (std::size_t i = chunk_first_[c]; i < chunk_first_[c + 1]; ++i)
-      for_each_tile_of(tris[i], [counts](int tile) { ++counts[tile]; });
-  });
-  start_.assign(tiles + 1, 0);
+  tile_of_.resize(n);
+}
+
+void Binner::count_range(std::size_t chunk, std::size_t first, std::size_t last) {
+  const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
+  std::uint32_t* counts = &chunk_cursor_[chunk * tiles];
+  for (std::size_t i = first; i < last; ++i) {
+    const TriangleGeometry& t = tris_[i];
+    std::uint32_t key;
+    if (t.x0 > t.x1) {
+      key = kNoTile;
+    } else if (t.x0 / tile_size_ == t.x1 / tile_size_ && t.y0 / tile_size_ == t.y1 / tile_size_) {
+      key = std::uint32_t((t.y0 / tile_size_) * tiles_x_ + t.x0 / tile_size_);
+      ++counts[key];
+    } else {
+      key = kSeveralTiles;
+      for_each_tile_of(t, [counts](int tile) { ++counts[tile]; });
+    }
+    tile_of_[i] = key;
+  }
+}
+
+void Binner::finish() {
+  const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
+  const std::size_t chunks = chunk_first_.size() - 1;
+  start_.resize(tiles + 1);
   std::uint32_t total = 0;
   for (std::size_t k = 0; k < tiles; ++k) {
     start_[k] = total;
@@ -63,13 +86,23 @@ void Binner::count(const TriangleGeometry* tris, std::size_t n, int width, int h
   start_[tiles] = total;
 }
 
-void Binner::fill(std::uint32_t* out) const {
+void Binner::count(const TriangleGeometry* tris, std::size_t n, int width, int height, int tile_size) {
+  begin(tris, n, width, height, tile_size);
+  parallel_for(chunks(), [&](std::size_t c) { count_range(c, chunk_first_[c], chunk_first_[c + 1]); });
+  finish();
+}
+
+void Binner::fill(std::uint32_t* out) {
   const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
-  const std::size_t chunks = chunk_first_.size() - 1;
-  parallel_for(chunks, [&](std::size_t c) {
-    std::vector<std::uint32_t> cursor(chunk_cursor_.begin() + c * tiles, chunk_cursor_.begin() + (c + 1) * tiles);
-    for (std::size_t i = chunk_first_[c]; i < chunk_first_[c + 1]; ++i)
-      for_each_tile_of(tris_[i], [&](int tile) { out[cursor[tile]++] = std::uint32_t(i); });
+  parallel_for(chunks(), [&](std::size_t c) {
+    std::uint32_t* cursor = &chunk_cursor_[c * tiles];
+    for (std::size_t i = chunk_first_[c]; i < chunk_first_[c + 1]; ++i) {
+      const std::uint32_t key = tile_of_[i];
+      if (key < kSeveralTiles)
+        out[cursor[key]++] = std::uint32_t(i);
+      else if (key == kSeveralTiles)
+        for_each_tile_of(tris_[i], [&](int tile) { out[cursor[tile]++] = std::uint32_t(i); });
+    }
   });
 }
 
