@@ -1,8 +1,8 @@
 #pragma once
-// Host parallelism for the software stages (vertex stage, setup, binning, reference). Idle workers spin
-// for a few tens of µs (a frame's successive parallel_for calls then cost no wake-up) and then block on
-// a condition variable: PoCL runs its kernels on the same cores, and host threads that kept spinning
-// (OpenMP's default) measurably slowed the kernels they wait for. parallel_rest() ends the spin at
+// Host parallelism for the software stages (vertex stage, setup, binning, reference). Workers block
+// on a condition variable between jobs: PoCL runs its kernels on the same cores, and spinning host
+// threads (OpenMP's default) measurably slowed the kernels they wait for. A short spin before blocking
+// (PARASHADE_HOST_SPIN_US, default 0) did not pay either (parallel.cpp); parallel_rest() ends it at
 // once, for a caller about to hand the cores to the device.
 #include <algorithm>
 #include <cstddef>
