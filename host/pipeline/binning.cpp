@@ -5,11 +5,24 @@
 #include "parashade/parallel.hpp"
 
 namespace parashade {
+namespace {
+
+// Pixel column or row (>= 0) -> tile column or row: a shift for the power-of-two tile sizes the renderer
+// allows (an integer division per box corner cost more than the rest of a small triangle's binning).
+struct TileOf {
+  explicit TileOf(int tile_size)
+      : size(tile_size), shift((tile_size & (tile_size - 1)) == 0 ? __builtin_ctz(unsigned(tile_size)) : -1) {}
+  int operator()(int pixel) const { return shift >= 0 ? pixel >> shift : pixel / size; }
+  int size, shift;
+};
+
+}  // namespace
 
 template <typename Visit>
 void Binner::for_each_tile_of(const TriangleGeometry& t, Visit visit) const {
   if (t.x0 > t.x1) return;
-  const int tx0 = t.x0 / tile_size_, tx1 = t.x1 / tile_size_, ty0 = t.y0 / tile_size_, ty1 = t.y1 / tile_size_;
+  const TileOf tile_of(tile_size_);
+  const int tx0 = tile_of(t.x0), tx1 = tile_of(t.x1), ty0 = tile_of(t.y0), ty1 = tile_of(t.y1);
   if (tx0 == tx1 && ty0 == ty1) {
     visit(ty0 * tiles_x_ + tx0);
     return;
@@ -54,13 +67,14 @@ void Binner::begin(const TriangleGeometry* tris, std::size_t n, int width, int h
 void Binner::count_range(std::size_t chunk, std::size_t first, std::size_t last) {
   const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
   std::uint32_t* counts = &chunk_cursor_[chunk * tiles];
+  const TileOf tile_of(tile_size_);
   for (std::size_t i = first; i < last; ++i) {
     const TriangleGeometry& t = tris_[i];
     std::uint32_t key;
     if (t.x0 > t.x1) {
       key = kNoTile;
-    } else if (t.x0 / tile_size_ == t.x1 / tile_size_ && t.y0 / tile_size_ == t.y1 / tile_size_) {
-      key = std::uint32_t((t.y0 / tile_size_) * tiles_x_ + t.x0 / tile_size_);
+    } else if (const int tx = tile_of(t.x0), ty = tile_of(t.y0); tx == tile_of(t.x1) && ty == tile_of(t.y1)) {
+      key = std::uint32_t(ty * tiles_x_ + tx);
       ++counts[key];
     } else {
       key = kSeveralTiles;

@@ -16,7 +16,7 @@
 namespace parashade {
 namespace {
 
-constexpr int kWidth = 300, kHeight = 170, kTile = 16;
+constexpr int kWidth = 300, kHeight = 170;
 
 // A triangle record with exact edge functions (the fields binning reads), as setup makes them.
 TriangleGeometry record(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
@@ -68,15 +68,16 @@ std::vector<TriangleGeometry> random_records(std::size_t n, unsigned seed) {
 
 // Tile k's expected list: every triangle with a pixel centre of the tile inside its box where no edge
 // is negative at all four corners of box and tile overlap (binning's conservative test), in order.
-std::vector<std::vector<std::uint32_t>> expected_lists(const std::vector<TriangleGeometry>& tris, int tiles_x, int tiles_y) {
+std::vector<std::vector<std::uint32_t>> expected_lists(const std::vector<TriangleGeometry>& tris, int tile) {
+  const int tiles_x = (kWidth + tile - 1) / tile, tiles_y = (kHeight + tile - 1) / tile;
   std::vector<std::vector<std::uint32_t>> lists(std::size_t(tiles_x) * tiles_y);
   for (std::size_t i = 0; i < tris.size(); ++i) {
     const TriangleGeometry& t = tris[i];
     if (t.x0 > t.x1) continue;
     for (int ty = 0; ty < tiles_y; ++ty)
       for (int tx = 0; tx < tiles_x; ++tx) {
-        const int x0 = std::max<int>(tx * kTile, t.x0), x1 = std::min<int>(tx * kTile + kTile - 1, t.x1);
-        const int y0 = std::max<int>(ty * kTile, t.y0), y1 = std::min<int>(ty * kTile + kTile - 1, t.y1);
+        const int x0 = std::max<int>(tx * tile, t.x0), x1 = std::min<int>(tx * tile + tile - 1, t.x1);
+        const int y0 = std::max<int>(ty * tile, t.y0), y1 = std::min<int>(ty * tile + tile - 1, t.y1);
         if (x0 > x1 || y0 > y1) continue;
         bool outside = false;
         for (int e = 0; e < 3; ++e) {
@@ -101,21 +102,22 @@ std::vector<std::vector<std::uint32_t>> lists_of(const Binner& b, const std::vec
 
 TEST(Binning, ListsInPrimitiveOrderWhateverTheThreadsAndTheCountingSteps) {
   const unsigned before = host_threads();
-  for (std::size_t n : {0u, 5u, 1000u, 9000u, 40000u}) {
+  // 16, 32, 64: the renderer's sizes (a shift); 24: any other size (a division).
+  for (const auto& [n, tile] : {std::pair<std::size_t, int>{0, 16}, {5, 16}, {1000, 16}, {9000, 16}, {40000, 16},
+                                 {9000, 32}, {9000, 64}, {9000, 24}}) {
     const std::vector<TriangleGeometry> tris = random_records(n, unsigned(n) + 3);
-    const int tiles_x = (kWidth + kTile - 1) / kTile, tiles_y = (kHeight + kTile - 1) / kTile;
-    const auto expected = expected_lists(tris, tiles_x, tiles_y);
+    const auto expected = expected_lists(tris, tile);
     for (unsigned threads : {1u, 2u, 3u}) {
       set_host_threads(threads);
       Binner whole;  // reused across the cases, as the pipeline keeps it across frames
       for (int pass = 0; pass < 2; ++pass) {
-        whole.count(tris.data(), tris.size(), kWidth, kHeight, kTile);
+        whole.count(tris.data(), tris.size(), kWidth, kHeight, tile);
         std::vector<std::uint32_t> out(whole.entries());
         whole.fill(out.data());
-        ASSERT_EQ(lists_of(whole, out), expected) << n << " triangles, " << threads << " threads";
+        ASSERT_EQ(lists_of(whole, out), expected) << n << " triangles, tile " << tile << ", " << threads << " threads";
       }
       Binner steps;
-      steps.begin(tris.data(), tris.size(), kWidth, kHeight, kTile);
+      steps.begin(tris.data(), tris.size(), kWidth, kHeight, tile);
       parallel_for(steps.chunks(), [&](std::size_t c) {
         for (std::size_t first = steps.chunk_first(c); first < steps.chunk_first(c + 1); first += 97)
           steps.count_range(c, first, std::min(steps.chunk_first(c + 1), first + 97));
@@ -123,7 +125,7 @@ TEST(Binning, ListsInPrimitiveOrderWhateverTheThreadsAndTheCountingSteps) {
       steps.finish();
       std::vector<std::uint32_t> out(steps.entries());
       steps.fill(out.data());
-      ASSERT_EQ(lists_of(steps, out), expected) << n << " triangles, " << threads << " threads, in steps";
+      ASSERT_EQ(lists_of(steps, out), expected) << n << " triangles, tile " << tile << ", " << threads << " threads, in steps";
     }
   }
   set_host_threads(before);
