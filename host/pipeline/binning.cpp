@@ -5,11 +5,24 @@
 #include "parashade/parallel.hpp"
 
 namespace parashade {
+namespace {
+
+// Pixel column or row (>= 0) -> tile column or row: a shift for the power-of-two tile sizes the renderer
+// allows (an integer division per box corner cost more than the rest of a small triangle's binning).
+struct TileOf {
+  explicit TileOf(int tile_size)
+      : size(tile_size), shift((tile_size & (tile_size - 1)) == 0 ? __builtin_ctz(unsigned(tile_size)) : -1) {}
+  int operator()(int pixel) const { return shift >= 0 ? pixel >> shift : pixel / size; }
+  int size, shift;
+};
+
+}  // namespace
 
 template <typename Visit>
 void Binner::for_each_tile_of(const TriangleGeometry& t, Visit visit) const {
   if (t.x0 > t.x1) return;
-  const int tx0 = t.x0 / tile_size_, tx1 = t.x1 / tile_size_, ty0 = t.y0 / tile_size_, ty1 = t.y1 / tile_size_;
+  const TileOf tile_of(tile_size_);
+  const int tx0 = tile_of(t.x0), tx1 = tile_of(t.x1), ty0 = tile_of(t.y0), ty1 = tile_of(t.y1);
   if (tx0 == tx1 && ty0 == ty1) {
     visit(ty0 * tiles_x_ + tx0);
     return;
@@ -32,7 +45,7 @@ void Binner::for_each_tile_of(const TriangleGeometry& t, Visit visit) const {
   }
 }
 
-void Binner::count(const TriangleGeometry* tris, std::size_t n, int width, int height, int tile_size) {
+void Binner::begin(const TriangleGeometry* tris, std::size_t n, int width, int height, int tile_size) {
   tris_ = tris;
   n_ = n;
   tile_size_ = tile_size;
@@ -40,17 +53,41 @@ void Binner::count(const TriangleGeometry* tris, std::size_t n, int width, int h
   tiles_y_ = (height + tile_size - 1) / tile_size;
   const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
   // Chunks are contiguous ranges of triangles; their lists are concatenated in chunk order per tile,
-  // so the result is in primitive order whatever the number of threads.
-  const std::size_t chunks = std::max<std::size_t>(1, std::min<std::size_t>(2 * std::size_t(host_threads()), n / 4096));
+  // so the result is in primitive order whatever the number of threads. About four per thread (a
+  // thread slowed by other work leaves its share to the others), each of at least 1024 triangles
+  // (the per-chunk counters, tiles x 4 bytes, are summed over all chunks).
+  const std::size_t chunks =
+      std::max<std::size_t>(1, std::min<std::size_t>(4 * std::size_t(host_threads()), n / 1024));
   chunk_first_.resize(chunks + 1);
   for (std::size_t c = 0; c <= chunks; ++c) chunk_first_[c] = n * c / chunks;
   chunk_cursor_.assign(chunks * tiles, 0);
-  parallel_for(chunks, [&](std::size_t c) {
-    std::uint32_t* counts = &chunk_cursor_[c * tiles];
-    for (std::size_t i = chunk_first_[c]; i < chunk_first_[c + 1]; ++i)
-      for_each_tile_of(tris[i], [counts](int tile) { ++counts[tile]; });
-  });
-  start_.assign(tiles + 1, 0);
+  tile_of_.resize(n);
+}
+
+void Binner::count_range(std::size_t chunk, std::size_t first, std::size_t last) {
+  const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
+  std::uint32_t* counts = &chunk_cursor_[chunk * tiles];
+  const TileOf tile_of(tile_size_);
+  for (std::size_t i = first; i < last; ++i) {
+    const TriangleGeometry& t = tris_[i];
+    std::uint32_t key;
+    if (t.x0 > t.x1) {
+      key = kNoTile;
+    } else if (const int tx = tile_of(t.x0), ty = tile_of(t.y0); tx == tile_of(t.x1) && ty == tile_of(t.y1)) {
+      key = std::uint32_t(ty * tiles_x_ + tx);
+      ++counts[key];
+    } else {
+      key = kSeveralTiles;
+      for_each_tile_of(t, [counts](int tile) { ++counts[tile]; });
+    }
+    tile_of_[i] = key;
+  }
+}
+
+void Binner::finish() {
+  const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
+  const std::size_t chunks = chunk_first_.size() - 1;
+  start_.resize(tiles + 1);
   std::uint32_t total = 0;
   for (std::size_t k = 0; k < tiles; ++k) {
     start_[k] = total;
@@ -63,13 +100,23 @@ void Binner::count(const TriangleGeometry* tris, std::size_t n, int width, int h
   start_[tiles] = total;
 }
 
-void Binner::fill(std::uint32_t* out) const {
+void Binner::count(const TriangleGeometry* tris, std::size_t n, int width, int height, int tile_size) {
+  begin(tris, n, width, height, tile_size);
+  parallel_for(chunks(), [&](std::size_t c) { count_range(c, chunk_first_[c], chunk_first_[c + 1]); });
+  finish();
+}
+
+void Binner::fill(std::uint32_t* out) {
   const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
-  const std::size_t chunks = chunk_first_.size() - 1;
-  parallel_for(chunks, [&](std::size_t c) {
-    std::vector<std::uint32_t> cursor(chunk_cursor_.begin() + c * tiles, chunk_cursor_.begin() + (c + 1) * tiles);
-    for (std::size_t i = chunk_first_[c]; i < chunk_first_[c + 1]; ++i)
-      for_each_tile_of(tris_[i], [&](int tile) { out[cursor[tile]++] = std::uint32_t(i); });
+  parallel_for(chunks(), [&](std::size_t c) {
+    std::uint32_t* cursor = &chunk_cursor_[c * tiles];
+    for (std::size_t i = chunk_first_[c]; i < chunk_first_[c + 1]; ++i) {
+      const std::uint32_t key = tile_of_[i];
+      if (key < kSeveralTiles)
+        out[cursor[key]++] = std::uint32_t(i);
+      else if (key == kSeveralTiles)
+        for_each_tile_of(tris_[i], [&](int tile) { out[cursor[tile]++] = std::uint32_t(i); });
+    }
   });
 }
 

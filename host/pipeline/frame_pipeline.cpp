@@ -1,11 +1,13 @@
 #include "parashade/frame_pipeline.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 
 #include "parashade/combined.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/highlight.hpp"
+#include "parashade/parallel.hpp"
 #include "parashade/setup.hpp"
 #include "parashade/sierpinski_setup.hpp"
 
@@ -60,6 +62,7 @@ const PreparedFrame& FramePipeline::prepare_frame(const Scene& scene, const Fram
   t0 = Clock::now();
   bin(scene, config, storage);
   t.binning_ms = ms_since(t0);
+  parallel_rest();  // the device's kernel comes next, on the same cores
   return frame_;
 }
 
@@ -67,6 +70,7 @@ void FramePipeline::setup(const Scene& scene, const FrameConfig& config, const F
   FrameTimings& t = frame_.timings;
   FrameStats& s = frame_.stats;
   const Method method = config.method;
+  counted_ = false;
   if (config.splits_triangles()) {
     // Setup per triangle, then each record split into its sub-triangles' records.
     const std::size_t triangles = geometry_.triangles.size();
@@ -87,9 +91,28 @@ void FramePipeline::setup(const Scene& scene, const FrameConfig& config, const F
                                        choice_);
     t.choice_ms = ms_since(c0);
   }
-  s.triangles_without_pixels =
-      setup_triangles(geometry_, method, out.triangles, out.attributes, out.fixed, choose ? choice_.data() : nullptr)
-          .without_pixels;
+  const TriangleShading* gouraud = choose ? choice_.data() : nullptr;
+  counted_ = !config.dda_coverage;  // DDA coverage changes the boxes after setup
+  if (counted_) {
+    // Binning's count pass runs on each range of records right after its setup, while they are in cache.
+    const std::size_t n = geometry_.triangles.size();
+    binner_.begin(out.triangles, n, scene.width, scene.height, config.tile_size);
+    std::atomic<std::uint64_t> empty{0};
+    parallel_for(binner_.chunks(), [&](std::size_t c) {
+      constexpr std::size_t kRange = 512;  // records in L1/L2 between setup and counting
+      std::uint64_t e = 0;
+      for (std::size_t first = binner_.chunk_first(c), end = binner_.chunk_first(c + 1); first < end; first += kRange) {
+        const std::size_t last = std::min(end, first + kRange);
+        e += setup_triangle_range(geometry_, method, out.triangles, out.attributes, out.fixed, gouraud, first, last);
+        binner_.count_range(c, first, last);
+      }
+      empty += e;
+    });
+    s.triangles_without_pixels = empty.load();
+  } else {
+    s.triangles_without_pixels =
+        setup_triangles(geometry_, method, out.triangles, out.attributes, out.fixed, gouraud).without_pixels;
+  }
   if (choose) {
     apply_triangle_choice(choice_, out.attributes, PHONG_ATTR_FLOATS);
     if (uses_highlight_mask(config.combined))
@@ -106,7 +129,10 @@ void FramePipeline::setup(const Scene& scene, const FrameConfig& config, const F
 
 void FramePipeline::bin(const Scene& scene, const FrameConfig& config, FrameStorage& storage) {
   const std::size_t n = frame_.records;
-  binner_.count(frame_.arrays.triangles, n, scene.width, scene.height, config.tile_size);
+  if (counted_)  // setup counted the records
+    binner_.finish();
+  else
+    binner_.count(frame_.arrays.triangles, n, scene.width, scene.height, config.tile_size);
   const std::vector<std::uint32_t>* start = &binner_.tile_start();
   if (config.band_rows >= 0) {  // empty every tile outside the band: tile k holds start[k] .. start[k + 1]
     band_start_ = binner_.tile_start();

@@ -275,6 +275,15 @@ void resize_if(std::vector<T>& v, bool keep, std::size_t n) {
 
 }  // namespace
 
+struct GeometryScratch {
+  std::vector<std::uint32_t> vertex_base;
+  std::vector<VertexSource> sources;
+  std::vector<ChunkJob> jobs;
+  std::vector<ChunkOutput> outputs;  // cleared, not freed, between frames
+  std::vector<std::uint8_t> used;
+  std::vector<std::size_t> tri_offset, new_offset;
+};
+
 glm::mat4 view_projection(const Scene& scene) {
   const Camera& c = scene.camera;
   const float aspect = float(scene.width) / float(scene.height);
@@ -301,8 +310,11 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
   g.height = scene.height;
   g.stats = {};
 
+  if (!g.scratch.ptr) g.scratch.ptr = std::make_shared<GeometryScratch>();
+  GeometryScratch& scratch = *g.scratch.ptr;
   std::size_t vertex_count = 0;
-  std::vector<std::uint32_t> vertex_base;
+  std::vector<std::uint32_t>& vertex_base = scratch.vertex_base;
+  vertex_base.clear();
   for (const Object& o : scene.objects) {
     vertex_base.push_back(std::uint32_t(vertex_count));
     vertex_count += o.mesh->positions.size();
@@ -317,7 +329,8 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
   resize_if(g.world, needs.world, vertex_count);
   resize_if(g.normal, needs.normal, vertex_count);
   resize_if(g.color, needs.color, vertex_count);
-  std::vector<VertexSource> sources(scene.objects.size());
+  std::vector<VertexSource>& sources = scratch.sources;
+  sources.resize(scene.objects.size());
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     const Object& obj = scene.objects[o];
     sources[o] = {obj.mesh.get(), obj.model, glm::transpose(glm::inverse(glm::mat3(obj.model))), obj.material,
@@ -328,7 +341,7 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
     const Mesh& mesh = *src.mesh;
     const glm::mat4 model_vp = vp * src.model;
     const std::size_t base = src.base;
-    parallel_for_ranges(mesh.positions.size(), 8192, [&](std::size_t first, std::size_t last) {
+    parallel_for_ranges(mesh.positions.size(), balanced_chunk(mesh.positions.size(), 512, 8192), [&](std::size_t first, std::size_t last) {
     for (std::size_t i = first; i < last; ++i) {
       const std::size_t v = base + i;
       const glm::vec4 clip = model_vp * glm::vec4(mesh.positions[i], 1.0f);
@@ -345,25 +358,37 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
   }
 
   // Primitive assembly in chunks, merged in order.
-  constexpr std::size_t kChunk = 16384;
-  std::vector<ChunkJob> jobs;
+  std::vector<ChunkJob>& jobs = scratch.jobs;
+  jobs.clear();
   std::size_t face_base = 0;
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
-    const std::size_t count = scene.objects[o].mesh->triangles.size();
-    for (std::size_t first = 0; first < count; first += kChunk)
-      jobs.push_back({o, first, std::min(kChunk, count - first), face_base + first});
+    const std::size_t count = scene.objects[o].mesh->triangles.size(), chunk = balanced_chunk(count, 1024, 16384);
+    for (std::size_t first = 0; first < count; first += chunk)
+      jobs.push_back({o, first, std::min(chunk, count - first), face_base + first});
     face_base += count;
   }
-  std::vector<ChunkOutput> outputs(jobs.size());
-  std::vector<std::uint8_t> used(needs.color ? vertex_count : 0, 0);
+  std::vector<ChunkOutput>& outputs = scratch.outputs;
+  if (outputs.size() < jobs.size()) outputs.resize(jobs.size());
+  for (std::size_t j = 0; j < jobs.size(); ++j) {
+    ChunkOutput& out = outputs[j];
+    out.triangles.clear();
+    out.material.clear();
+    out.face.clear();
+    out.flat_color.clear();
+    out.new_vertices.clear();
+    out.new_snapped.clear();
+    out.stats = {};
+  }
+  std::vector<std::uint8_t>& used = scratch.used;
+  used.assign(needs.color ? vertex_count : 0, 0);
   const Assembler assembler(scene, g, needs, lighting, sources, used);
   parallel_for(jobs.size(), [&](std::size_t j) { assembler.run(jobs[j], vertex_base[jobs[j].object], outputs[j]); });
 
   // Gouraud: light the vertices the surviving triangles use (the others keep a zero colour).
   if (needs.color) {
     for (const VertexSource& src : sources) {
-      // Chunks small enough to balance two threads on a mesh of a few 10k vertices (~20 ns each).
-      parallel_for_ranges(src.mesh->positions.size(), 2048, [&](std::size_t first, std::size_t last) {
+      // Chunks small enough to balance the threads on a mesh of a few 10k vertices (~20 ns each).
+      parallel_for_ranges(src.mesh->positions.size(), balanced_chunk(src.mesh->positions.size(), 256, 2048), [&](std::size_t first, std::size_t last) {
         for (std::size_t i = first; i < last; ++i) {
           const std::size_t v = src.base + i;
           g.color[v] = used[v] ? lighting.shade(src.material, src.world(i), src.normal(i)) : glm::vec3(0.0f);
@@ -373,8 +398,11 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
   }
 
   std::size_t tri_total = 0, new_total = 0;
-  std::vector<std::size_t> tri_offset(outputs.size()), new_offset(outputs.size());
-  for (std::size_t j = 0; j < outputs.size(); ++j) {
+  std::vector<std::size_t>& tri_offset = scratch.tri_offset;
+  std::vector<std::size_t>& new_offset = scratch.new_offset;
+  tri_offset.resize(jobs.size());
+  new_offset.resize(jobs.size());
+  for (std::size_t j = 0; j < jobs.size(); ++j) {
     tri_offset[j] = tri_total;
     new_offset[j] = vertex_count + new_total;
     tri_total += outputs[j].triangles.size();
@@ -400,7 +428,7 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
   g.face.resize(tri_total);
   g.flat_color.resize(needs.flat ? tri_total : 0);
 
-  parallel_for(outputs.size(), [&](std::size_t j) {
+  parallel_for(jobs.size(), [&](std::size_t j) {
     const ChunkOutput& out = outputs[j];
     const std::uint32_t base = std::uint32_t(new_offset[j]);
     for (std::size_t k = 0; k < out.new_vertices.size(); ++k) {

@@ -98,11 +98,19 @@ std::int64_t to_plane_register(double levels) {
 
 SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeometry* geometry, float* attributes,
                            FixedPlanes* fixed, const TriangleShading* gouraud) {
-  const std::int64_t count = std::int64_t(g.triangles.size());
+  const std::size_t count = g.triangles.size();
+  std::atomic<std::uint64_t> without_pixels{0};
+  parallel_for_ranges(count, balanced_chunk(count, 512, 4096), [&](std::size_t first, std::size_t last) {
+    without_pixels += setup_triangle_range(g, method, geometry, attributes, fixed, gouraud, first, last);
+  });
+  return {std::uint64_t(count), without_pixels.load()};
+}
+
+std::uint64_t setup_triangle_range(const ScreenGeometry& g, Method method, TriangleGeometry* geometry,
+                                   float* attributes, FixedPlanes* fixed, const TriangleShading* gouraud,
+                                   std::size_t first, std::size_t last) {
   const std::size_t stride = attribute_floats(method);
   const bool has_position = !g.world.empty();
-  std::atomic<std::uint64_t> without_pixels{0};
-  parallel_for_ranges(std::size_t(count), 4096, [&](std::size_t first, std::size_t last) {
   std::uint64_t empty = 0;
   for (std::size_t t = first; t < last; ++t) {
     const glm::uvec3 tri = g.triangles[t];
@@ -210,9 +218,7 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
       }
     }
   }
-  without_pixels += empty;
-  });
-  return {std::uint64_t(count), without_pixels.load()};
+  return empty;
 }
 
 }  // namespace parashade

@@ -14,8 +14,18 @@ class Binner {
  public:
   // Counts the entries of every tile; tile_start() is valid afterwards.
   void count(const TriangleGeometry* tris, std::size_t n, int width, int height, int tile_size);
-  // Writes the triangle indices, tile after tile, to out[0 .. entries()).
-  void fill(std::uint32_t* out) const;
+  // Writes the triangle indices, tile after tile, to out[0 .. entries()) (once after each count).
+  void fill(std::uint32_t* out);
+
+  // count() in steps, for a caller that counts each range of records right after writing it:
+  // begin(), then count_range() over consecutive ranges covering every chunk (a chunk's ranges in order,
+  // by one thread at a time; different chunks on any threads), then finish(). `tris` must hold the
+  // records of a range by the time it is counted, and all of them at fill().
+  void begin(const TriangleGeometry* tris, std::size_t n, int width, int height, int tile_size);
+  std::size_t chunks() const { return chunk_first_.size() - 1; }
+  std::size_t chunk_first(std::size_t chunk) const { return chunk_first_[chunk]; }  // chunk_first(chunks()) == n
+  void count_range(std::size_t chunk, std::size_t first, std::size_t last);
+  void finish();
 
   int tiles_x() const { return tiles_x_; }
   int tiles_y() const { return tiles_y_; }
@@ -34,6 +44,9 @@ class Binner {
   std::vector<std::size_t> chunk_first_;        // first triangle of each chunk (+ end)
   std::vector<std::uint32_t> chunk_cursor_;     // per chunk x tile: where the chunk's entries of the tile start
   std::vector<std::uint32_t> start_;
+  // Per record, counted: its only tile, kSeveralTiles (fill tests its tiles again) or kNoTile.
+  static constexpr std::uint32_t kNoTile = 0xffffffffu, kSeveralTiles = 0xfffffffeu;
+  std::vector<std::uint32_t> tile_of_;
 };
 
 }  // namespace parashade

@@ -91,6 +91,7 @@ class FramePipeline {
   ScreenGeometry geometry_;
   std::vector<TriangleShading> choice_;  // combined: the per-triangle method choice
   Binner binner_;
+  bool counted_ = false;  // setup ran binning's count pass (Binner::begin, count_range) on this frame's records
   std::vector<std::uint32_t> band_start_;  // tile_start with the tiles outside the band emptied
   DdaRowTable dda_;
   Plan plan_;

@@ -1,7 +1,9 @@
 #pragma once
 // Host parallelism for the software stages (vertex stage, setup, binning, reference). Workers block
-// on a condition variable between jobs instead of spinning: PoCL runs its kernels on the same cores,
-// and spinning host threads (OpenMP's default) measurably slowed the kernels they wait for.
+// on a condition variable between jobs: PoCL runs its kernels on the same cores, and spinning host
+// threads (OpenMP's default) measurably slowed the kernels they wait for. A short spin before blocking
+// (PARASHADE_HOST_SPIN_US, default 0) did not pay either (parallel.cpp); parallel_rest() ends it at
+// once, for a caller about to hand the cores to the device.
 #include <algorithm>
 #include <cstddef>
 #include <functional>
@@ -18,6 +20,16 @@ void set_host_threads(unsigned threads);
 // them), and returns when all are done. Items are taken in increasing order from a shared counter;
 // results must not depend on which thread runs an item. Exceptions from body are rethrown (the first).
 void parallel_for(std::size_t count, const std::function<void(std::size_t)>& body);
+
+// Idle workers stop spinning and block until the next parallel_for.
+void parallel_rest();
+
+// A range size for parallel_for_ranges: about four ranges per thread (dynamic balance on cores shared
+// with other work), but no fewer than min_chunk items nor more than max_chunk per range.
+inline std::size_t balanced_chunk(std::size_t count, std::size_t min_chunk, std::size_t max_chunk) {
+  const std::size_t ranges = 4 * std::size_t(host_threads());
+  return std::clamp((count + ranges - 1) / ranges, min_chunk, max_chunk);
+}
 
 // Calls body(begin, end) on consecutive ranges of at most `chunk` items covering [0, count).
 inline void parallel_for_ranges(std::size_t count, std::size_t chunk,

@@ -17,6 +17,7 @@
 // exactly once. Zero-area triangles are dropped.
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -37,6 +38,19 @@ struct GeometryStats {
   std::uint64_t non_finite = 0;          // a vertex with NaN or Inf clip coordinates: dropped
   std::uint64_t clipped = 0;             // input triangles that needed clipping
   std::uint64_t triangles_out = 0;       // screen triangles (after clipping, culling)
+};
+
+// The vertex stage's working memory (geometry_stage.cpp), kept with the geometry so that a frame
+// allocates nothing once the buffers have grown. A copy of the geometry starts without it.
+struct GeometryScratch;
+class GeometryScratchHolder {
+ public:
+  GeometryScratchHolder() = default;
+  GeometryScratchHolder(const GeometryScratchHolder&) {}
+  GeometryScratchHolder(GeometryScratchHolder&&) = default;
+  GeometryScratchHolder& operator=(const GeometryScratchHolder&) { return *this; }
+  GeometryScratchHolder& operator=(GeometryScratchHolder&&) = default;
+  std::shared_ptr<GeometryScratch> ptr;
 };
 
 struct ScreenGeometry {
@@ -60,6 +74,7 @@ struct ScreenGeometry {
                                        // clipped face's pieces share it): sort-last ranks' depth ties
   std::vector<glm::vec3> flat_color;   // Flat: the triangle's value in levels (centroid, face normal)
   GeometryStats stats;
+  GeometryScratchHolder scratch;
 };
 
 // floor(a / b) for b > 0.

@@ -32,6 +32,12 @@ struct SetupStats {
 SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeometry* geometry, float* attributes,
                            FixedPlanes* fixed = nullptr, const TriangleShading* gouraud = nullptr);
 
+// setup_triangles() for the screen triangles [first, last) only, on the calling thread; returns how
+// many of them have no pixel centre.
+std::uint64_t setup_triangle_range(const ScreenGeometry& g, Method method, TriangleGeometry* geometry,
+                                   float* attributes, FixedPlanes* fixed, const TriangleShading* gouraud,
+                                   std::size_t first, std::size_t last);
+
 // Copies a Gouraud record's depth plane, float attribute planes and (when both are given) fixed planes,
 // re-anchored from `from`'s box corner to pixel (x0, y0); the planes themselves are unchanged. `to`'s
 // other fields are left as they are.

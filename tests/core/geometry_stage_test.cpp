@@ -186,6 +186,22 @@ TEST(GeometryStage, OutputDoesNotDependOnTheThreadCount) {
   EXPECT_EQ(one.triangles, two.triangles);
   EXPECT_EQ(one.xy, two.xy);
   EXPECT_EQ(one.color, two.color);
+
+  // The stage keeps its working buffers across frames: a geometry that held a larger, different frame
+  // (more chunks, other clip-made vertices) and then this one gives what a fresh one gives.
+  Scene big = s;
+  big.objects.push_back(big.objects[0]);
+  big.cull_backfaces = !s.cull_backfaces;
+  ScreenGeometry reused;
+  build_screen_geometry(big, {Method::flat, true}, reused);
+  build_screen_geometry(s, {Method::gouraud, true}, reused);
+  EXPECT_EQ(reused.triangles, two.triangles);
+  EXPECT_EQ(reused.xy, two.xy);
+  EXPECT_EQ(reused.color, two.color);
+  EXPECT_EQ(reused.normal, two.normal);
+  EXPECT_EQ(reused.stats.triangles_out, two.stats.triangles_out);
+  EXPECT_EQ(reused.stats.clipped, two.stats.clipped);
+  EXPECT_TRUE(reused.flat_color.empty());
 }
 
 }  // namespace

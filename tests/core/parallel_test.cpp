@@ -3,6 +3,8 @@
 // on its own thread: two pools were made and one destroyed under the other's feet, a hang under
 // --keep-going).
 #include <atomic>
+#include <chrono>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -24,6 +26,35 @@ TEST(ParallelFor, FirstCallsFromSeveralThreadsShareOnePool) {
     for (auto& t : callers) t.join();
     ASSERT_EQ(items.load(), 3 * 64) << "round " << round;
   }
+  set_host_threads(before);
+}
+
+// Idle workers spin briefly, then block: jobs that follow each other at once (the spin), after a pause
+// longer than the spin (a wake-up) and after parallel_rest() all run every item once, and an exception
+// still reaches the caller.
+TEST(ParallelFor, BackToBackAfterAPauseAndAfterRest) {
+  const unsigned before = host_threads();
+  set_host_threads(3);
+  for (int round = 0; round < 300; ++round) {
+    std::vector<std::atomic<int>> hits(257);
+    parallel_for(hits.size(), [&](std::size_t i) { hits[i].fetch_add(1); });
+    for (std::size_t i = 0; i < hits.size(); ++i) ASSERT_EQ(hits[i].load(), 1) << "round " << round << " item " << i;
+    if (round % 50 == 7) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    if (round % 50 == 21) parallel_rest();
+  }
+  EXPECT_THROW(parallel_for(100, [](std::size_t i) { if (i == 42) throw std::runtime_error("x"); }), std::runtime_error);
+  std::atomic<int> items{0};
+  parallel_for(100, [&](std::size_t) { items.fetch_add(1); });
+  EXPECT_EQ(items.load(), 100);
+  set_host_threads(before);
+}
+
+TEST(ParallelFor, BalancedChunkGivesAboutFourRangesPerThread) {
+  const unsigned before = host_threads();
+  set_host_threads(2);
+  EXPECT_EQ(balanced_chunk(80000, 512, 8192), 8192u);  // capped
+  EXPECT_EQ(balanced_chunk(16000, 512, 8192), 2000u);  // 8 ranges
+  EXPECT_EQ(balanced_chunk(1000, 512, 8192), 512u);    // at least min_chunk
   set_host_threads(before);
 }
 
