@@ -19,6 +19,7 @@
 #include "parashade/geometry_stage.hpp"
 #include "parashade/image.hpp"
 #include "parashade/metrics.hpp"
+#include "parashade/output_file.hpp"
 #include "parashade/reference.hpp"
 #include "parashade/renderer.hpp"
 #include "parashade/report.hpp"
@@ -189,7 +190,9 @@ int run_render(const RenderArgs& a) {
     error_lines.push_back("error vs " + exact.reference + ": " + describe(exact));
   }
 
-  write_image(out_path, frame.image);
+  // Both outputs are written to temporary files first and replace their destinations only when both were
+  // written: a failed report leaves the previous image in place.
+  StagedFile staged_image = stage_image(out_path, frame.image);
   const double pixels = double(scene.width) * scene.height;
   nlohmann::json report = {
       {"scene", scene.name},
@@ -237,13 +240,11 @@ int run_render(const RenderArgs& a) {
     report["plan"]["mapping"] = unit_mapping_json(frame.stats, med);
   }
   if (!a.report.empty()) {
-    try {
-      write_text_atomically(a.report, report.dump(2) + "\n");
-    } catch (...) {
-      std::error_code ignored;  // both outputs or neither
-      std::filesystem::remove(out_path, ignored);
-      throw;
-    }
+    StagedFile staged_report = stage_text(a.report, report.dump(2) + "\n");
+    staged_image.commit();
+    staged_report.commit();
+  } else {
+    staged_image.commit();
   }
 
   std::printf("%s: %dx%d, %llu triangles (%llu after culling and clipping), method %s\n", scene.name.c_str(),
