@@ -121,8 +121,10 @@ int run_render(const RenderArgs& a) {
   if (!options.units && options.unit_path() && !a.quiet)
     std::cerr << "parashade: note: " << (options.arith.fixed ? "--arith " + a.arith : std::string("--coverage dda"))
               << " runs on the classic unit (--units chooses another)\n";
-  Scene scene = load_scene_at(a.scene, size, a.size);
+  std::vector<std::filesystem::path> inputs;  // the scene file and its meshes
+  Scene scene = load_scene_at(a.scene, size, a.size, &inputs);
   for (const std::string& w : scene.warnings) std::cerr << "parashade: warning: " << w << "\n";
+  check_distinct_files({{"-o", a.output}, {"--report", a.report}}, inputs);
   // Fail on an unwritable output before the work, not after it.
   const std::filesystem::path out_path(a.output);
   check_image_destination(out_path);

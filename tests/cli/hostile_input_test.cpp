@@ -1,0 +1,116 @@
+// Issue 17, B: inputs that would hang or eat memory. Scene and mesh paths must be regular files of a
+// bounded size, checked before reading (item 5); a scene is budgeted across its objects before anything
+// is built (item 6).
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "cli_fixture.hpp"
+
+namespace parashade {
+namespace {
+
+using namespace testing_support;
+namespace fs = std::filesystem;
+
+class CliHostileInput : public CliTest {};
+
+// A FIFO used to block the scene reader forever (no writer ever comes).
+TEST_F(CliHostileInput, FifoSceneIsRefusedAtOnce) {
+  const fs::path fifo = in_dir() / "scene.json";
+  fs::create_directories(in_dir());
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const RunResult r = run_parashade(render_args(fifo), {}, std::chrono::seconds(10));
+  EXPECT_TRUE(fails_with(r, kBadInput, {"scene.json", "not a regular file", "FIFO"}));
+  EXPECT_TRUE(nothing_written());
+}
+
+// A link to /dev/zero used to be read until memory ran out ("unexpected end of input" after gigabytes).
+TEST_F(CliHostileInput, SceneLinkedToADeviceIsRefusedAtOnce) {
+  for (const char* device : {"/dev/zero", "/dev/urandom"}) {
+    const fs::path link = in_dir() / (std::string("from") + fs::path(device).filename().string() + ".json");
+    fs::create_directories(in_dir());
+    fs::create_symlink(device, link);
+    const RunResult r = run_parashade(render_args(link), {}, std::chrono::seconds(10));
+    EXPECT_TRUE(fails_with(r, kBadInput, {link.filename().string(), "not a regular file", "character device"}));
+  }
+  EXPECT_TRUE(nothing_written());
+}
+
+TEST_F(CliHostileInput, MeshLinkedToADeviceOrAFifoIsRefused) {
+  fs::create_directories(in_dir());
+  fs::create_symlink("/dev/urandom", in_dir() / "noise.obj");
+  ASSERT_EQ(::mkfifo((in_dir() / "pipe.obj").c_str(), 0600), 0);
+  for (const char* mesh : {"noise.obj", "pipe.obj"}) {
+    const fs::path scene = input("scene.json", std::string(R"({"objects": [{"mesh": ")") + mesh + "\"}]}");
+    const RunResult r = run_parashade(render_args(scene), {}, std::chrono::seconds(10));
+    EXPECT_TRUE(fails_with(r, kBadInput, {mesh, "not a regular file"}));
+  }
+  EXPECT_TRUE(nothing_written());
+}
+
+// A mesh file beyond 4 GiB is refused by its size before a byte is read (a sparse file: no disk used).
+TEST_F(CliHostileInput, MeshBeyondTheSizeLimitIsRefused) {
+  const fs::path mesh = input("huge.obj", tetrahedron_obj());
+  fs::resize_file(mesh, (4ull << 30) + 1);
+  const fs::path scene = input("scene.json", R"({"objects": [{"mesh": "huge.obj"}]})");
+  const RunResult r = run_parashade(render_args(scene), {}, std::chrono::seconds(20));
+  EXPECT_TRUE(fails_with(r, kBadInput, {"huge.obj", "limit", "4294967296"}));
+  EXPECT_TRUE(nothing_written());
+}
+
+// Scenes hold parameters, not geometry: a file beyond 16 MiB is refused before it is read.
+TEST_F(CliHostileInput, SceneBeyondTheSizeLimitIsRefused) {
+  const fs::path big = input("big.json", sphere_scene() + std::string((16 << 20) + 1, ' '));
+  EXPECT_TRUE(fails_with(run_parashade(render_args(big)), kBadInput, {"big.json", "limit", "16777216"}));
+  EXPECT_TRUE(nothing_written());
+}
+
+// Item 6: eight different maximal spheres (2^24 triangles each) in a 500-byte scene: refused before
+// anything is built, naming the estimate, the limit and the largest objects. Before: gigabytes were
+// allocated and the run ended with "out of host memory" naming nothing (or, without a limit, swapped).
+TEST_F(CliHostileInput, SceneBeyondTheMemoryBudgetIsRefusedBeforeBuilding) {
+  std::string objects;
+  for (int i = 0; i < 8; ++i)
+    objects += std::string(i ? ", " : "") + R"({"shape": {"type": "sphere", "slices": )" + std::to_string(4096 - i) +
+               R"(, "stacks": 2049}})";
+  const fs::path scene = input("spheres.json", R"({"objects": [)" + objects + "]}");
+  ASSERT_LT(fs::file_size(scene), 600u);
+  const auto start = std::chrono::steady_clock::now();
+  const RunResult r = run_parashade(render_args(scene), {}, std::chrono::seconds(20));
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+  EXPECT_TRUE(fails_with(r, kBadInput, {"spheres.json", "host memory", "GiB", "limit", "PARASHADE_MEMORY_LIMIT",
+                                        "largest objects", "'object 0' (sphere)"}));
+  EXPECT_TRUE(nothing_written());
+}
+
+// The limit is PARASHADE_MEMORY_LIMIT when set: a tiny one refuses the small sphere scene (and --size
+// is budgeted too), a malformed one is named.
+TEST_F(CliHostileInput, MemoryLimitComesFromTheEnvironment) {
+  const fs::path scene = input("ball.json", sphere_scene());
+  {
+    const ScopedEnv limit("PARASHADE_MEMORY_LIMIT", "100K");
+    EXPECT_TRUE(fails_with(run_parashade(render_args(scene)), kBadInput, {"ball.json", "limit", "set by PARASHADE_MEMORY_LIMIT"}));
+  }
+  {
+    const ScopedEnv limit("PARASHADE_MEMORY_LIMIT", "1M");  // the 64x48 scene fits, 4096x4096 does not
+    EXPECT_TRUE(succeeds(run_parashade(render_args(scene))));
+    fs::remove(image());
+    fs::remove(report());
+    EXPECT_TRUE(fails_with(run_parashade(render_args(scene, {"--size", "4096x4096"})), kBadInput,
+                           {"--size 4096x4096", "limit"}));
+  }
+  {
+    const ScopedEnv limit("PARASHADE_MEMORY_LIMIT", "lots");
+    EXPECT_TRUE(fails_with(run_parashade(render_args(scene)), kBadInput, {"PARASHADE_MEMORY_LIMIT", "lots"}));
+  }
+  EXPECT_TRUE(nothing_written());
+}
+
+}  // namespace
+}  // namespace parashade
