@@ -10,6 +10,7 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "plan_cli.hpp"
+#include "progress.hpp"
 #include "tune_cache.hpp"
 #include "split_render_cli.hpp"
 #include "parashade/split_renderer.hpp"
@@ -109,8 +110,10 @@ int run_render(const RenderArgs& a) {
   options.specular = parse_specular(a.specular);
   options.normalize = parse_normalize(a.normalize);
   const auto size = parse_size(a.size);
-  if (a.frames < 1) throw UsageError("--frames must be at least 1");
-  if (a.warmup < 0) throw UsageError("--warmup must not be negative");
+  if (a.frames < 1 || a.frames > kMaxFrames)
+    throw UsageError("--frames must be 1.." + std::to_string(kMaxFrames) + " (got " + std::to_string(a.frames) + ")");
+  if (a.warmup < 0 || a.warmup > kMaxFrames)
+    throw UsageError("--warmup must be 0.." + std::to_string(kMaxFrames) + " (got " + std::to_string(a.warmup) + ")");
   if (a.work_items < 0) throw UsageError("--work-items must not be negative");
   // --cu with sub:NAME:N: the units' depth pass spread over the sub-devices; without --cu a device list
   // or sub-devices take bands of the frame (docs/planner.md).
@@ -165,12 +168,17 @@ int run_render(const RenderArgs& a) {
   if (!a.quiet)
     std::cerr << "rendering " << scene.name << " (" << scene.width << "x" << scene.height << ", "
               << scene.triangle_count() << " triangles, " << method_name(method) << ") on " << dev.name << " ...\n";
-  for (int i = 0; i < a.warmup; ++i) renderer.render(scene);  // builds programs, compiles work-group functions
+  FrameProgress progress(a.warmup + a.frames, a.quiet);
+  for (int i = 0; i < a.warmup; ++i) {
+    renderer.render(scene);  // builds programs, compiles work-group functions
+    progress.step(i + 1);
+  }
   std::vector<FrameTimings> timings;
   const Frame* last = nullptr;
   for (int i = 0; i < a.frames; ++i) {
     last = &renderer.render(scene);
     timings.push_back(last->timings);
+    progress.step(a.warmup + i + 1);
   }
   const Frame& frame = *last;
   const FrameTimings med = median_timings(timings);
@@ -330,8 +338,12 @@ Command add_render_command(CLI::App& app) {
                 "With a device list (bands): drop a failing device (named) and go on with the others");
   cmd->add_option("--size", a->size, "Resolution WIDTHxHEIGHT (at most 4096x4096), overriding the scene's");
   cmd->add_option("--report", a->report, "Write a JSON report (timings, stages, error figures)");
-  cmd->add_option("--frames", a->frames, "Timed frames; the median is reported")->capture_default_str();
-  cmd->add_option("--warmup", a->warmup, "Untimed frames first (program build, work-group compilation)")
+  cmd->add_option("--frames", a->frames,
+                  "Timed frames (at most " + std::to_string(kMaxFrames) + "); the median is reported; on a terminal "
+                  "a progress line [i/N] shows the time left")
+      ->capture_default_str();
+  cmd->add_option("--warmup", a->warmup, "Untimed frames first (program build, work-group compilation; at most " +
+                                             std::to_string(kMaxFrames) + ")")
       ->capture_default_str();
   cmd->add_option("--tile", a->tile, "Screen tile size: 16, 32 or 64")->capture_default_str()->check(CLI::IsMember({16, 32, 64}));
   cmd->add_option("--work-items", a->work_items,
@@ -362,7 +374,7 @@ Command add_render_command(CLI::App& app) {
                 "combined:*: skip the specular term per triangle and light where no highlight can fall (SEEDS §8)");
   cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
   cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");
-  cmd->add_flag("-q,--quiet", a->quiet, "No progress line");
+  cmd->add_flag("-q,--quiet", a->quiet, "No progress lines");
   return {cmd, [a, cmd]() {
             a->explicit_config = cmd->count("--tile") + cmd->count("--work-items") + cmd->count("--cu") +
                                      cmd->count("--partition") > 0;

@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "progress.hpp"
+
 #include "parashade/image.hpp"
 #include "parashade/output_file.hpp"
 #include "parashade/report.hpp"
@@ -20,9 +22,11 @@ int run_split_render(const Scene& scene, const RenderOptions& options, const Spl
     if (!warning.empty()) std::cerr << "parashade: warning: " << warning;
     warning.clear();
   };
+  FrameProgress progress(a.warmup + a.frames, a.quiet);
   for (int i = 0; i < a.warmup; ++i) {
     renderer.render(scene, &warning);  // the first is the calibration frame (equal bands)
     warn();
+    progress.step(i + 1);
   }
   std::vector<double> times;
   const Frame* f = nullptr;
@@ -30,6 +34,7 @@ int run_split_render(const Scene& scene, const RenderOptions& options, const Spl
     f = &renderer.render(scene, &warning);
     warn();
     times.push_back(f->timings.total_ms);
+    progress.step(a.warmup + i + 1);
   }
   const double ms = median(times);
   StagedFile staged_image = stage_image(a.output, f->image);  // replaces the old image with the report

@@ -1,6 +1,7 @@
 // Issue 17, B: inputs that would hang or eat memory. Scene and mesh paths must be regular files of a
 // bounded size, checked before reading (item 5); a scene is budgeted across its objects before anything
-// is built (item 6).
+// is built (item 6); --frames has a limit and long runs show progress on a terminal only (item 7).
+#include <pty.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -110,6 +111,62 @@ TEST_F(CliHostileInput, MemoryLimitComesFromTheEnvironment) {
     EXPECT_TRUE(fails_with(run_parashade(render_args(scene)), kBadInput, {"PARASHADE_MEMORY_LIMIT", "lots"}));
   }
   EXPECT_TRUE(nothing_written());
+}
+
+// render_args with `option` (given there) set to `value`.
+std::vector<std::string> with(std::vector<std::string> args, const std::string& option, const std::string& value) {
+  const auto at = std::find(args.begin(), args.end(), option);
+  if (at != args.end() && at + 1 != args.end()) *(at + 1) = value;
+  return args;
+}
+
+// Item 7: --frames and --warmup have a limit (a typo of a few digits would run for days).
+TEST_F(CliHostileInput, FramesBeyondTheLimitAreAUsageError) {
+  const fs::path scene = input("ball.json", sphere_scene());
+  EXPECT_TRUE(fails_with(run_parashade(with(render_args(scene), "--frames", "100001"), {}, std::chrono::seconds(20)),
+                         kUsage, {"--frames", "100000"}));
+  EXPECT_TRUE(fails_with(run_parashade(with(render_args(scene), "--warmup", "100001"), {}, std::chrono::seconds(20)),
+                         kUsage, {"--warmup", "100000"}));
+  EXPECT_TRUE(nothing_written());
+}
+
+// Runs parashade on a pseudo-terminal (stdout and stderr a TTY) and returns all it printed.
+std::string run_on_terminal(std::vector<std::string> args) {
+  std::vector<std::string> text = {parashade_binary().string()};
+  text.insert(text.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : text) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  int master = -1;
+  const pid_t pid = ::forkpty(&master, nullptr, nullptr, nullptr);
+  if (pid < 0) return "forkpty failed";
+  if (pid == 0) {
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  std::string out;
+  char buf[4096];
+  for (ssize_t n; (n = ::read(master, buf, sizeof buf)) > 0;) out.append(buf, std::size_t(n));  // EIO at the end
+  ::close(master);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return out;
+}
+
+TEST_F(CliHostileInput, ProgressOnATerminalOnly) {
+  const fs::path scene = input("ball.json", sphere_scene());
+  std::vector<std::string> args = with(with(render_args(scene), "--frames", "3"), "--warmup", "1");
+  args.erase(std::find(args.begin(), args.end(), "-q"));
+  const std::string terminal = run_on_terminal(args);
+  EXPECT_NE(terminal.find("[4/4]"), std::string::npos) << terminal;
+  EXPECT_NE(terminal.find("s left"), std::string::npos) << terminal;
+  const RunResult logged = run_parashade(args);  // stderr to a file
+  EXPECT_TRUE(succeeds(logged));
+  EXPECT_EQ(logged.err.find("[4/4]"), std::string::npos) << logged.err;
+  args.push_back("-q");
+  const std::string quiet = run_on_terminal(args);
+  EXPECT_EQ(quiet.find("[4/4]"), std::string::npos) << quiet;
+  EXPECT_NE(quiet.find("wrote"), std::string::npos) << quiet;
 }
 
 }  // namespace
