@@ -1,11 +1,9 @@
 #include "parashade/report.hpp"
 
 #include <cmath>
-#include <fstream>
-#include <system_error>
-#include <unistd.h>
 
 #include "parashade/errors.hpp"
+#include "parashade/output_file.hpp"
 
 namespace parashade {
 
@@ -100,26 +98,7 @@ nlohmann::json unit_mapping_json(const FrameStats& s, const FrameTimings& t) {
 }
 
 void write_text_atomically(const std::filesystem::path& path, const std::string& text) {
-  namespace fs = std::filesystem;
-  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-  const fs::path tmp = dir / ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()));
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw InputError("cannot write '" + path.string() + "': cannot create a file in '" + dir.string() + "'");
-    out << text;
-    out.close();
-    if (!out) {
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      throw InputError("cannot write '" + path.string() + "': write failed");
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw InputError("cannot write '" + path.string() + "': " + ec.message());
-  }
+  stage_text(path, text).commit();
 }
 
 }  // namespace parashade

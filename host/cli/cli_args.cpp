@@ -4,6 +4,8 @@
 #include <tuple>
 
 #include "parashade/errors.hpp"
+#include "parashade/memory_budget.hpp"
+#include "parashade/scene_files.hpp"
 
 namespace parashade::cli {
 
@@ -29,13 +31,21 @@ std::optional<std::pair<int, int>> parse_size(const std::string& size) {
   return std::make_pair(std::stoi(m[1]), std::stoi(m[2]));
 }
 
-Scene load_scene_at(const std::string& file, const std::optional<std::pair<int, int>>& size, const std::string& size_text) {
-  Scene scene = load_scene(file);
+Scene load_scene_at(const std::string& file, const std::optional<std::pair<int, int>>& size, const std::string& size_text,
+                    std::vector<std::filesystem::path>* files) {
+  std::vector<std::filesystem::path> read;
+  Scene scene = load_scene(file, files ? *files : read);
   if (size) {
     std::tie(scene.width, scene.height) = *size;
     check_resolution(scene.width, scene.height, "--size " + size_text);
   }
   check_resolution(scene.width, scene.height, "scene '" + file + "'");
+  if (size) {  // the scene was budgeted at its own resolution
+    std::vector<MemoryItem> budget;
+    for (const Object& o : scene.objects)
+      budget.push_back({"'" + o.name + "'", o.mesh->triangles.size(), o.mesh->positions.size()});
+    check_host_memory(file + " at --size " + size_text, budget, scene.width, scene.height);
+  }
   return scene;
 }
 
@@ -46,6 +56,39 @@ void check_report_destination(const std::filesystem::path& report) {
     throw InputError("cannot write '" + report.string() + "': directory '" + dir.string() + "' does not exist");
   if (std::filesystem::is_directory(report, ec))
     throw InputError("cannot write '" + report.string() + "': it is a directory");
+}
+
+namespace {
+
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
+  namespace fs = std::filesystem;
+  std::error_code ec_a, ec_b;
+  if (fs::exists(a, ec_a) && fs::exists(b, ec_b)) {
+    std::error_code ec;
+    return fs::equivalent(a, b, ec);
+  }
+  std::error_code ec;
+  const fs::path ca = fs::weakly_canonical(fs::absolute(a, ec), ec);
+  const fs::path cb = fs::weakly_canonical(fs::absolute(b, ec), ec);
+  return ca == cb;
+}
+
+}  // namespace
+
+void check_distinct_files(const std::vector<std::pair<std::string, std::filesystem::path>>& outputs,
+                          const std::vector<std::filesystem::path>& inputs) {
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const auto& [option, path] = outputs[i];
+    if (path.empty()) continue;
+    for (std::size_t j = 0; j < i; ++j)
+      if (!outputs[j].second.empty() && same_file(outputs[j].second, path))
+        throw UsageError(outputs[j].first + " '" + outputs[j].second.string() + "' and " + option + " '" +
+                         path.string() + "' are the same file: one would overwrite the other");
+    for (const std::filesystem::path& input : inputs)
+      if (same_file(input, path))
+        throw UsageError(option + " '" + path.string() + "' is the input file '" + input.string() +
+                         "': writing it would destroy the input");
+  }
 }
 
 void check_config_options(const FrameConfig& config, DeviceMode devices) {

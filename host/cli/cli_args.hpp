@@ -50,7 +50,9 @@ std::optional<std::pair<int, int>> parse_size(const std::string& size);
 
 // The scene file, at `size` when given (--size overrides the scene's resolution); both resolutions are
 // checked against the 12-bit address limit, naming the culprit.
-Scene load_scene_at(const std::string& file, const std::optional<std::pair<int, int>>& size, const std::string& size_text);
+// `files`, when given, receives every file read (load_scene in scene_files.hpp).
+Scene load_scene_at(const std::string& file, const std::optional<std::pair<int, int>>& size, const std::string& size_text,
+                    std::vector<std::filesystem::path>* files = nullptr);
 
 // Checks `config` (check_frame_config) on `devices`; a refused combination becomes a usage error that
 // names this command line's options for the values at fault.
@@ -58,5 +60,12 @@ void check_config_options(const FrameConfig& config, DeviceMode devices = Device
 
 // A report is written after the work; a folder that is not there must stop the run before it.
 void check_report_destination(const std::filesystem::path& report);
+
+// No output may be another output or an input file (the scene, its meshes): compared as files
+// (std::filesystem::equivalent where both exist, else the normalized absolute paths with symbolic links
+// resolved), not as strings. `outputs` pairs an option with its path; an empty path is an option not
+// given. A collision is a usage error naming both.
+void check_distinct_files(const std::vector<std::pair<std::string, std::filesystem::path>>& outputs,
+                          const std::vector<std::filesystem::path>& inputs);
 
 }  // namespace parashade::cli

@@ -11,6 +11,7 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "plan_cli.hpp"
+#include "progress.hpp"
 #include "tune_cache.hpp"
 #include "split_render_cli.hpp"
 #include "parashade/split_renderer.hpp"
@@ -21,6 +22,7 @@
 #include "parashade/geometry_stage.hpp"
 #include "parashade/image.hpp"
 #include "parashade/metrics.hpp"
+#include "parashade/output_file.hpp"
 #include "parashade/reference.hpp"
 #include "parashade/renderer.hpp"
 #include "parashade/report.hpp"
@@ -191,8 +193,10 @@ int run_render(const RenderArgs& a) {
   options.specular = for_option("--specular", [&] { return parse_specular(a.specular); });
   options.normalize = for_option("--normalize", [&] { return parse_normalize(a.normalize); });
   const auto size = parse_size(a.size);
-  if (a.frames < 1) throw UsageError("--frames must be at least 1");
-  if (a.warmup < 0) throw UsageError("--warmup must not be negative");
+  if (a.frames < 1 || a.frames > kMaxFrames)
+    throw UsageError("--frames must be 1.." + std::to_string(kMaxFrames) + " (got " + std::to_string(a.frames) + ")");
+  if (a.warmup < 0 || a.warmup > kMaxFrames)
+    throw UsageError("--warmup must be 0.." + std::to_string(kMaxFrames) + " (got " + std::to_string(a.warmup) + ")");
   if (a.work_items < 0) throw UsageError("--work-items must not be negative");
   if (!a.distribute.empty()) return run_distributed(a, options, size);
   if (!a.rank_partition.empty()) throw UsageError("--rank-partition needs --distribute sort-last");
@@ -205,8 +209,10 @@ int run_render(const RenderArgs& a) {
   if (!options.units && options.unit_path() && !a.quiet)
     std::cerr << "parashade: note: " << (options.arith.fixed ? "--arith " + a.arith : std::string("--coverage dda"))
               << " runs on the classic unit (--units chooses another)\n";
-  Scene scene = load_scene_at(a.scene, size, a.size);
+  std::vector<std::filesystem::path> inputs;  // the scene file and its meshes
+  Scene scene = load_scene_at(a.scene, size, a.size, &inputs);
   for (const std::string& w : scene.warnings) std::cerr << "parashade: warning: " << w << "\n";
+  check_distinct_files({{"-o", a.output}, {"--report", a.report}}, inputs);
   // Fail on an unwritable output before the work, not after it.
   const std::filesystem::path out_path(a.output);
   check_image_destination(out_path);
@@ -247,12 +253,17 @@ int run_render(const RenderArgs& a) {
   if (!a.quiet)
     std::cerr << "rendering " << scene.name << " (" << scene.width << "x" << scene.height << ", "
               << scene.triangle_count() << " triangles, " << method_name(method) << ") on " << dev.name << " ...\n";
-  for (int i = 0; i < a.warmup; ++i) renderer.render(scene);  // builds programs, compiles work-group functions
+  FrameProgress progress(a.warmup + a.frames, a.quiet);
+  for (int i = 0; i < a.warmup; ++i) {
+    renderer.render(scene);  // builds programs, compiles work-group functions
+    progress.step(i + 1);
+  }
   std::vector<FrameTimings> timings;
   const Frame* last = nullptr;
   for (int i = 0; i < a.frames; ++i) {
     last = &renderer.render(scene);
     timings.push_back(last->timings);
+    progress.step(a.warmup + i + 1);
   }
   const Frame& frame = *last;
   const FrameTimings med = median_timings(timings);
@@ -261,7 +272,9 @@ int run_render(const RenderArgs& a) {
   std::vector<std::string> error_lines;
   if (!a.no_error) errors = error_figures(scene, method, frame.image, error_lines);
 
-  write_image(out_path, frame.image);
+  // Both outputs are written to temporary files first and replace their destinations only when both were
+  // written: a failed report leaves the previous image in place.
+  StagedFile staged_image = stage_image(out_path, frame.image);
   const double pixels = double(scene.width) * scene.height;
   nlohmann::json report = {
       {"scene", scene.name},
@@ -309,13 +322,11 @@ int run_render(const RenderArgs& a) {
     report["plan"]["mapping"] = unit_mapping_json(frame.stats, med);
   }
   if (!a.report.empty()) {
-    try {
-      write_text_atomically(a.report, report.dump(2) + "\n");
-    } catch (...) {
-      std::error_code ignored;  // both outputs or neither
-      std::filesystem::remove(out_path, ignored);
-      throw;
-    }
+    StagedFile staged_report = stage_text(a.report, report.dump(2) + "\n");
+    staged_image.commit();
+    staged_report.commit();
+  } else {
+    staged_image.commit();
   }
 
   std::printf("%s: %dx%d, %llu triangles (%llu after culling and clipping), method %s\n", scene.name.c_str(),
@@ -409,8 +420,12 @@ Command add_render_command(CLI::App& app) {
                   "Resolution WIDTHxHEIGHT (at most " + std::to_string(kMaxResolution) + "x" +
                       std::to_string(kMaxResolution) + "), overriding the scene's");
   cmd->add_option("--report", a->report, "Write a JSON report (timings, stages, error figures)");
-  cmd->add_option("--frames", a->frames, "Timed frames; the median is reported")->capture_default_str();
-  cmd->add_option("--warmup", a->warmup, "Untimed frames first (program build, work-group compilation)")
+  cmd->add_option("--frames", a->frames,
+                  "Timed frames (at most " + std::to_string(kMaxFrames) + "); the median is reported; on a terminal "
+                  "a progress line [i/N] shows the time left")
+      ->capture_default_str();
+  cmd->add_option("--warmup", a->warmup, "Untimed frames first (program build, work-group compilation; at most " +
+                                             std::to_string(kMaxFrames) + ")")
       ->capture_default_str();
   cmd->add_option("--tile", a->tile, "Screen tile size: " + tile_sizes_text())
       ->capture_default_str()
@@ -444,7 +459,7 @@ Command add_render_command(CLI::App& app) {
                 "combined:*: skip the specular term per triangle and light where no highlight can fall ([Dembitsky 2025, software/hardware rendering] ch. 3)");
   cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
   cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");
-  cmd->add_flag("-q,--quiet", a->quiet, "No progress line");
+  cmd->add_flag("-q,--quiet", a->quiet, "No progress lines");
   return {cmd, [a, cmd]() {
             a->explicit_config = cmd->count("--tile") + cmd->count("--work-items") + cmd->count("--cu") +
                                      cmd->count("--partition") > 0;

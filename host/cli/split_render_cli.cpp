@@ -6,8 +6,10 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_args.hpp"
+#include "progress.hpp"
 
 #include "parashade/image.hpp"
+#include "parashade/output_file.hpp"
 #include "parashade/report.hpp"
 #include "parashade/split_renderer.hpp"
 #include "parashade/statistics.hpp"
@@ -21,9 +23,11 @@ int run_split_render(const Scene& scene, const RenderOptions& options, const Spl
     if (!warning.empty()) std::cerr << "parashade: warning: " << warning;
     warning.clear();
   };
+  FrameProgress progress(a.warmup + a.frames, a.quiet);
   for (int i = 0; i < a.warmup; ++i) {
     renderer.render(scene, &warning);  // the first is the calibration frame (equal bands)
     warn();
+    progress.step(i + 1);
   }
   std::vector<double> times;
   const Frame* f = nullptr;
@@ -31,9 +35,10 @@ int run_split_render(const Scene& scene, const RenderOptions& options, const Spl
     f = &renderer.render(scene, &warning);
     warn();
     times.push_back(f->timings.total_ms);
+    progress.step(a.warmup + i + 1);
   }
   const double ms = median(times);
-  write_image(a.output, f->image);
+  StagedFile staged_image = stage_image(a.output, f->image);  // replaces the old image with the report
   nlohmann::json shares = nlohmann::json::array();
   for (const auto& s : renderer.shares())
     shares.push_back({{"device", s.device}, {"first_tile_row", s.first_row}, {"tile_rows", s.rows},
@@ -43,7 +48,11 @@ int run_split_render(const Scene& scene, const RenderOptions& options, const Spl
                                    {"width", scene.width},  {"height", scene.height},     {"frame_ms", ms},
                                    {"frame_ms_note", "median of " + std::to_string(a.frames) + " split frames"},
                                    {"devices", shares}};
-    write_text_atomically(a.report, report.dump(2) + "\n");
+    StagedFile staged_report = stage_text(a.report, report.dump(2) + "\n");
+    staged_image.commit();
+    staged_report.commit();
+  } else {
+    staged_image.commit();
   }
   std::printf("%s: %dx%d split across devices, frame %.3f ms (median of %d)\n", scene.name.c_str(), scene.width,
               scene.height, ms, a.frames);

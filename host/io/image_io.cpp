@@ -1,18 +1,23 @@
 // Writing and reading images through OpenImageIO (image.hpp). A write goes to a temporary file in
-// the destination directory and is renamed into place, so readers never see a partial image.
+// the destination directory (output_file.hpp), every write of OIIO's plugins checked, and is renamed into
+// place, so readers never see a partial image and a failed write never replaces a good one.
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
+#include <cerrno>
 #include <cstdint>
+#include <cstring>
+#include <mutex>
 #include <string>
 #include <system_error>
 #include <vector>
 
 #include "parashade/errors.hpp"
 #include "parashade/image.hpp"
+#include "parashade/output_file.hpp"
 
 namespace parashade {
 namespace {
@@ -29,13 +34,48 @@ std::string lower_extension(const fs::path& path) {
 // get printed at exit.
 std::string take_global_oiio_error() { return OIIO::geterror(); }
 
-// ".name.tmp-<pid>-<n>.ext" beside the destination: same file system (rename is atomic) and the same
-// extension (OIIO chooses the format by it).
-fs::path temporary_beside(const fs::path& path) {
-  static std::atomic<unsigned> counter{0};
-  const std::string name = "." + path.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                           std::to_string(counter++) + path.extension().string();
-  return path.parent_path() / name;
+// OIIO's plugins write through this proxy into the staged file: a failed write (ENOSPC, EFBIG, EIO) is
+// kept in the StagedFile even where a plugin ignores the short count (PNG, BMP and TGA did).
+class StagedProxy : public OIIO::Filesystem::IOProxy {
+ public:
+  explicit StagedProxy(StagedFile& file) : IOProxy(file.temporary().string(), Write), file_(file) {}
+  const char* proxytype() const override { return "parashade-staged"; }
+  size_t write(const void* buf, size_t size) override {
+    const size_t n = pwrite(buf, size, m_pos);
+    m_pos += int64_t(n);
+    return n;
+  }
+  size_t pwrite(const void* buf, size_t size, int64_t offset) override {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (offset < 0 || !file_.pwrite_all(buf, size, std::size_t(offset))) return 0;
+    size_ = std::max(size_, std::size_t(offset) + size);
+    return size;
+  }
+  size_t read(void* buf, size_t size) override {
+    const size_t n = pread(buf, size, m_pos);
+    m_pos += int64_t(n);
+    return n;
+  }
+  size_t pread(void* buf, size_t size, int64_t offset) override {  // TIFF reads back what it wrote
+    std::lock_guard<std::mutex> lock(mutex_);
+    const ssize_t n = ::pread(fd_, buf, size, off_t(offset));
+    return n < 0 ? 0 : size_t(n);
+  }
+  size_t size() const override { return size_; }
+
+  int fd_ = -1;
+
+ private:
+  StagedFile& file_;
+  std::size_t size_ = 0;
+  std::mutex mutex_;
+};
+
+// No time stamp in the file (TIFF's DateTime, EXR's capDate), so identical runs give identical bytes.
+OIIO::ImageSpec spec_without_time(int width, int height, OIIO::TypeDesc type) {
+  OIIO::ImageSpec spec(width, height, 3, type);
+  spec.attribute("DateTime", "");
+  return spec;
 }
 
 // Pixel data as the file stores it: 3 channels, float levels/255 for EXR, else 8-bit.
@@ -67,20 +107,28 @@ Pixels pixels_for(const RenderedImage& image, bool as_float) {
   return px;
 }
 
-// Writes the file at `file` (the temporary); returns an empty string or the reason it failed.
-std::string write_file(const fs::path& file, const RenderedImage& image, bool as_float) {
-  auto out = OIIO::ImageOutput::create(file.string());
+// Writes the staged file; a failure is recorded in `file` (its error()).
+void write_file(StagedFile& file, const RenderedImage& image, bool as_float) {
+  const std::string name = file.temporary().string();
+  StagedProxy proxy(file);  // declared first: it must outlive `out`, whose destructor may still use it
+  auto out = OIIO::ImageOutput::create(name);
   if (!out) {
     const std::string why = take_global_oiio_error();
-    return why.empty() ? "unknown image format" : why;
+    return file.fail(why.empty() ? "unknown image format" : why);
+  }
+  // Every format parashade documents takes a proxy; one that does not is written by OIIO itself (its
+  // own write errors only).
+  if (out->supports("ioproxy")) {
+    proxy.fd_ = file.open_fd();
+    out->set_ioproxy(&proxy);
   }
   const Pixels px = pixels_for(image, as_float);
-  const OIIO::ImageSpec spec(image.width, image.height, 3, px.type);
-  if (!out->open(file.string(), spec)) return out->geterror();
+  if (!out->open(name, spec_without_time(image.width, image.height, px.type))) return file.fail(out->geterror());
   const bool written = out->write_image(px.type, px.data());
-  const std::string write_error = written ? std::string() : out->geterror();
-  if (!out->close() && written) return out->geterror();
-  return write_error;
+  if (!written) file.fail(out->geterror());
+  if (!out->close()) file.fail(out->geterror());
+  out.reset();
+  file.close_fd();
 }
 
 }  // namespace
@@ -103,24 +151,19 @@ void check_image_destination(const fs::path& path) {
 }
 
 void write_image(const fs::path& path, const RenderedImage& image) {
+  stage_image(path, image).commit();
+}
+
+StagedFile stage_image(const fs::path& path, const RenderedImage& image) {
   const std::size_t n = std::size_t(std::max(image.width, 0)) * std::size_t(std::max(image.height, 0));
   if (image.width < 1 || image.height < 1 || image.rgba.size() != 4 * n)
     throw InputError("cannot write " + path.string() + ": the image is empty or inconsistent");
   check_image_destination(path);  // before touching the file system
-
-  const std::string ext = lower_extension(path);
-  const fs::path tmp = temporary_beside(path);
-  std::string why = write_file(tmp, image, ext == ".exr");
-  if (why.empty()) {
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) why = ec.message();
-  }
-  if (!why.empty()) {
-    std::error_code ignored;
-    fs::remove(tmp, ignored);
-    throw InputError("cannot write " + path.string() + ": " + why);
-  }
+  StagedFile file(path);
+  write_file(file, image, lower_extension(path) == ".exr");
+  take_global_oiio_error();
+  if (!file.error().empty()) throw InputError("cannot write " + path.string() + ": " + file.error());
+  return file;
 }
 
 RenderedImage read_image(const fs::path& path) {

@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "input_file.hpp"
 #include "parashade/errors.hpp"
 
 namespace parashade::detail {
@@ -132,6 +133,7 @@ void JsonObject::finish() const {
 
 nlohmann::json parse_json_file(const std::filesystem::path& path) {
   const std::string name = path.string();
+  check_input_file(path, name, kMaxSceneFileBytes, "scene file");  // before opening: a FIFO would block
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(name + ": cannot open for reading");
   std::stringstream text;

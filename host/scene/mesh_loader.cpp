@@ -21,6 +21,7 @@
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
 
+#include "input_file.hpp"
 #include "mesh_file_scan.hpp"
 #include "off_reader.hpp"
 #include "parashade/errors.hpp"
@@ -168,7 +169,7 @@ std::string lower_extension(const std::filesystem::path& path) {
 void check_readable(const std::filesystem::path& path, const std::string& name) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(name + ": no such file");
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(name + ": not a regular file");
+  detail::check_input_file(path, name, detail::kMaxMeshFileBytes, "mesh file");
   const std::string ext = lower_extension(path);
   if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl")
     throw InputError(name + ": unknown mesh format '" + ext + "' (expected .obj, .off, .ply or .stl)");

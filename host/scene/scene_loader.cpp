@@ -13,7 +13,9 @@
 
 #include "json_reader.hpp"
 #include "parashade/errors.hpp"
+#include "parashade/memory_budget.hpp"
 #include "parashade/scene.hpp"
+#include "parashade/scene_files.hpp"
 #include "parashade/shapes.hpp"
 
 namespace parashade {
@@ -81,6 +83,7 @@ std::string expand_variables(const JsonValue& where, const std::string& text) {
 class MeshCache {
  public:
   std::vector<std::string> warnings;  // of the meshes loaded, once per file
+  std::vector<std::filesystem::path>* files = nullptr;  // the mesh files read, when asked for
 
   std::shared_ptr<const Mesh> get(const std::string& key, const std::function<Mesh()>& build) {
     auto& slot = meshes_[key];
@@ -102,6 +105,8 @@ void check_triangles(const JsonValue& where, long long triangles) {
 struct ShapeSpec {
   std::string key;  // equal keys, equal meshes
   std::function<Mesh()> build;
+  std::string type;
+  std::uint64_t triangles = 0, vertices = 0;  // what build() makes, for the memory budget (about)
 };
 
 ShapeSpec read_shape(const JsonValue& v) {
@@ -126,6 +131,8 @@ ShapeSpec read_shape(const JsonValue& v) {
   if (type == "sphere") {
     const int slices = integer("slices", 32, 3, kMaxSegments), stacks = integer("stacks", 17, 2, kMaxSegments);
     check_triangles(v, 2ll * slices * (stacks - 1));
+    shape.triangles = 2ull * slices * (stacks - 1);
+    shape.vertices = std::uint64_t(slices + 1) * (stacks + 1);
     key << ' ' << slices << ' ' << stacks;
     shape.build = [=] { return make_sphere(slices, stacks); };
   } else if (type == "torus") {
@@ -137,6 +144,8 @@ ShapeSpec read_shape(const JsonValue& v) {
     const int major_n = integer("major_segments", 48, 3, kMaxSegments);
     const int minor_n = integer("minor_segments", 24, 3, kMaxSegments);
     check_triangles(v, 2ll * major_n * minor_n);
+    shape.triangles = 2ull * major_n * minor_n;
+    shape.vertices = std::uint64_t(major_n + 1) * (minor_n + 1);
     key << ' ' << major << ' ' << minor << ' ' << major_n << ' ' << minor_n;
     shape.build = [=] { return make_torus(major, minor, major_n, minor_n); };
   } else if (type == "box") {
@@ -145,6 +154,8 @@ ShapeSpec read_shape(const JsonValue& v) {
       size = s->is_number() ? glm::vec3(float(positive(*s))) : s->vec3();
       if (!(size.x > 0.0f && size.y > 0.0f && size.z > 0.0f)) s->fail("every size must be > 0 (got " + s->dump() + ")");
     }
+    shape.triangles = 12;
+    shape.vertices = 24;
     key << ' ' << size.x << ' ' << size.y << ' ' << size.z;
     shape.build = [=] { return make_box(size); };
   } else if (type == "cylinder") {
@@ -152,14 +163,19 @@ ShapeSpec read_shape(const JsonValue& v) {
     const int segments = integer("segments", 32, 3, kMaxSegments);
     const auto caps_v = spec.optional("caps");
     const bool caps = caps_v ? caps_v->boolean() : true;
+    shape.triangles = 4ull * segments;
+    shape.vertices = 4ull * (segments + 1) + 2;
     key << ' ' << radius << ' ' << height << ' ' << segments << ' ' << caps;
     shape.build = [=] { return make_cylinder(radius, height, segments, caps); };
   } else {
     const int level = integer("level", 8, 2, kMaxTeapotLevel);
+    shape.triangles = 64ull * level * level;  // 32 patches of level x level quads
+    shape.vertices = 32ull * (level + 1) * (level + 1);
     key << ' ' << level;
     shape.build = [=] { return make_teapot(level); };
   }
   spec.finish();
+  shape.type = type;
   shape.key = key.str();
   return shape;
 }
@@ -171,6 +187,7 @@ std::shared_ptr<const Mesh> read_mesh_path(const JsonValue& v, const std::filesy
   return cache.get("mesh " + path.string(), [&] {
     try {
       MeshLoadStats stats;
+      if (cache.files) cache.files->push_back(path);
       Mesh mesh = load_mesh(path, &stats);
       if (std::string w = mesh_load_warning(path.string(), stats); !w.empty()) cache.warnings.push_back(std::move(w));
       return mesh;
@@ -278,8 +295,11 @@ Material read_material(const std::string& name, const JsonValue& v) {
   return mat;
 }
 
+// A shape is built only after the whole scene is read and its memory budget checked: its ShapeSpec
+// waits in `shapes` (by object index) and the object's mesh stays empty until then.
 Object read_object(const JsonValue& v, std::size_t index, std::map<std::string, std::uint32_t>& materials,
-                   Scene& scene, const std::filesystem::path& folder, MeshCache& cache) {
+                   Scene& scene, const std::filesystem::path& folder, MeshCache& cache,
+                   std::map<std::size_t, ShapeSpec>& shapes) {
   JsonObject o = v.object();
   Object obj;
   const auto shape = o.optional("shape");
@@ -287,8 +307,7 @@ Object read_object(const JsonValue& v, std::size_t index, std::map<std::string, 
   if (shape && mesh) v.fail("has both 'shape' and 'mesh' (one object, one geometry)");
   if (!shape && !mesh) v.fail("needs 'shape' or 'mesh'");
   if (shape) {
-    const ShapeSpec spec = read_shape(*shape);
-    obj.mesh = cache.get(spec.key, spec.build);
+    shapes[index] = read_shape(*shape);
   } else {
     obj.mesh = read_mesh_path(*mesh, folder, cache);
   }
@@ -319,7 +338,8 @@ Object read_object(const JsonValue& v, std::size_t index, std::map<std::string, 
   return obj;
 }
 
-Scene read_scene(const nlohmann::json& doc, const std::filesystem::path& path) {
+Scene read_scene(const nlohmann::json& doc, const std::filesystem::path& path,
+                 std::vector<std::filesystem::path>& files) {
   const std::string file = path.string();
   const JsonValue root(doc, "", file);
   JsonObject top = root.object();
@@ -351,9 +371,21 @@ Scene read_scene(const nlohmann::json& doc, const std::filesystem::path& path) {
   }
   const std::filesystem::path folder = path.parent_path();
   MeshCache cache;
+  cache.files = &files;
   const std::vector<JsonValue> objects = top.required("objects").array(1);
+  std::map<std::size_t, ShapeSpec> shapes;
   for (std::size_t i = 0; i < objects.size(); ++i)
-    scene.objects.push_back(read_object(objects[i], i, materials, scene, folder, cache));
+    scene.objects.push_back(read_object(objects[i], i, materials, scene, folder, cache, shapes));
+  std::vector<MemoryItem> budget;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const Object& o = scene.objects[i];
+    if (const auto s = shapes.find(i); s != shapes.end())
+      budget.push_back({"'" + o.name + "' (" + s->second.type + ")", s->second.triangles, s->second.vertices});
+    else
+      budget.push_back({"'" + o.name + "' (mesh)", o.mesh->triangles.size(), o.mesh->positions.size()});
+  }
+  check_host_memory(file, budget, scene.width, scene.height);
+  for (const auto& [i, spec] : shapes) scene.objects[i].mesh = cache.get(spec.key, spec.build);
   scene.warnings = cache.warnings;
   if (const auto x = top.optional("cull_backfaces")) scene.cull_backfaces = x->boolean();
   if (const auto x = top.optional("viewer")) scene.local_viewer = x->choice({"local", "infinite"}) == "local";
@@ -370,12 +402,18 @@ std::string lower_extension(const std::filesystem::path& path) {
 }  // namespace
 
 Scene load_scene(const std::filesystem::path& path) {
+  std::vector<std::filesystem::path> files;
+  return load_scene(path, files);
+}
+
+Scene load_scene(const std::filesystem::path& path, std::vector<std::filesystem::path>& files) {
+  files.push_back(path);
   const std::string ext = lower_extension(path);
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path.string() + ": no such file");
   // A directory opens as an empty stream, which would read as "invalid JSON".
   if (std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": is a directory, not a scene file");
-  if (ext == ".json") return read_scene(detail::parse_json_file(path), path);
+  if (ext == ".json") return read_scene(detail::parse_json_file(path), path, files);
   if (ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl") return scene_for_mesh(path);
   throw InputError(path.string() + ": unknown scene format '" + ext + "' (expected .json, or a mesh: .obj .off .ply .stl)");
 }

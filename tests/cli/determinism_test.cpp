@@ -3,8 +3,11 @@
 // fixed-point mode across PoCL's pthread and basic devices. Images are written as binary PPM, so the
 // file bytes are the pixel bytes. The scene is the shipped teapot (6 320 triangles, overlapping in
 // depth, both lights) at 256x192.
+#include <chrono>
 #include <cstdlib>
+#include <ctime>
 #include <fstream>
+#include <thread>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -46,6 +49,27 @@ TEST_F(CliDeterminism, SameRunTwiceGivesTheSameBytes) {
        {std::vector<std::string>{}, {"--method", "phong"}, {"--arith", "fixed:10.4"}}) {
     const std::string first = render_teapot("first", options), second = render_teapot("second", options);
     EXPECT_TRUE(first == second) << "options: " << (options.empty() ? "(none)" : options.back());
+  }
+}
+
+// Issue 17, item 17: TIFF and EXR used to differ between identical runs by their time stamp (TIFF's
+// DateTime, EXR's capDate, to the second). The second run starts in a later second than the first.
+TEST_F(CliDeterminism, TiffAndExrOfRunsInDifferentSecondsAreIdentical) {
+  const std::filesystem::path scene = input("ball.json", sphere_scene());
+  std::string bytes[2][2];
+  for (int run = 0; run < 2; ++run) {
+    for (int format = 0; format < 2; ++format) {
+      const std::filesystem::path out = out_dir() / ("run" + std::to_string(run) + (format ? ".exr" : ".tif"));
+      EXPECT_TRUE(succeeds(run_parashade({"render", scene.string(), "-o", out.string(), "--frames", "1", "--warmup",
+                                          "0", "-q", "--no-error"})));
+      bytes[run][format] = file_bytes(out);
+    }
+    const std::time_t written = std::time(nullptr);  // at or after the files' time stamps
+    while (run == 0 && std::time(nullptr) == written) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  for (int format = 0; format < 2; ++format) {
+    EXPECT_FALSE(bytes[0][format].empty()) << format;
+    EXPECT_TRUE(bytes[0][format] == bytes[1][format]) << (format ? "EXR" : "TIFF") << " files of identical runs differ";
   }
 }
 

@@ -1,14 +1,26 @@
 // Writing and reading images: round trips, and failures that leave nothing behind.
+#include <OpenImageIO/imageio.h>
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstdlib>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <random>
+#include <sstream>
 #include <string>
 
 #include "parashade/errors.hpp"
 #include "parashade/image.hpp"
+#include "parashade/output_file.hpp"
 
 namespace parashade {
 namespace {
@@ -121,6 +133,160 @@ TEST_F(ImageIo, FailedRenameRemovesTheTemporary) {
 
 TEST_F(ImageIo, ReadingAMissingFileIsAnInputError) {
   EXPECT_THROW(read_image(dir_ / "absent.png"), InputError);
+}
+
+std::string file_bytes(const fs::path& p) {
+  std::ostringstream s;
+  s << std::ifstream(p, std::ios::binary).rdbuf();
+  return s.str();
+}
+
+// The child side of write_with_file_size_limit: a fresh process (exec'd, so no thread pool of OIIO or
+// OpenEXR is inherited half-alive from the parent, which made a forked child hang in its EXR write)
+// whose files may not grow past PARASHADE_CHILD_LIMIT bytes (RLIMIT_FSIZE, SIGXFSZ ignored: a write past
+// it fails with EFBIG, as on a full disk it fails with ENOSPC). It writes a 256x256 image of random
+// pixels, or 100 000 bytes of text, to PARASHADE_CHILD_PATH and leaves the InputError's message ("ok"
+// when it wrote) in PARASHADE_CHILD_MESSAGE. Run only by the tests below.
+TEST(ImageIoChild, DISABLED_WriteUnderAFileSizeLimit) {
+  const char* path = std::getenv("PARASHADE_CHILD_PATH");
+  const char* message_file = std::getenv("PARASHADE_CHILD_MESSAGE");
+  const char* limit_text = std::getenv("PARASHADE_CHILD_LIMIT");
+  ASSERT_TRUE(path && message_file && limit_text);
+  ::signal(SIGXFSZ, SIG_IGN);
+  const rlim_t limit = rlim_t(std::stoull(limit_text));
+  const rlimit rl{limit, limit};
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &rl), 0);
+  std::string message = "ok";
+  try {
+    if (fs::path(path).extension() == ".json")
+      stage_text(path, std::string(100000, ' ')).commit();
+    else
+      write_image(path, test_image(256, 256));  // random pixels: far more than the limit in any format
+  } catch (const InputError& e) {
+    message = e.what();
+  } catch (const std::exception& e) {
+    message = std::string("other exception: ") + e.what();
+  }
+  std::ofstream(message_file) << message;  // a few bytes: under the limit
+}
+
+std::string write_with_file_size_limit(rlim_t limit, const fs::path& path) {
+  const fs::path message_file = path.parent_path().parent_path() / (path.filename().string() + ".message");
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::setenv("PARASHADE_CHILD_PATH", path.c_str(), 1);
+    ::setenv("PARASHADE_CHILD_MESSAGE", message_file.c_str(), 1);
+    ::setenv("PARASHADE_CHILD_LIMIT", std::to_string(limit).c_str(), 1);
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (null < 0 || ::dup2(null, 1) < 0) ::_exit(126);
+    ::execl("/proc/self/exe", "/proc/self/exe", "--gtest_filter=ImageIoChild.DISABLED_WriteUnderAFileSizeLimit",
+            "--gtest_also_run_disabled_tests", static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  const std::string message = file_bytes(message_file);
+  fs::remove(message_file);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    return "child failed (status " + std::to_string(status) + "): " + message;
+  return message;
+}
+
+// Issue 17, item 1: a write that fails part-way (full disk) must not replace the good file, must leave
+// no temporary file and must name the file and the system's error. PNG, BMP and TGA used to rename the
+// truncated file into place and report success; JPEG left its temporary file.
+class ImageIoFullDisk : public ImageIo, public ::testing::WithParamInterface<std::string> {};
+
+TEST_P(ImageIoFullDisk, FailedWriteKeepsTheOldFileAndLeavesNoTemporary) {
+  const fs::path path = dir_ / ("frame." + GetParam());
+  write_image(path, test_image(4, 4));
+  const std::string before = file_bytes(path);
+  const std::string message = write_with_file_size_limit(8192, path);
+  EXPECT_NE(message.find("cannot write " + path.string()), std::string::npos) << message;
+  EXPECT_NE(message.find(std::strerror(EFBIG)), std::string::npos) << message;
+  EXPECT_EQ(file_bytes(path), before);
+  EXPECT_EQ(entries(), 1u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, ImageIoFullDisk, ::testing::Values("png", "bmp", "tga", "jpg", "tif", "exr", "ppm"));
+
+TEST_F(ImageIo, FailedTextWriteKeepsTheOldFileAndLeavesNoTemporary) {
+  const fs::path path = dir_ / "report.json";
+  stage_text(path, "{}\n").commit();
+  const std::string message = write_with_file_size_limit(4096, path);
+  EXPECT_NE(message.find("cannot write " + path.string()), std::string::npos) << message;
+  EXPECT_NE(message.find(std::strerror(EFBIG)), std::string::npos) << message;
+  EXPECT_EQ(file_bytes(path), "{}\n");
+  EXPECT_EQ(entries(), 1u);
+}
+
+// Item 3: an uncommitted staged file goes with its owner, and a signal removes it (the handler runs in a
+// child that is stopped with SIGTERM while the file is staged).
+TEST_F(ImageIo, SigtermRemovesStagedFilesAndExitsWith143) {
+  const fs::path path = dir_ / "frame.png";
+  int fds[2];
+  ASSERT_EQ(::pipe(fds), 0);
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::close(fds[0]);
+    install_signal_cleanup();
+    StagedFile image = stage_image(path, test_image(8, 8));
+    StagedFile text = stage_text(dir_ / "report.json", "{}");
+    if (::write(fds[1], "s", 1) != 1) ::_exit(2);
+    ::pause();
+    ::_exit(0);
+  }
+  ::close(fds[1]);
+  char c = 0;
+  ASSERT_EQ(::read(fds[0], &c, 1), 1);
+  ::close(fds[0]);
+  EXPECT_EQ(entries(), 2u);  // the two temporary files
+  ::kill(pid, SIGTERM);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM);
+  EXPECT_EQ(entries(), 0u);
+}
+
+// Item 4: a replaced file keeps its permission bits; a new one gets the umask's.
+TEST_F(ImageIo, ReplacedFilesKeepTheirPermissionBits) {
+  const mode_t mask = ::umask(022);
+  ::umask(mask);
+  const auto mode_of = [](const fs::path& p) {
+    struct stat st {};
+    ::stat(p.c_str(), &st);
+    return st.st_mode & 07777;
+  };
+  const fs::path image = dir_ / "frame.png", text = dir_ / "report.json";
+  write_image(image, test_image(2, 2));
+  stage_text(text, "{}").commit();
+  EXPECT_EQ(mode_of(image), 0666u & ~mask);
+  EXPECT_EQ(mode_of(text), 0666u & ~mask);
+  for (const mode_t mode : {mode_t(0444), mode_t(0600), mode_t(0640)}) {
+    ::chmod(image.c_str(), mode);
+    ::chmod(text.c_str(), mode);
+    write_image(image, test_image(2, 2));
+    stage_text(text, "{}").commit();
+    EXPECT_EQ(mode_of(image), mode) << std::oct << mode;
+    EXPECT_EQ(mode_of(text), mode) << std::oct << mode;
+  }
+}
+
+// Item 17: TIFF and EXR carry no time stamp (OIIO wrote DateTime / capDate), so identical runs give
+// identical bytes whatever second they run in.
+TEST_F(ImageIo, TiffAndExrHoldNoTimeStamp) {
+  for (const std::string ext : {"tif", "exr"}) {
+    const fs::path a = dir_ / ("a." + ext), b = dir_ / ("b." + ext);
+    write_image(a, test_image(6, 5));
+    write_image(b, test_image(6, 5));
+    EXPECT_EQ(file_bytes(a), file_bytes(b)) << ext;
+    auto in = OIIO::ImageInput::open(a.string());
+    ASSERT_TRUE(in) << ext;
+    const OIIO::ParamValue* date = in->spec().find_attribute("DateTime");
+    EXPECT_TRUE(date == nullptr || date->get_string().empty())
+        << ext << " holds DateTime " << (date ? date->get_string() : "");
+  }
 }
 
 }  // namespace

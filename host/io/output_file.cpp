@@ -1,0 +1,157 @@
+// Staged output files (output_file.hpp): checked writes, rename into place, removal on failure or signal.
+#include "parashade/output_file.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <utility>
+
+#include "parashade/errors.hpp"
+
+namespace parashade {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The temporary files a signal must remove. The handler may only read what is published whole: a slot
+// is `busy` while its path is written and `live` once it may be unlinked.
+constexpr int kSlots = 16;
+constexpr std::size_t kPathMax = 4096;
+enum : int { kFree = 0, kBusy = 1, kLive = 2 };
+struct Slot {
+  std::atomic<int> state{kFree};
+  char path[kPathMax];
+};
+Slot g_slots[kSlots];
+
+int register_temporary(const fs::path& p) {
+  const std::string text = p.string();
+  if (text.size() >= kPathMax) return -1;
+  for (int i = 0; i < kSlots; ++i) {
+    int expected = kFree;
+    if (!g_slots[i].state.compare_exchange_strong(expected, kBusy)) continue;
+    std::memcpy(g_slots[i].path, text.c_str(), text.size() + 1);
+    g_slots[i].state.store(kLive, std::memory_order_release);
+    return i;
+  }
+  return -1;  // more than kSlots at once: not removed on a signal (never the case in parashade)
+}
+
+void unregister_temporary(int slot) {
+  if (slot >= 0) g_slots[slot].state.store(kFree, std::memory_order_release);
+}
+
+extern "C" void remove_temporaries_and_exit(int sig) {
+  for (Slot& s : g_slots)
+    if (s.state.load(std::memory_order_acquire) == kLive) ::unlink(s.path);
+  ::_exit(128 + sig);
+}
+
+std::string errno_text(int e) { return std::strerror(e); }
+
+}  // namespace
+
+StagedFile::StagedFile(fs::path destination) : destination_(std::move(destination)) {
+  static std::atomic<unsigned> counter{0};
+  const std::string name = "." + destination_.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                           std::to_string(counter++) + destination_.extension().string();
+  temporary_ = destination_.parent_path() / name;
+  slot_ = register_temporary(temporary_);
+}
+
+StagedFile::StagedFile(StagedFile&& o) noexcept
+    : destination_(std::move(o.destination_)), temporary_(std::move(o.temporary_)), fd_(std::exchange(o.fd_, -1)),
+      slot_(std::exchange(o.slot_, -1)), committed_(std::exchange(o.committed_, true)), error_(std::move(o.error_)) {}
+
+StagedFile::~StagedFile() {
+  if (!committed_) discard();
+}
+
+void StagedFile::discard() noexcept {
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
+  ::unlink(temporary_.c_str());
+  unregister_temporary(slot_);
+  slot_ = -1;
+}
+
+void StagedFile::fail(const std::string& why) {
+  if (error_.empty()) error_ = why.empty() ? std::string("write failed") : why;
+}
+
+int StagedFile::open_fd() {
+  fd_ = ::open(temporary_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd_ < 0) {
+    const fs::path dir = destination_.parent_path().empty() ? fs::path(".") : destination_.parent_path();
+    throw InputError("cannot write " + destination_.string() + ": cannot create a file in '" + dir.string() +
+                     "': " + errno_text(errno));
+  }
+  return fd_;
+}
+
+bool StagedFile::pwrite_all(const void* data, std::size_t size, std::size_t offset) {
+  const char* p = static_cast<const char*>(data);
+  while (size > 0) {
+    const ssize_t n = ::pwrite(fd_, p, size, off_t(offset));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      fail(n < 0 ? errno_text(errno) : "nothing written");
+      return false;
+    }
+    p += n;
+    offset += std::size_t(n);
+    size -= std::size_t(n);
+  }
+  return true;
+}
+
+bool StagedFile::close_fd() {
+  if (fd_ < 0) return error_.empty();
+  const int r = ::close(fd_);
+  fd_ = -1;
+  if (r != 0) fail(errno_text(errno));
+  return error_.empty();
+}
+
+void StagedFile::commit() {
+  close_fd();
+  if (error_.empty()) {
+    struct stat st;
+    if (::stat(destination_.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
+        ::chmod(temporary_.c_str(), st.st_mode & 07777) != 0)
+      fail("cannot keep the permissions of the file it replaces: " + errno_text(errno));
+  }
+  if (error_.empty() && ::rename(temporary_.c_str(), destination_.c_str()) != 0) fail(errno_text(errno));
+  if (!error_.empty()) {
+    discard();
+    committed_ = true;
+    throw InputError("cannot write " + destination_.string() + ": " + error_);
+  }
+  unregister_temporary(slot_);
+  slot_ = -1;
+  committed_ = true;
+}
+
+StagedFile stage_text(const fs::path& path, const std::string& text) {
+  StagedFile file(path);
+  file.open_fd();
+  file.pwrite_all(text.data(), text.size(), 0);
+  file.close_fd();
+  if (!file.error().empty()) throw InputError("cannot write " + path.string() + ": " + file.error());
+  return file;
+}
+
+void install_signal_cleanup() {
+  struct sigaction sa {};
+  sa.sa_handler = remove_temporaries_and_exit;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
+
+}  // namespace parashade
