@@ -10,6 +10,7 @@
 #include "parashade/device.hpp"
 #include "parashade/renderer.hpp"
 #include "parashade/scene.hpp"
+#include "test_support.hpp"
 
 namespace parashade::testing_support {
 
@@ -36,28 +37,13 @@ inline RenderOptions render_options(Method method, bool float_output, int tile) 
 // Orthographic camera on +z looking down -z, 1 world unit = 1 pixel, world (x, y) at screen
 // (x + W/2, H/2 - y); one directional light, one material.
 inline Scene pixel_scene(int width, int height) {
-  Scene s;
+  Scene s = ortho_scene(width, height);  // test_support.hpp: the same camera and material
   s.name = "test";
-  s.width = width;
-  s.height = height;
-  s.camera.projection = Projection::orthographic;
-  s.camera.position = {0.0f, 0.0f, 10.0f};
-  s.camera.target = {0.0f, 0.0f, 0.0f};
-  s.camera.ortho_height = float(height);
-  s.camera.near_plane = 1.0f;
-  s.camera.far_plane = 20.0f;
   s.background = {0.0f, 0.0f, 0.0f};
   s.ambient_light = {1.0f, 1.0f, 1.0f};
-  Light l;
-  l.direction = glm::normalize(glm::vec3(-0.3f, -0.4f, -1.0f));
-  l.color = {1.0f, 0.9f, 0.8f};
-  s.lights.push_back(l);
-  Material m;
-  m.ambient = {0.1f, 0.1f, 0.1f};
-  m.diffuse = {0.6f, 0.5f, 0.4f};
-  m.specular = {0.3f, 0.3f, 0.3f};
-  m.shininess = 20.0f;
-  s.materials.push_back(m);
+  s.lights[0].direction = glm::normalize(glm::vec3(-0.3f, -0.4f, -1.0f));
+  s.lights[0].color = {1.0f, 0.9f, 0.8f};
+  s.materials[0].shininess = 20.0f;
   return s;
 }
 
