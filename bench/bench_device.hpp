@@ -6,7 +6,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "kernels/constants.h"
+#include "parashade/kernels/constants.h"
 #include "parashade/device.hpp"
 
 namespace parashade {

@@ -36,7 +36,7 @@
 
 #include "parashade/setup.hpp"
 #include "parashade/shift_add_division.hpp"
-#include "kernels/constants.h"
+#include "parashade/kernels/constants.h"
 
 namespace parashade {
 namespace {

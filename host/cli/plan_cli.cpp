@@ -4,7 +4,7 @@
 
 #include "cli_args.hpp"
 #include "parashade/errors.hpp"
-#include "kernels/constants.h"
+#include "parashade/kernels/constants.h"
 
 namespace parashade::cli {
 namespace {

@@ -14,7 +14,7 @@
 #include "parashade/light_bounds.hpp"
 #include "parashade/light_bounds_lanes.hpp"
 #include "parashade/parallel.hpp"
-#include "kernels/triangle_record.h"
+#include "parashade/kernels/triangle_record.h"
 
 namespace parashade {
 

@@ -6,7 +6,7 @@
 
 #include "parashade/errors.hpp"
 #include "parashade/parallel.hpp"
-#include "kernels/constants.h"
+#include "parashade/kernels/constants.h"
 #include "parashade/unit_table.hpp"
 
 namespace parashade {

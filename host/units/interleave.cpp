@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "parashade/unit_table.hpp"
-#include "kernels/constants.h"
+#include "parashade/kernels/constants.h"
 
 namespace parashade {
 namespace {

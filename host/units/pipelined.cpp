@@ -3,7 +3,7 @@
 // table: spec, golden model, cost; error bound and source formula classic's (its registers hold the
 // same values).
 #include "parashade/unit_table.hpp"
-#include "kernels/constants.h"
+#include "parashade/kernels/constants.h"
 
 namespace parashade {
 namespace {

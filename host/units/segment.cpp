@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "parashade/unit_table.hpp"
-#include "kernels/constants.h"
+#include "parashade/kernels/constants.h"
 
 namespace parashade {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "parashade/errors.hpp"
 #include "parashade/unit_table.hpp"
-#include "kernels/constants.h"
+#include "parashade/kernels/constants.h"
 
 namespace parashade {
 namespace {

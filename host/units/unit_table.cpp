@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "parashade/errors.hpp"
-#include "kernels/constants.h"
+#include "parashade/kernels/constants.h"
 
 namespace parashade {
 

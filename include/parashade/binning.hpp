@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "kernels/triangle_record.h"
+#include "parashade/kernels/triangle_record.h"
 
 namespace parashade {
 

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "parashade/screen_geometry.hpp"
-#include "kernels/fixed_point.h"
-#include "kernels/triangle_record.h"
+#include "parashade/kernels/fixed_point.h"
+#include "parashade/kernels/triangle_record.h"
 
 namespace parashade {
 

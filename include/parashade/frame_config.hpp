@@ -15,7 +15,7 @@
 #include "parashade/planner.hpp"
 #include "parashade/specular_models.hpp"
 #include "parashade/units.hpp"
-#include "kernels/constants.h"
+#include "parashade/kernels/constants.h"
 
 namespace parashade {
 

@@ -16,8 +16,8 @@
 #include "parashade/scene.hpp"
 #include "parashade/screen_geometry.hpp"
 #include "parashade/triangle_choice.hpp"
-#include "kernels/sierpinski_leaf.h"
-#include "kernels/triangle_record.h"
+#include "parashade/kernels/sierpinski_leaf.h"
+#include "parashade/kernels/triangle_record.h"
 
 namespace parashade {
 

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "parashade/units.hpp"
-#include "kernels/fixed_point.h"
-#include "kernels/sierpinski_leaf.h"
+#include "parashade/kernels/fixed_point.h"
+#include "parashade/kernels/sierpinski_leaf.h"
 
 namespace parashade {
 

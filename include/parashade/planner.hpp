@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "parashade/units.hpp"
-#include "kernels/triangle_record.h"
+#include "parashade/kernels/triangle_record.h"
 
 namespace parashade {
 

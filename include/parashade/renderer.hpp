@@ -14,7 +14,7 @@
 #include "parashade/frame_stats.hpp"
 #include "parashade/image.hpp"
 #include "parashade/scene.hpp"
-#include "kernels/constants.h"
+#include "parashade/kernels/constants.h"
 
 namespace parashade {
 

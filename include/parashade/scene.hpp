@@ -10,7 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "parashade/mesh.hpp"
-#include "kernels/constants.h"
+#include "parashade/kernels/constants.h"
 
 namespace parashade {
 

@@ -22,7 +22,7 @@
 
 #include <glm/glm.hpp>
 
-#include "kernels/constants.h"
+#include "parashade/kernels/constants.h"
 
 namespace parashade {
 

@@ -11,8 +11,8 @@
 #include "parashade/method.hpp"
 #include "parashade/screen_geometry.hpp"
 #include "parashade/triangle_choice.hpp"
-#include "kernels/fixed_point.h"
-#include "kernels/triangle_record.h"
+#include "parashade/kernels/fixed_point.h"
+#include "parashade/kernels/triangle_record.h"
 
 namespace parashade {
 

@@ -8,9 +8,9 @@
 
 #include "parashade/screen_geometry.hpp"
 #include "parashade/units.hpp"
-#include "kernels/fixed_point.h"
-#include "kernels/sierpinski_leaf.h"
-#include "kernels/triangle_record.h"
+#include "parashade/kernels/fixed_point.h"
+#include "parashade/kernels/sierpinski_leaf.h"
+#include "parashade/kernels/triangle_record.h"
 
 namespace parashade {
 

@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <string>
 
-#include "kernels/span_division.h"
-#include "kernels/unit_cost.h"
+#include "parashade/kernels/span_division.h"
+#include "parashade/kernels/unit_cost.h"
 
 namespace parashade {
 

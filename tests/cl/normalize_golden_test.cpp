@@ -21,7 +21,7 @@
 
 #include "cl_fixture.hpp"
 #include "parashade/normalization.hpp"
-#include "kernels/constants.h"
+#include "parashade/kernels/constants.h"
 
 namespace parashade {
 namespace {
