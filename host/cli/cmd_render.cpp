@@ -10,6 +10,7 @@
 
 #include "cli_args.hpp"
 #include "commands.hpp"
+#include "device_option.hpp"
 #include "plan_cli.hpp"
 #include "progress.hpp"
 #include "tune_cache.hpp"
@@ -43,6 +44,7 @@ struct RenderArgs {
   PlanArgs plan;
   std::string tune_cache;
   std::string distribute, rank_partition;  // --distribute: MPI ranks (docs/distributed.md)
+  std::string device_origin = "--device";  // or PARASHADE_DEVICE (device_option.hpp)
   bool no_tuned = false, explicit_config = false, keep_going = false;  // explicit: --tile, --work-items, --cu or --partition given
 };
 
@@ -225,14 +227,14 @@ int run_render(const RenderArgs& a) {
     throw UsageError("--keep-going drops failing devices of a list (--device all, A,B or sub:NAME:N); " +
                      (a.device.empty() ? std::string("the default device") : "'" + a.device + "'") + " is one device");
   if (is_device_list(a.device) && !units_on_sub_devices)
-    return run_split_render(scene, options, {a.device, a.output, a.report, a.scene, a.frames, a.warmup, a.keep_going, a.quiet});
+    return run_split_render(scene, options, {a.device, a.device_origin, a.output, a.report, a.scene, a.frames, a.warmup, a.keep_going, a.quiet});
   SubDevices sub;  // with units_on_sub_devices: the parent (renders) and the sub-devices (run the units)
   std::vector<Device*> unit_devices;
   if (units_on_sub_devices) {
-    sub = for_option("--device", [&] { return open_sub_devices(a.device, SubDeviceContext::shared); });
+    sub = for_device(a.device_origin, [&] { return open_sub_devices(a.device, SubDeviceContext::shared); });
     for (const auto& d : sub.subs) unit_devices.push_back(d.get());
   }
-  auto device = units_on_sub_devices ? std::move(sub.parent) : open_device(a.device);
+  auto device = units_on_sub_devices ? std::move(sub.parent) : for_device(a.device_origin, [&] { return open_device(a.device); });
   const DeviceInfo& dev = device->info();
   nlohmann::json tuned = nullptr;
   if (!a.no_tuned && !a.explicit_config && !options.unit_path()) {
@@ -403,10 +405,10 @@ Command add_render_command(CLI::App& app) {
                   "default 4), recurrence[-diff][:exact|table|table-fixed][:R] (a sequential unit per span, re-anchored "
                   "every R pixels) (docs/phong-methods.md)")
       ->capture_default_str();
-  cmd->add_option("--device", a->device,
-                  "OpenCL device: index or name substring (see 'parashade devices'); 'all' or a comma list splits the "
-                  "frame across devices by measured speed; sub:NAME:N or sub:NAME:N1+N2 uses NAME's sub-devices (bands "
-                  "of the frame; with --cu, the units' depth pass on them)");
+  add_device_option(*cmd, a->device,
+                    "OpenCL device: index or name substring (see 'parashade devices'); 'all' or a comma list splits the "
+                    "frame across devices by measured speed; sub:NAME:N or sub:NAME:N1+N2 uses NAME's sub-devices (bands "
+                    "of the frame; with --cu, the units' depth pass on them)");
   cmd->add_option("--distribute", a->distribute,
                   "Under mpirun: the frame across the MPI ranks, sort-last (shares of the triangles by modeled cost, "
                   "depth keys composited) or sort-first (bands by measured speed); the image is the one-process "
@@ -463,6 +465,7 @@ Command add_render_command(CLI::App& app) {
   return {cmd, [a, cmd]() {
             a->explicit_config = cmd->count("--tile") + cmd->count("--work-items") + cmd->count("--cu") +
                                      cmd->count("--partition") > 0;
+            a->device_origin = device_from_environment(a->device);
             return run_render(*a);
           }};
 }

@@ -19,6 +19,7 @@
 
 #include "cli_args.hpp"
 #include "commands.hpp"
+#include "device_option.hpp"
 #include "parashade/distributed.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/geometry_stage.hpp"
@@ -41,6 +42,7 @@ std::string default_units() { return unit_specs(&UnitRow::scaling_sweep); }
 
 struct ScalingArgs {
   std::string scene, units = default_units(), arith = kDefaultArith, method = "gouraud", size, device, report;
+  std::string device_origin = "--device";  // or PARASHADE_DEVICE (device_option.hpp)
   int frames = 5, warmup = 1;
   bool float_output = false, markdown = false, quiet = false;
   bool mpi = false;  // under mpirun: configurations dealt across the ranks, rank 0 merges (docs/distributed.md)
@@ -184,7 +186,7 @@ int run_scaling(const ScalingArgs& a) {
   step([&] {
     scene = load_scene_at(a.scene, size, a.size);
     if (!a.report.empty() && rank == 0) check_report_destination(a.report);
-    device = open_device(a.device);
+    device = for_device(a.device_origin, [&] { return open_device(a.device); });
     // The exact reference, once for the scene: every configuration shades the same screen triangles.
     if (!a.quiet && rank == 0)
       std::cerr << "scaling " << scene.name << " (" << scene.width << "x" << scene.height << ", "
@@ -379,7 +381,7 @@ Command add_scaling_command(CLI::App& app) {
   cmd->add_option("--warmup", a->warmup,
                   "Untimed frames per configuration first (program build; the last gives clocks and error)")
       ->capture_default_str();
-  cmd->add_option("--device", a->device, "OpenCL device: index or name substring (see 'parashade devices')");
+  add_device_option(*cmd, a->device, "OpenCL device: index or name substring (see 'parashade devices')");
   cmd->add_option("--report", a->report, "Write a JSON report: every row, the device");
   cmd->add_flag("--float", a->float_output, "Error of the unclamped float values instead of the 8-bit image");
   cmd->add_flag("--markdown", a->markdown, "Print the table as Markdown");
@@ -387,7 +389,10 @@ Command add_scaling_command(CLI::App& app) {
                 "Under mpirun: deal the configurations across the ranks (configuration i on rank i mod N); rank 0 "
                 "writes the merged report and table (docs/distributed.md)");
   cmd->add_flag("-q,--quiet", a->quiet, "No progress lines");
-  return {cmd, [a]() { return run_scaling(*a); }};
+  return {cmd, [a]() {
+            a->device_origin = device_from_environment(a->device);
+            return run_scaling(*a);
+          }};
 }
 
 }  // namespace parashade::cli

@@ -9,6 +9,7 @@
 
 #include "cli_args.hpp"
 #include "commands.hpp"
+#include "device_option.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/renderer.hpp"
 #include "parashade/statistics.hpp"
@@ -19,6 +20,7 @@ namespace {
 
 struct TuneArgs {
   std::string scene, size, device, method = "gouraud", cache;
+  std::string device_origin = "--device";  // or PARASHADE_DEVICE (device_option.hpp)
   int budget_runs = 12, frames = 5;
   double budget_seconds = 0;
 };
@@ -69,7 +71,7 @@ int run_tune(const TuneArgs& a) {
   base.method = parse_method(a.method);
   const Scene scene = load_scene_at(a.scene, size, a.size);
   TuneCache cache(a.cache.empty() ? default_tune_cache() : std::filesystem::path(a.cache));
-  auto device = open_device(a.device);
+  auto device = for_device(a.device_origin, [&] { return open_device(a.device); });
   const DeviceInfo& dev = device->info();
   const TuneProblem problem{scene.name, scene.width, scene.height, method_name(base.method), "float"};
   std::printf("tuning %s (%dx%d, %s) on %s (driver %s); cache %s\n", scene.name.c_str(), scene.width, scene.height,
@@ -138,14 +140,17 @@ Command add_tune_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("tune", "Search tile size, work-items, planner strategy and U for a scene; cache the best");
   cmd->add_option("scene", a->scene, "Scene file (.json) or mesh")->required();
   cmd->add_option("--size", a->size, "Resolution WIDTHxHEIGHT, overriding the scene's");
-  cmd->add_option("--device", a->device, "OpenCL device: index or name substring");
+  add_device_option(*cmd, a->device, "OpenCL device: index or name substring");
   cmd->add_option("--method", a->method, "Shading method: flat, gouraud, phong")->capture_default_str();
   cmd->add_option("--budget-runs", a->budget_runs, "Configurations to measure in this run, the default included (cached ones are skipped)")
       ->capture_default_str();
   cmd->add_option("--budget-seconds", a->budget_seconds, "Stop starting new configurations after this many seconds (0: no limit)");
   cmd->add_option("--frames", a->frames, "Timed frames per configuration (median)")->capture_default_str();
   cmd->add_option("--cache", a->cache, "Tune cache file (default $PARASHADE_TUNE_CACHE or ~/.cache/parashade/tune.json)");
-  return {cmd, [a]() { return run_tune(*a); }};
+  return {cmd, [a]() {
+            a->device_origin = device_from_environment(a->device);
+            return run_tune(*a);
+          }};
 }
 
 }  // namespace parashade::cli

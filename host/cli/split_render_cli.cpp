@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_args.hpp"
+#include "device_option.hpp"
 #include "progress.hpp"
 
 #include "parashade/image.hpp"
@@ -17,7 +18,7 @@
 namespace parashade::cli {
 
 int run_split_render(const Scene& scene, const RenderOptions& options, const SplitRenderArgs& a) {
-  SplitRenderer renderer(for_option("--device", [&] { return open_devices(a.devices); }), options, a.keep_going);
+  SplitRenderer renderer(for_device(a.device_origin, [&] { return open_devices(a.devices); }), options, a.keep_going);
   std::string warning;
   const auto warn = [&] {
     if (!warning.empty()) std::cerr << "parashade: warning: " << warning;

@@ -9,7 +9,7 @@
 namespace parashade::cli {
 
 struct SplitRenderArgs {
-  std::string devices, output, report, scene_file;
+  std::string devices, device_origin, output, report, scene_file;  // device_origin: device_option.hpp
   int frames = 5, warmup = 1;
   bool keep_going = false, quiet = false;
 };
