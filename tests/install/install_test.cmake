@@ -65,3 +65,12 @@ if(NOT varies OR NOT CMAKE_MATCH_1 GREATER 5)  # levels of 255
   message(FATAL_ERROR "${image} is (nearly) one colour:\n${run_output}")
 endif()
 message(STATUS "install test: ${image} ok (${stddev})")
+
+# README's "Using parashade from another program" shows this consumer as it is (a code block: indented).
+file(READ ${SOURCE_DIR}/README.md readme)
+file(READ ${SOURCE_DIR}/tests/install/consumer/consumer.cpp consumer)
+string(REGEX REPLACE "\n([^\n])" "\n    \\1" consumer "${consumer}")
+string(FIND "${readme}" "    ${consumer}" at)
+if(at EQUAL -1)
+  message(FATAL_ERROR "README.md does not show tests/install/consumer/consumer.cpp as it is")
+endif()
