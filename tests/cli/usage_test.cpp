@@ -27,10 +27,12 @@ TEST(CliHelp, RenderHelpListsItsOptions) {
     EXPECT_NE(r.out.find(option), std::string::npos) << "render --help does not mention " << option << ":" << r;
 }
 
-TEST(CliHelp, VersionIsNameAndNumber) {
+TEST(CliHelp, VersionIsNameNumberAndCommit) {
   const RunResult r = run_parashade({"--version"});
   ASSERT_TRUE(succeeds(r));
-  EXPECT_TRUE(std::regex_match(r.out, std::regex(R"(parashade \d+\.\d+\.\d+\s*)"))) << r;
+  // The version, then the git commit it was configured from ("unknown" outside a checkout).
+  EXPECT_TRUE(std::regex_match(r.out, std::regex(R"(parashade \d+\.\d+\.\d+ \(git ([0-9a-f]{7,40}(-dirty)?|unknown)\)\s*)")))
+      << r;
 }
 
 TEST(CliUsage, NoCommand) {
