@@ -39,17 +39,25 @@ def load(path):
 
 def validator(name):
     """Draft 2020-12 validator for schemas/NAME.schema.json, its references (common.schema.json) resolved
-    from the folder."""
-    store = {}
+    from the folder: through `referencing` where jsonschema has it (4.18 and later), else RefResolver
+    (Debian bookworm's 4.10)."""
+    schemas = []
     for path in glob.glob(os.path.join(SCHEMAS, "*.schema.json")):
         s = load(path)
         jsonschema.Draft202012Validator.check_schema(s)
-        store[s["$id"]] = s
+        schemas.append(s)
     schema = load(os.path.join(SCHEMAS, name + ".schema.json"))
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", DeprecationWarning)  # RefResolver: the API python3-jsonschema 4.10 has
-        resolver = jsonschema.RefResolver.from_schema(schema, store=store)
-        return jsonschema.Draft202012Validator(schema, resolver=resolver)
+    try:
+        from referencing import Registry, Resource
+        from referencing.jsonschema import DRAFT202012
+    except ImportError:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", DeprecationWarning)
+            resolver = jsonschema.RefResolver.from_schema(schema, store={s["$id"]: s for s in schemas})
+            return jsonschema.Draft202012Validator(schema, resolver=resolver)
+    registry = Registry().with_resources(
+        (s["$id"], Resource.from_contents(s, default_specification=DRAFT202012)) for s in schemas)
+    return jsonschema.Draft202012Validator(schema, registry=registry)
 
 
 def errors(v, doc):
