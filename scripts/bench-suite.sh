@@ -51,7 +51,7 @@ step() {
     return 0
   fi
   DONE=$((DONE + 1))
-  log="$OUT/logs/$(printf %02d "$DONE")-$(echo "$name" | tr ' /' '__').log"
+  log="$OUT/logs/$(printf %02d "$DONE")-$(printf %s "$name" | tr -c 'A-Za-z0-9.-' '_').log"
   t0=$(date +%s.%N)
   if [ "$TERMINAL" = 1 ]; then printf '[%d/%d] %s ...\r' "$DONE" "$STEPS" "$name"; fi
   rc=0
@@ -68,8 +68,8 @@ step() {
       left=$(awk -v s="$STARTED" -v t="$t1" -v d="$DONE" -v n="$STEPS" \
         'BEGIN { printf ", about %.0f s left", (t - s) / d * (n - d) }')
     fi
-    awk -v a="$t0" -v b="$t1" -v i="$DONE" -v n="$STEPS" -v name="$name" -v left="$left" -v log="$log" \
-      'BEGIN { printf "bench-suite: [%d/%d] %s: %.1f s%s (log %s)\n", i, n, name, b - a, left, log }'
+    awk -v a="$t0" -v b="$t1" -v i="$DONE" -v n="$STEPS" -v name="$name" -v left="$left" -v file="$log" \
+      'BEGIN { printf "bench-suite: [%d/%d] %s: %.1f s%s (log %s)\n", i, n, name, b - a, left, file }'
   fi
 }
 
