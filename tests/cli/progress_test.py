@@ -51,7 +51,11 @@ def on_pipe(args):
 
 
 def main():
-    tmp = tempfile.mkdtemp(prefix="parashade-progress-")
+    with tempfile.TemporaryDirectory(prefix="parashade-progress-") as tmp:
+        return run_all(tmp)
+
+
+def run_all(tmp):
     scene = os.path.join(SOURCE, "scenes", "sphere.json")
     small = ["--size", "32x24"]
     commands = {

@@ -103,7 +103,11 @@ def validate_report(kind, path):
 
 
 def main():
-    tmp = tempfile.mkdtemp(prefix="parashade-schema-")
+    with tempfile.TemporaryDirectory(prefix="parashade-schema-") as tmp:
+        return run_all(tmp)
+
+
+def run_all(tmp):
     scene = os.path.join(SOURCE, "scenes", "sphere.json")
     out = lambda name: os.path.join(tmp, name)  # noqa: E731
     small = ["--size", "64x48"]
