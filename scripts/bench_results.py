@@ -1,5 +1,6 @@
 """Reading result files for report.py and claims.py: bench_llvmpipe / bench_frame JSON (Google Benchmark),
-`parashade scaling --report` JSON and scripts/peak_memory.py JSON. Each Google Benchmark case becomes one
+`parashade scaling --report` JSON and scripts/peak_memory.py JSON, told apart by their "schema" field
+(files without one by the keys they had before; docs/reports.md). Each Google Benchmark case becomes one
 row: {"peer", "scene", "size", "method", "name", counters...}, the median aggregate when the run had
 repetitions, else the single run."""
 import json
@@ -11,14 +12,39 @@ def load_json(path):
         return json.load(f)
 
 
-def kind(doc):
-    if "benchmarks" in doc and "context" in doc:
-        return "benchmark"
+# Result files this module reads, by their "schema" field (docs/reports.md): the kind before the "/"
+# and the versions it understands.
+SCHEMAS = {"parashade.scaling": ("scaling", {1}), "parashade.memory": ("memory", {1})}
+
+
+def legacy_kind(doc):
+    """Files written before reports carried "schema" (the committed docs/bench-report/results): the old
+    rule, by the keys each kind had. Only for files without a schema field."""
     if "rows" in doc and "speedup_note" in doc:
         return "scaling"
     if "rows" in doc and "command" in doc:
         return "memory"
     return "unknown"
+
+
+def kind(doc):
+    """"benchmark" (Google Benchmark's own format, known by its context), a kind from SCHEMAS, or
+    "unknown" (another parashade report, or a version this script does not know)."""
+    if not isinstance(doc, dict):
+        return "unknown"
+    if "benchmarks" in doc and "context" in doc:
+        return "benchmark"
+    schema = doc.get("schema")
+    if schema is None:
+        return legacy_kind(doc)
+    name, _, version = str(schema).partition("/")
+    if name not in SCHEMAS:
+        return "unknown"
+    k, versions = SCHEMAS[name]
+    if not version.isdigit() or int(version) not in versions:
+        raise ValueError(f"result schema {schema}: this script reads {name}/" +
+                         ",".join(str(v) for v in sorted(versions)))
+    return k
 
 
 def benchmark_rows(doc, aggregate="median"):

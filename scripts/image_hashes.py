@@ -88,7 +88,9 @@ def case_list(mesh_dir):
 
 def deterministic(report):
     """The report without timings, host load, device names or paths: what must not change."""
-    drop_keys = {"device", "devices", "host", "command", "time", "load", "scene_file", "output", "tuned", "image"}
+    drop_keys = {"device", "devices", "device_info", "host", "command", "time", "load", "scene_file", "output", "tuned", "image",
+                 # the report header (docs/reports.md): which build, when, from which command line
+                 "schema", "parashade", "created_utc", "command_line", "timing"}
 
     def strip(v):
         if isinstance(v, dict):

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Peak resident memory of whole `parashade render` processes (Gouraud, --no-error, 1920x1080 unless
 --size), one process per scene, measured by GNU time (%M, KiB). The process includes PoCL and its LLVM,
-the OpenCL buffers and the host's geometry. Writes JSON: {"rows": [{"scene", "width", "height",
-"triangles", "peak_rss_mib", "over_baseline_mib", "frame_ms"}], "baseline_mib", "command"}; the
+the OpenCL buffers and the host's geometry. Writes JSON: {"schema": "parashade.memory/1", "rows": [{"scene", "width",
+"height", "triangles", "peak_rss_mib", "over_baseline_mib", "frame_ms"}], "baseline_mib", "command"}; the
 baseline is the peak of `parashade devices` (the OpenCL runtime alone). The memory budget of the targets
 (2 x (frame buffers + mesh) + 64 MiB) is computed by bench_llvmpipe (memory_budget_mib) for the same scene.
 
@@ -69,7 +69,7 @@ def main():
         baseline = int(p.stderr.strip().splitlines()[-1]) / 1024.0 if p.returncode == 0 else None
     for r in rows:
         r["over_baseline_mib"] = r["peak_rss_mib"] - baseline if baseline is not None else None
-    out = {"command": " ".join(sys.argv), "baseline_mib": baseline,
+    out = {"schema": "parashade.memory/1", "command": " ".join(sys.argv), "baseline_mib": baseline,
            "baseline_note": "peak RSS of 'parashade devices' (OpenCL runtime, no frame)", "rows": rows}
     tmp_out = args.output + ".tmp"
     with open(tmp_out, "w") as f:

@@ -2,16 +2,48 @@
 // renderer checks, so the listing and the checks cannot disagree.
 #include <cstdio>
 
+#include "cli_args.hpp"
 #include "commands.hpp"
+#include "common_options.hpp"
 #include "parashade/combinations.hpp"
 
 namespace parashade::cli {
+namespace {
+
+// The table as data: the axes with their values, each refused pattern with the values it covers.
+nlohmann::json combinations_json() {
+  nlohmann::json axes = nlohmann::json::object();
+  for (int i = 0; i < kAxes; ++i) axes[axis_name(Axis(i))] = axis_values(Axis(i));
+  nlohmann::json refused = nlohmann::json::array();
+  for (const Refusal& r : refused_combinations()) {
+    nlohmann::json covers = nlohmann::json::object();
+    for (int i = 0; i < kAxes; ++i) {
+      const std::vector<std::string>& values = axis_values(Axis(i));
+      std::vector<std::string> in;
+      for (std::size_t v = 0; v < values.size(); ++v)
+        if (r.mask[i] >> v & 1u) in.push_back(values[v]);
+      if (in.size() != values.size()) covers[axis_name(Axis(i))] = in;  // an axis it does not restrict is left out
+    }
+    refused.push_back({{"values", covers}, {"reason", r.reason}});
+  }
+  return {{"axes", axes}, {"refused", refused}};
+}
+
+}  // namespace
 
 Command add_combinations_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "combinations", "List which methods, units, arithmetics, coverage rules, plans and device modes combine, and why "
                       "the others are refused");
-  return {cmd, []() {
+  auto report = std::make_shared<std::string>();
+  auto quiet = std::make_shared<bool>(false);
+  add_report_option(*cmd, *report, "the axes and every refused pattern with its reason");
+  add_quiet_flag(*cmd, *quiet);  // nothing to silence: combinations prints results only
+  return {cmd, [report]() {
+            if (!report->empty()) {
+              check_report_destination(*report);
+              write_report(*report, combinations_json(), "combinations");
+            }
             std::fputs(describe_combinations().c_str(), stdout);
             std::puts("\nOn the command line: method --method, unit --units, arith --arith, coverage --coverage, "
                       "division --div,\nnormalize --normalize, specular --specular, choice --triangle-choice, highlight "

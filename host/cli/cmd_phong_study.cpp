@@ -6,7 +6,9 @@
 #include <memory>
 #include <string>
 
+#include "cli_args.hpp"
 #include "commands.hpp"
+#include "common_options.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/phong_study.hpp"
 #include "parashade/report.hpp"
@@ -15,21 +17,17 @@ namespace parashade::cli {
 namespace {
 
 struct StudyArgs {
-  std::string json, markdown;
+  std::string report, markdown;
+  bool quiet = false;
 };
 
 int run(const StudyArgs& args) {
-  for (const std::string& path : {args.json, args.markdown}) {
-    if (path.empty()) continue;
-    const std::filesystem::path p(path), dir = p.parent_path().empty() ? "." : p.parent_path();
-    std::error_code ec;
-    if (!std::filesystem::is_directory(dir, ec))
-      throw InputError("cannot write '" + path + "': directory '" + dir.string() + "' does not exist");
-    if (std::filesystem::is_directory(p, ec)) throw InputError("cannot write '" + path + "': it is a directory");
-  }
+  for (const std::string& path : {args.report, args.markdown})
+    if (!path.empty()) check_report_destination(path);
+  check_distinct_files({{"--report", args.report}, {"-o", args.markdown}}, {});
   const PhongStudy study = phong_study();
   std::cout << study.markdown;
-  if (!args.json.empty()) write_text_atomically(args.json, study.report.dump(1) + "\n");
+  if (!args.report.empty()) write_report(args.report, study.report, "phong-study");
   if (!args.markdown.empty()) write_text_atomically(args.markdown, study.markdown);
   return study.nonfinite_spans ? int(ExitCode::internal) : 0;
 }
@@ -40,8 +38,11 @@ Command add_phong_study_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("phong-study",
                                  "Normalization methods, approximations and specular models of the Phong family against exact values, with the sources' claims");
   auto args = std::make_shared<StudyArgs>();
-  cmd->add_option("--json", args->json, "Write the measurements and claims (id, source figure, measured, verdict) as JSON");
   cmd->add_option("-o,--markdown", args->markdown, "Write the tables and the claims table as Markdown");
+  CLI::Option* report =
+      add_report_option(*cmd, args->report, "the measurements and claims: id, source figure, measured, verdict");
+  add_deprecated_spelling(*cmd, report, "--json", args->report);
+  add_quiet_flag(*cmd, args->quiet);  // nothing to silence: the study prints results only
   return {cmd, [args]() { return run(*args); }};
 }
 

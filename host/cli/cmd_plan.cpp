@@ -7,10 +7,12 @@
 
 #include "cli_args.hpp"
 #include "commands.hpp"
+#include "common_options.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/frame_pipeline.hpp"
 #include "parashade/planner.hpp"
 #include "parashade/report.hpp"
+#include "parashade/unit_table.hpp"
 #include "plan_cli.hpp"
 
 namespace parashade::cli {
@@ -19,7 +21,7 @@ namespace {
 struct PlanCommandArgs {
   std::string scene, size, units, report;
   int tile = TILE_DEFAULT;
-  bool per_unit = false;
+  bool per_unit = false, quiet = false;
   PlanArgs plan;
 };
 
@@ -54,7 +56,7 @@ int run_plan(const PlanCommandArgs& a) {
     const nlohmann::json report = {{"scene", scene.name}, {"scene_file", a.scene}, {"width", scene.width},
                                    {"height", scene.height}, {"screen_triangles", n}, {"bin_entries", frame.bin_entries()},
                                    {"unit", unit_name(unit)}, {"plans", plans}};
-    write_text_atomically(a.report, report.dump(2) + "\n");
+    write_report(a.report, report, "plan");
   }
   return 0;
 }
@@ -65,14 +67,17 @@ Command add_plan_command(CLI::App& app) {
   auto a = std::make_shared<PlanCommandArgs>();
   auto* cmd = app.add_subcommand("plan", "Print the planner's per-unit load for a scene (modeled clocks), without rendering");
   cmd->add_option("scene", a->scene, "Scene file (.json) or mesh (.obj .off .ply .stl)")->required();
-  cmd->add_option("--size", a->size, "Resolution WIDTHxHEIGHT, overriding the scene's");
+  add_size_option(*cmd, a->size);
   cmd->add_option("--tile", a->tile, "Screen tile size: " + tile_sizes_text())
       ->capture_default_str()
       ->check(CLI::IsMember(tile_sizes()));
-  cmd->add_option("--units", a->units, "The modeled unit whose clocks are the cost (as render --units); default classic");
-  cmd->add_option("--report", a->report, "Write the plans as JSON");
+  cmd->add_option("--units", a->units,
+                  "The modeled unit whose clocks are the cost, as render --units takes it: " + unit_specs_help() +
+                      "; default classic");
+  add_report_option(*cmd, a->report, "the plans");
   cmd->add_flag("--per-unit", a->per_unit, "Print every unit's load");
   add_plan_options(*cmd, a->plan, true);
+  add_quiet_flag(*cmd, a->quiet);  // nothing to silence: plan prints results only
   return {cmd, [a]() { return run_plan(*a); }};
 }
 

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_args.hpp"
+#include "common_options.hpp"
 #include "commands.hpp"
 #include "device_option.hpp"
 #include "plan_cli.hpp"
@@ -27,6 +28,7 @@
 #include "parashade/reference.hpp"
 #include "parashade/renderer.hpp"
 #include "parashade/report.hpp"
+#include "parashade/report_header.hpp"
 #include "parashade/scene.hpp"
 #include "parashade/statistics.hpp"
 #include "parashade/unit_table.hpp"
@@ -261,10 +263,12 @@ int run_render(const RenderArgs& a) {
     progress.step(i + 1);
   }
   std::vector<FrameTimings> timings;
+  std::vector<double> frame_samples_ms;
   const Frame* last = nullptr;
   for (int i = 0; i < a.frames; ++i) {
     last = &renderer.render(scene);
     timings.push_back(last->timings);
+    frame_samples_ms.push_back(last->timings.total_ms);
     progress.step(a.warmup + i + 1);
   }
   const Frame& frame = *last;
@@ -300,6 +304,7 @@ int run_render(const RenderArgs& a) {
       {"frame_ms_note", "median of " + std::to_string(a.frames) + " frames after " + std::to_string(a.warmup) +
                             " warm-up frame(s); whole frame: geometry, setup, binning, kernel, read-back"},
       {"stages_ms", to_json(med)},
+      {"timing", timing_json(frame_samples_ms, a.warmup)},
       {"mpixel_per_s", pixels / (med.total_ms * 1e3)},
       {"mtriangle_per_s", double(frame.stats.geometry.triangles_in) / (med.total_ms * 1e3)},
       {"stats", to_json(frame.stats)},
@@ -324,7 +329,7 @@ int run_render(const RenderArgs& a) {
     report["plan"]["mapping"] = unit_mapping_json(frame.stats, med);
   }
   if (!a.report.empty()) {
-    StagedFile staged_report = stage_text(a.report, report.dump(2) + "\n");
+    StagedFile staged_report = stage_text(a.report, report_text(report, "render"));
     staged_image.commit();
     staged_report.commit();
   } else {
@@ -418,10 +423,8 @@ Command add_render_command(CLI::App& app) {
                   "dynamic (batches of --batch)");
   cmd->add_flag("--keep-going", a->keep_going,
                 "With a device list (bands): drop a failing device (named) and go on with the others");
-  cmd->add_option("--size", a->size,
-                  "Resolution WIDTHxHEIGHT (at most " + std::to_string(kMaxResolution) + "x" +
-                      std::to_string(kMaxResolution) + "), overriding the scene's");
-  cmd->add_option("--report", a->report, "Write a JSON report (timings, stages, error figures)");
+  add_size_option(*cmd, a->size);
+  add_report_option(*cmd, a->report, "timings, stages, error figures");
   cmd->add_option("--frames", a->frames,
                   "Timed frames (at most " + std::to_string(kMaxFrames) + "); the median is reported; on a terminal "
                   "a progress line [i/N] shows the time left")
@@ -437,7 +440,8 @@ Command add_render_command(CLI::App& app) {
                       " per compute unit)")
       ->capture_default_str();
   cmd->add_option("--units", a->units,
-                  "Gouraud through a modeled shading unit: " + unit_specs_help() + "; reports modeled clocks");
+                  "Shade the spans through a modeled shading unit (Gouraud's intensities, or Phong's normal "
+                  "components with --method phong): " + unit_specs_help() + "; reports modeled clocks");
   cmd->add_option("--arith", a->arith, "Span register arithmetic: float, fixed (= fixed:12.12) or fixed:I.F (I >= 9, I + F <= 32)")
       ->capture_default_str();
   cmd->add_option("--div", a->division,
@@ -461,7 +465,7 @@ Command add_render_command(CLI::App& app) {
                 "combined:*: skip the specular term per triangle and light where no highlight can fall ([Dembitsky 2025, software/hardware rendering] ch. 3)");
   cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
   cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");
-  cmd->add_flag("-q,--quiet", a->quiet, "No progress lines");
+  add_quiet_flag(*cmd, a->quiet);
   return {cmd, [a, cmd]() {
             a->explicit_config = cmd->count("--tile") + cmd->count("--work-items") + cmd->count("--cu") +
                                      cmd->count("--partition") > 0;

@@ -20,6 +20,8 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "device_option.hpp"
+#include "common_options.hpp"
+#include "progress.hpp"
 #include "parashade/distributed.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/geometry_stage.hpp"
@@ -27,6 +29,7 @@
 #include "parashade/reference.hpp"
 #include "parashade/renderer.hpp"
 #include "parashade/report.hpp"
+#include "parashade/report_header.hpp"
 #include "parashade/scene.hpp"
 #include "parashade/statistics.hpp"
 #include "parashade/unit_table.hpp"
@@ -214,13 +217,15 @@ int run_scaling(const ScalingArgs& a) {
   // the last warm-up frame gives the modeled clocks and the error (the units are deterministic).
   const std::size_t total = configs.size();
   const auto mine = [&](std::size_t i) { return int(i % std::size_t(ranks)) == rank; };
+  std::size_t my_configs = 0;
+  for (std::size_t i = 0; i < total; ++i) my_configs += mine(i);
+  // [i/N] over this rank's frames, warm-up and timed; rank 0's only (the ranks share a terminal).
+  FrameProgress progress(int(my_configs) * (a.warmup + a.frames), a.quiet || rank != 0);
+  int frames_done = 0;
   step([&] {
   for (std::size_t i = 0; i < total; ++i) {
     if (!mine(i)) continue;
     Config& c = configs[i];
-    if (!a.quiet)
-      std::cerr << "[" << i + 1 << "/" << total << "] " << c.name() << " " << arith_name(c.arith)
-                << ": warm-up, modeled clocks, error ...\n";
     RenderOptions options;
     options.method = method;
     options.float_output = a.float_output;
@@ -228,7 +233,10 @@ int run_scaling(const ScalingArgs& a) {
     options.arith = c.arith;
     c.renderer = std::make_unique<Renderer>(*device, options);
     const Frame* f = nullptr;
-    for (int w = 0; w < a.warmup; ++w) f = &c.renderer->render(scene);
+    for (int w = 0; w < a.warmup; ++w) {
+      f = &c.renderer->render(scene);
+      progress.step(++frames_done);
+    }
     c.clocks = f->stats.clocks;
     c.geometry = f->stats.geometry;
     c.ideal = compare_to_reference(f->image, ref.covered, ref.ideal, std::string("ideal ") + method_name(method));
@@ -240,14 +248,13 @@ int run_scaling(const ScalingArgs& a) {
   // Timed frames round-robin, each round starting one configuration later: on a noisy shared machine a
   // slow spell then falls on every configuration alike instead of on whichever ran during it.
   for (int round = 0; round < a.frames; ++round) {
-    if (!a.quiet)
-      std::cerr << "timing round " << round + 1 << "/" << a.frames << " (" << total << " configurations) ...\n";
     for (std::size_t k = 0; k < total; ++k) {
       if (!mine((k + std::size_t(round)) % total)) continue;
       Config& c = configs[(k + std::size_t(round)) % total];
       const Frame& f = c.renderer->render(scene);
       c.total_ms.push_back(f.timings.total_ms);
       c.kernel_ms.push_back(f.timings.kernel_ms);
+      progress.step(++frames_done);
     }
   }
   });
@@ -299,6 +306,7 @@ int run_scaling(const ScalingArgs& a) {
                     {"frame_ms", c.frame_ms},
                     {"frame_ms_min", c.frame_min_ms},
                     {"frame_ms_samples", c.total_ms},
+                    {"timing", timing_json(c.total_ms, a.warmup)},
                     {"measured_speedup", optional_number(measured_speedup(c))},
                     {"kernel_ms", c.kernel_med_ms},
                     {"kernel_ms_min", c.kernel_min_ms},
@@ -307,7 +315,7 @@ int run_scaling(const ScalingArgs& a) {
                     {"error", {{"implementation", c.ideal_json}, {"method", c.exact_json}}}});
   }
   const GeometryStats& geo = configs.front().geometry;
-  const nlohmann::json report = {
+  nlohmann::json report = {
       {"scene", scene.name},
       {"scene_file", a.scene},
       {"device", to_json(dev)},
@@ -326,7 +334,7 @@ int run_scaling(const ScalingArgs& a) {
                        "kernel_ms); null when classic is not in the list"},
       {"rows", rows}};
   step([&] {
-    if (!a.report.empty()) write_text_atomically(a.report, report.dump(2) + "\n");
+    if (!a.report.empty()) write_report(a.report, report, "scaling");
   });
 
   std::printf("%s: %dx%d, %llu triangles (%llu after culling and clipping), %s through modeled shading units\n",
@@ -373,22 +381,20 @@ Command add_scaling_command(CLI::App& app) {
   cmd->add_option("--arith", a->arith,
                   "Comma-separated span arithmetics: float, fixed (= fixed:12.12), fixed:I.F (I >= 9, I + F <= 32)")
       ->capture_default_str();
-  cmd->add_option("--size", a->size,
-                  "Resolution WIDTHxHEIGHT (at most " + std::to_string(kMaxResolution) + "x" +
-                      std::to_string(kMaxResolution) + "), overriding the scene's");
+  add_size_option(*cmd, a->size);
   cmd->add_option("--frames", a->frames, "Timed frames per configuration (round-robin); the median is reported")
       ->capture_default_str();
   cmd->add_option("--warmup", a->warmup,
                   "Untimed frames per configuration first (program build; the last gives clocks and error)")
       ->capture_default_str();
   add_device_option(*cmd, a->device, "OpenCL device: index or name substring (see 'parashade devices')");
-  cmd->add_option("--report", a->report, "Write a JSON report: every row, the device");
+  add_report_option(*cmd, a->report, "every row with its frame samples, the device");
   cmd->add_flag("--float", a->float_output, "Error of the unclamped float values instead of the 8-bit image");
   cmd->add_flag("--markdown", a->markdown, "Print the table as Markdown");
   cmd->add_flag("--mpi", a->mpi,
                 "Under mpirun: deal the configurations across the ranks (configuration i on rank i mod N); rank 0 "
                 "writes the merged report and table (docs/distributed.md)");
-  cmd->add_flag("-q,--quiet", a->quiet, "No progress lines");
+  add_quiet_flag(*cmd, a->quiet);
   return {cmd, [a]() {
             a->device_origin = device_from_environment(a->device);
             return run_scaling(*a);

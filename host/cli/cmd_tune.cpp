@@ -10,8 +10,12 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "device_option.hpp"
+#include "common_options.hpp"
+#include "progress.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/renderer.hpp"
+#include "parashade/report.hpp"
+#include "parashade/report_header.hpp"
 #include "parashade/statistics.hpp"
 #include "tune_cache.hpp"
 
@@ -19,8 +23,9 @@ namespace parashade::cli {
 namespace {
 
 struct TuneArgs {
-  std::string scene, size, device, method = "gouraud", cache;
+  std::string scene, size, device, method = "gouraud", cache, report;
   std::string device_origin = "--device";  // or PARASHADE_DEVICE (device_option.hpp)
+  bool quiet = false;
   int budget_runs = 12, frames = 5;
   double budget_seconds = 0;
 };
@@ -69,6 +74,7 @@ int run_tune(const TuneArgs& a) {
   const auto size = parse_size(a.size);
   RenderOptions base;
   base.method = parse_method(a.method);
+  if (!a.report.empty()) check_report_destination(a.report);
   const Scene scene = load_scene_at(a.scene, size, a.size);
   TuneCache cache(a.cache.empty() ? default_tune_cache() : std::filesystem::path(a.cache));
   auto device = for_device(a.device_origin, [&] { return open_device(a.device); });
@@ -82,7 +88,10 @@ int run_tune(const TuneArgs& a) {
   std::vector<std::uint8_t> reference;
   double default_ms = 0;
   int measured = 0, skipped = 0;
-  for (const RenderOptions& o : candidates(base, std::max(1, dev.compute_units))) {
+  nlohmann::json tried = nlohmann::json::array();  // the report's rows
+  const std::vector<RenderOptions> space = candidates(base, std::max(1, dev.compute_units));
+  FrameProgress progress(int(std::min<std::size_t>(space.size(), std::size_t(a.budget_runs))), a.quiet);
+  for (const RenderOptions& o : space) {
     const bool is_default = reference.empty();
     const nlohmann::json params = tuned_params(o);
     if (!is_default && cache.has(dev, problem, params)) {
@@ -107,14 +116,29 @@ int run_tune(const TuneArgs& a) {
       verified = std::equal(reference.begin(), reference.end(), f->image.rgba.begin(), f->image.rgba.end());
     }
     ++measured;
+    progress.step(measured);
+    tried.push_back({{"params", params}, {"timing", timing_json(times, 1)}, {"verified", verified}, {"default", is_default}});
     if (!is_default || !cache.has(dev, problem, params)) cache.add(dev, problem, params, times, ms, verified);
     std::printf("%-80s %9.3f ms%s\n", params.dump().c_str(), ms,
                 verified ? "" : "  IMAGE DIFFERS from the default's: not eligible");
   }
   const auto best = cache.best(dev, problem);
+  nlohmann::json report = {{"scene", scene.name},   {"scene_file", a.scene}, {"width", scene.width},
+                           {"height", scene.height}, {"method", method_name(base.method)},
+                           {"device", to_json(dev)}, {"cache", cache.path().string()},
+                           {"measured", tried},      {"skipped_cached", skipped},
+                           {"best", best ? nlohmann::json{{"params", (*best)["params"]}, {"objective_ms", (*best)["objective"]}}
+                                         : nlohmann::json(nullptr)},
+                           {"confirmation", nullptr}};
+  const auto write = [&] {
+    if (!a.report.empty()) write_report(a.report, report, "tune");
+  };
   std::printf("measured %d configuration(s), %d already in the cache; default %.3f ms (this run)\n", measured, skipped,
               default_ms);
-  if (!best) return 0;
+  if (!best) {
+    write();
+    return 0;
+  }
   std::printf("best in cache: %s at %.3f ms when it was tried\n", (*best)["params"].dump().c_str(),
               (*best)["objective"].get<double>());
   // The speed-up, measured now: default and best alternately (the machine's load drifts), medians.
@@ -130,6 +154,9 @@ int run_tune(const TuneArgs& a) {
   }
   std::printf("confirmation (%zu alternating frames each): default %.3f ms, tuned %.3f ms: speed-up %.2fx\n",
               t_plain.size(), median(t_plain), median(t_fast), median(t_plain) / median(t_fast));
+  report["confirmation"] = {{"default", timing_json(t_plain, 1)}, {"tuned", timing_json(t_fast, 1)},
+                            {"speedup", median(t_plain) / median(t_fast)}};
+  write();
   return 0;
 }
 
@@ -139,7 +166,7 @@ Command add_tune_command(CLI::App& app) {
   auto a = std::make_shared<TuneArgs>();
   auto* cmd = app.add_subcommand("tune", "Search tile size, work-items, planner strategy and U for a scene; cache the best");
   cmd->add_option("scene", a->scene, "Scene file (.json) or mesh")->required();
-  cmd->add_option("--size", a->size, "Resolution WIDTHxHEIGHT, overriding the scene's");
+  add_size_option(*cmd, a->size);
   add_device_option(*cmd, a->device, "OpenCL device: index or name substring");
   cmd->add_option("--method", a->method, "Shading method: flat, gouraud, phong")->capture_default_str();
   cmd->add_option("--budget-runs", a->budget_runs, "Configurations to measure in this run, the default included (cached ones are skipped)")
@@ -147,6 +174,9 @@ Command add_tune_command(CLI::App& app) {
   cmd->add_option("--budget-seconds", a->budget_seconds, "Stop starting new configurations after this many seconds (0: no limit)");
   cmd->add_option("--frames", a->frames, "Timed frames per configuration (median)")->capture_default_str();
   cmd->add_option("--cache", a->cache, "Tune cache file (default $PARASHADE_TUNE_CACHE or ~/.cache/parashade/tune.json)");
+  add_report_option(*cmd, a->report, "every configuration measured in this run with its frame samples, the best, "
+                                     "the confirmation");
+  add_quiet_flag(*cmd, a->quiet);
   return {cmd, [a]() {
             a->device_origin = device_from_environment(a->device);
             return run_tune(*a);

@@ -12,6 +12,7 @@
 
 #include "cli_args.hpp"
 #include "commands.hpp"
+#include "common_options.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/report.hpp"
 #include "parashade/unit_error.hpp"
@@ -28,7 +29,8 @@ struct UnitErrorArgs {
   int trials = 2000;
   std::uint64_t seed = 1;
   int formula_bits = 0;
-  std::string json;
+  std::string report;
+  bool quiet = false;
 };
 
 constexpr int kMaxLength = 65536;
@@ -57,18 +59,13 @@ int run(const UnitErrorArgs& args) {
   o.trials = args.trials;
   o.seed = args.seed;
   o.formula_bits = args.formula_bits;
-  if (!args.json.empty()) {  // checked before the table is printed: a failed run prints nothing
-    const std::filesystem::path json(args.json), dir = json.parent_path().empty() ? "." : json.parent_path();
-    std::error_code ec;
-    if (!std::filesystem::is_directory(dir, ec))
-      throw InputError("cannot write '" + args.json + "': directory '" + dir.string() + "' does not exist");
-    if (std::filesystem::is_directory(json, ec)) throw InputError("cannot write '" + args.json + "': it is a directory");
-  }
+  // checked before the table is printed: a failed run prints nothing
+  if (!args.report.empty()) check_report_destination(args.report);
   std::vector<UnitErrorStudy> studies;
   for (const UnitConfig& u : units) studies.push_back(study_unit_error(u, a, o));
   const UnitErrorReport report = unit_error_report(studies, a, o);
   std::cout << report.text;
-  if (!args.json.empty()) write_text_atomically(args.json, report.json.dump(1) + "\n");
+  if (!args.report.empty()) write_report(args.report, report.json, "unit-error");
   return 0;
 }
 
@@ -91,7 +88,9 @@ Command add_unit_error_command(CLI::App& app) {
   cmd->add_option("--formula-bits", args->formula_bits,
                   "V for the source's formulas (default: V = F); e.g. F = V + 1 tests a pair with one extra bit")
       ->check(CLI::Range(1, 31));
-  cmd->add_option("--json", args->json, "Also write the results (per pixel offset too) to this JSON file");
+  CLI::Option* report = add_report_option(*cmd, args->report, "the results, per pixel offset too");
+  add_deprecated_spelling(*cmd, report, "--json", args->report);
+  add_quiet_flag(*cmd, args->quiet);  // nothing to silence: the study prints results only
   return {cmd, [args]() { return run(*args); }};
 }
 

@@ -7,6 +7,7 @@
 
 #include "cli_args.hpp"
 #include "commands.hpp"
+#include "common_options.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/report.hpp"
 #include "parashade/test_vectors.hpp"
@@ -20,7 +21,8 @@ struct VectorsArgs {
   std::string arith = "fixed:12.12";
   int spans = 200;
   std::uint64_t seed = 1;
-  std::string out;
+  std::string out, report;
+  bool quiet = false;
 };
 
 int run(const VectorsArgs& args) {
@@ -31,8 +33,17 @@ int run(const VectorsArgs& args) {
   const Arithmetic a = parse_arith(args.arith);
   if (!a.fixed) throw UsageError("--arith '" + args.arith + "': test vectors need fixed-point registers, fixed:I.F");
   check_report_destination(args.out);  // before the work: a missing folder stops the run
-  const std::string text = test_vectors_text(unit, a, test_vector_spans(unit, a, args.spans, args.seed), args.seed);
+  if (!args.report.empty()) check_report_destination(args.report);
+  check_distinct_files({{"-o", args.out}, {"--report", args.report}}, {});
+  const std::vector<SpanLoad> spans = test_vector_spans(unit, a, args.spans, args.seed);
+  const std::string text = test_vectors_text(unit, a, spans, args.seed);
   write_text_atomically(args.out, text);
+  if (!args.report.empty())
+    write_report(args.report,
+                 {{"unit", unit_name(unit)}, {"arith", arith_name(a)}, {"seed", args.seed},
+                  {"random_spans", args.spans}, {"spans", spans.size()}, {"vectors_file", args.out},
+                  {"vectors_bytes", text.size()}},
+                 "vectors");
   return 0;
 }
 
@@ -51,6 +62,8 @@ Command add_vectors_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Seed of the random spans")->capture_default_str();
   cmd->add_option("-o,--output", args->out, "The vectors file (written whole or not at all)")->required();
+  add_report_option(*cmd, args->report, "the unit, arithmetic, seed and span count of the vectors");
+  add_quiet_flag(*cmd, args->quiet);  // nothing to silence: vectors prints nothing but errors
   return {cmd, [args]() { return run(*args); }};
 }
 

@@ -9,10 +9,12 @@
 #include "parashade/errors.hpp"
 #include "parashade/output_file.hpp"
 #include "parashade/version.hpp"
+#include "parashade/report_header.hpp"
 
 int main(int argc, char** argv) {
   using namespace parashade;
   install_signal_cleanup();  // SIGINT/SIGTERM: no temporary output file left behind, exit 128 + signal
+  set_report_command_line(argc, argv);  // every report names it
   CLI::App app{"parashade — parallel Gouraud and Phong shading units, emulated in OpenCL and measured"};
   app.set_version_flag("--version", std::string("parashade ") + version + " (git " + git_hash + ")");
   // At most one command; none is reported below, so that an unknown word is named ("not expected: X")

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "cli_args.hpp"
+#include "common_options.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/kernels/constants.h"
 
@@ -25,7 +26,8 @@ void add_plan_options(CLI::App& cmd, PlanArgs& a, bool lists) {
   cmd.add_option("--cu", a.units,
                  lists ? "Modeled shading units U, or a list (1,2,4,8); default 1"
                        : "Shade the frame by U modeled units from the planner's work lists (docs/planner.md); the image "
-                         "is unchanged");
+                         "is unchanged")
+      ->check(count_list_validator(MAX_MODELED_UNITS, lists));
   cmd.add_option("--partition", a.partition,
                  std::string("Planner strategy: round-robin, lpt (cost-balanced), tiles (screen tiles by cost), dynamic "
                              "(batches from a shared counter)") +

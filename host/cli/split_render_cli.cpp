@@ -7,18 +7,23 @@
 
 #include "cli_args.hpp"
 #include "device_option.hpp"
+#include "common_options.hpp"
 #include "progress.hpp"
 
 #include "parashade/image.hpp"
 #include "parashade/output_file.hpp"
 #include "parashade/report.hpp"
+#include "parashade/report_header.hpp"
 #include "parashade/split_renderer.hpp"
 #include "parashade/statistics.hpp"
 
 namespace parashade::cli {
 
 int run_split_render(const Scene& scene, const RenderOptions& options, const SplitRenderArgs& a) {
-  SplitRenderer renderer(for_device(a.device_origin, [&] { return open_devices(a.devices); }), options, a.keep_going);
+  auto devices = for_device(a.device_origin, [&] { return open_devices(a.devices); });
+  nlohmann::json device_info = nlohmann::json::array();
+  for (const auto& d : devices) device_info.push_back(to_json(d->info()));
+  SplitRenderer renderer(std::move(devices), options, a.keep_going);
   std::string warning;
   const auto warn = [&] {
     if (!warning.empty()) std::cerr << "parashade: warning: " << warning;
@@ -48,8 +53,10 @@ int run_split_render(const Scene& scene, const RenderOptions& options, const Spl
     const nlohmann::json report = {{"scene", scene.name},   {"scene_file", a.scene_file}, {"image", a.output},
                                    {"width", scene.width},  {"height", scene.height},     {"frame_ms", ms},
                                    {"frame_ms_note", "median of " + std::to_string(a.frames) + " split frames"},
+                                   {"timing", timing_json(times, a.warmup)},
+                                   {"device_info", device_info},
                                    {"devices", shares}};
-    StagedFile staged_report = stage_text(a.report, report.dump(2) + "\n");
+    StagedFile staged_report = stage_text(a.report, report_text(report, "render-split"));
     staged_image.commit();
     staged_report.commit();
   } else {

@@ -14,6 +14,7 @@
 #include "parashade/errors.hpp"
 #include "parashade/frame_pipeline.hpp"
 #include "parashade/report.hpp"
+#include "parashade/report_header.hpp"
 #include "parashade/setup.hpp"
 #include "parashade/statistics.hpp"
 // kernels/plan_key.h's PLAN_NO_KEY (that header is OpenCL C).
@@ -419,6 +420,7 @@ int run(MpiSession& mpi, const DistributedRender& job) {
         {"frame_ms_note", "median of " + std::to_string(job.frames) + " frames after " + std::to_string(job.warmup) +
                               " warm-up frame(s), rank 0's clock from a barrier before the frame to one after the "
                               "composite; a loaded shared 2-core machine: compare ratios within one run"},
+        {"timing", timing_json(frame_ms, job.warmup)},
         {"per_rank", per_rank},
         {"imbalance", {{"render_ms", imbalance(render)}, {"prepare_ms", imbalance(prepare)},
                        {"rank_frame_ms", imbalance(rankframe)}}},
@@ -433,6 +435,7 @@ int run(MpiSession& mpi, const DistributedRender& job) {
     } else {
       report["composite"] = "MPI_Gatherv of the bands to rank 0";
     }
+    stamp_report(report, "render-distributed");
     write_image(job.output, image);
     if (!job.report.empty()) {
       try {

@@ -1,6 +1,9 @@
 // `parashade devices` and --device: the listing is valid JSON with at least one device (the tests run
 // with PoCL), the table shows the same devices, and a device that is not there is exit 4 with the
 // available ones listed.
+#include <unistd.h>
+
+#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -12,12 +15,36 @@ namespace {
 
 using namespace testing_support;
 
+// devices --report: the versioned report's "devices".
 nlohmann::json device_list() {
-  const RunResult r = run_parashade({"devices", "--json"});
+  // Not a TempDir: a test's fixture holds one of the same name, which a second one would remove.
+  static int serial = 0;
+  const std::filesystem::path file = std::filesystem::temp_directory_path() /
+                                     ("parashade_devices_" + std::to_string(::getpid()) + "_" + std::to_string(serial++) + ".json");
+  const RunResult r = run_parashade({"devices", "--report", file.string()});
   EXPECT_TRUE(succeeds(r));
-  nlohmann::json list = nlohmann::json::parse(r.out, nullptr, /*allow_exceptions=*/false);
-  EXPECT_TRUE(list.is_array()) << "devices --json is not a JSON array:" << r;
+  nlohmann::json report;
+  {
+    std::ifstream in(file);
+    report = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  }
+  std::error_code ignored;
+  std::filesystem::remove(file, ignored);
+  EXPECT_EQ(report.value("schema", ""), "parashade.devices/1") << r;
+  const nlohmann::json list = report.is_object() ? report.value("devices", nlohmann::json()) : nlohmann::json();
+  EXPECT_TRUE(list.is_array()) << "devices --report has no \"devices\" array:" << r;
   return list.is_array() ? list : nlohmann::json::array();
+}
+
+// The deprecated --json still prints the bare array, with a warning naming --report on stderr.
+TEST(CliDevices, DeprecatedJsonFlagWarnsAndPrintsTheArray) {
+  const RunResult r = run_parashade({"devices", "--json"});
+  ASSERT_TRUE(succeeds(r));
+  const nlohmann::json list = nlohmann::json::parse(r.out, nullptr, /*allow_exceptions=*/false);
+  EXPECT_TRUE(list.is_array()) << r;
+  EXPECT_EQ(list, device_list());
+  EXPECT_NE(r.err.find("deprecated"), std::string::npos) << r;
+  EXPECT_NE(r.err.find("--report"), std::string::npos) << r;
 }
 
 TEST(CliDevices, JsonListsDevicesWithComputeUnits) {

@@ -61,7 +61,7 @@ TEST_F(CliPhongOptions, DichotomyAndRecurrenceRender) {
 
 TEST_F(CliPhongOptions, StudyWritesClaims) {
   const auto json = out_dir() / "study.json", md = out_dir() / "study.md";
-  const RunResult r = run_parashade({"phong-study", "--json", json.string(), "-o", md.string()});
+  const RunResult r = run_parashade({"phong-study", "--report", json.string(), "-o", md.string()});
   ASSERT_TRUE(succeeds(r)) << r;
   std::ifstream in(json);
   const nlohmann::json j = nlohmann::json::parse(in);

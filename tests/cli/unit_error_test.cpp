@@ -22,12 +22,12 @@ class CliUnitError : public CliTest {
 TEST_F(CliUnitError, HelpListsItsOptions) {
   const RunResult r = run_parashade({"unit-error", "--help"});
   ASSERT_TRUE(succeeds(r));
-  for (const char* option : {"--units", "--arith", "--lengths", "--trials", "--seed", "--json", "--formula-bits"})
+  for (const char* option : {"--units", "--arith", "--lengths", "--trials", "--seed", "--report", "--formula-bits"})
     EXPECT_NE(r.out.find(option), std::string::npos) << option << ":" << r;
 }
 
 TEST_F(CliUnitError, TableVerdictsAndJson) {
-  const RunResult r = run({"--lengths", "1,16,256", "--json", json().string()});
+  const RunResult r = run({"--lengths", "1,16,256", "--report", json().string()});
   ASSERT_TRUE(succeeds(r));
   for (const char* text : {"fixed:12.8", "max/bound", "verdicts:", "classic: our bound holds", "δ_KH", "FAILS", "Δδ"})
     EXPECT_NE(r.out.find(text), std::string::npos) << "'" << text << "' missing:" << r;
@@ -66,9 +66,9 @@ TEST_F(CliUnitError, BadCommandLines) {
   EXPECT_TRUE(nothing_written());
 }
 
-TEST_F(CliUnitError, JsonInAMissingDirectoryIsBadInputBeforeAnyOutput) {
+TEST_F(CliUnitError, ReportInAMissingDirectoryIsBadInputBeforeAnyOutput) {
   const std::filesystem::path missing = out_dir() / "absent" / "u.json";
-  EXPECT_TRUE(fails_with(run({"--lengths", "4", "--json", missing.string()}), kBadInput, {missing.string()}));
+  EXPECT_TRUE(fails_with(run({"--lengths", "4", "--report", missing.string()}), kBadInput, {missing.string()}));
   EXPECT_TRUE(nothing_written());
 }
 

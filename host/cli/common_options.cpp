@@ -1,0 +1,81 @@
+#include "common_options.hpp"
+
+#include <iostream>
+#include <regex>
+
+#include "parashade/report.hpp"
+#include "parashade/report_header.hpp"
+#include "parashade/scene.hpp"
+
+namespace parashade::cli {
+
+CLI::Option* add_quiet_flag(CLI::App& cmd, bool& quiet) {
+  return cmd.add_flag("-q,--quiet", quiet, "No progress lines or notes on stderr (results and errors still print)");
+}
+
+CLI::Option* add_report_option(CLI::App& cmd, std::string& report, const std::string& what) {
+  return cmd.add_option("--report", report,
+                        "Write a JSON report (" + what + "), versioned by its \"schema\" field (docs/reports.md)");
+}
+
+void add_deprecated_spelling(CLI::App& cmd, CLI::Option* current, const std::string& old_name, std::string& value) {
+  const std::string now = current->get_name();
+  CLI::Option* old = cmd.add_option_function<std::string>(
+      old_name,
+      [&value, old_name, now](const std::string& v) {
+        std::cerr << "parashade: warning: " << old_name << " is deprecated and goes in the next release; use " << now
+                  << " FILE\n";
+        value = v;
+      },
+      "Deprecated spelling of " + now);
+  old->excludes(current);
+}
+
+const CLI::Validator& size_validator() {
+  static const CLI::Validator v(
+      [](std::string& text) -> std::string {
+        if (std::regex_match(text, std::regex(R"(\d{1,9}x\d{1,9})"))) return "";
+        return "'" + text + "' is not of the form WIDTHxHEIGHT, e.g. 1920x1080";
+      },
+      "WIDTHxHEIGHT", "size");
+  return v;
+}
+
+CLI::Option* add_size_option(CLI::App& cmd, std::string& size) {
+  const std::string most = std::to_string(kMaxResolution);
+  return cmd.add_option("--size", size, "Resolution WIDTHxHEIGHT (at most " + most + "x" + most + "), overriding the scene's")
+      ->check(size_validator());
+}
+
+CLI::Validator count_list_validator(int max, bool list) {
+  const std::string range = "1.." + std::to_string(max);
+  return CLI::Validator(
+      [max, list, range](std::string& text) -> std::string {
+        const std::regex one(R"([0-9]{1,9})"), many(R"([0-9]{1,9}(,[0-9]{1,9})*)");
+        const bool form = std::regex_match(text, list ? many : one);
+        if (form) {
+          std::size_t start = 0;
+          bool in_range = true;
+          while (start <= text.size()) {
+            const std::size_t comma = std::min(text.find(',', start), text.size());
+            const long v = std::stol(text.substr(start, comma - start));
+            in_range = in_range && v >= 1 && v <= max;
+            start = comma + 1;
+          }
+          if (in_range) return "";
+        }
+        return "'" + text + "' is not " + (list ? "a comma-separated list of numbers in " : "a number in ") + range;
+      },
+      list ? "N[,N...]" : "N", "count");
+}
+
+std::string report_text(nlohmann::json body, const std::string& kind) {
+  stamp_report(body, kind);
+  return body.dump(2) + "\n";
+}
+
+void write_report(const std::string& path, nlohmann::json body, const std::string& kind) {
+  write_text_atomically(path, report_text(std::move(body), kind));
+}
+
+}  // namespace parashade::cli

@@ -1,0 +1,34 @@
+#pragma once
+// The options every command spells alike (docs/cli.md, "Conventions"): -q, --report FILE, --size WxH,
+// count lists such as --cu, and an old spelling kept for one release with a warning.
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+namespace parashade::cli {
+
+// -q,--quiet: no progress lines or notes on stderr; results and errors still print.
+CLI::Option* add_quiet_flag(CLI::App& cmd, bool& quiet);
+
+// --report FILE: the command's JSON report (schema parashade.<kind>/1, schemas/).
+CLI::Option* add_report_option(CLI::App& cmd, std::string& report, const std::string& what);
+
+// `old_name` stores into `value` like `current` does and warns on stderr that it is deprecated; the two
+// exclude each other.
+void add_deprecated_spelling(CLI::App& cmd, CLI::Option* current, const std::string& old_name, std::string& value);
+
+// --size WIDTHxHEIGHT, checked for its form when the command line is parsed.
+CLI::Option* add_size_option(CLI::App& cmd, std::string& size);
+const CLI::Validator& size_validator();
+
+// A comma-separated list of integers in 1..max (e.g. --cu); `list` false: exactly one.
+CLI::Validator count_list_validator(int max, bool list);
+
+// `body` stamped (report_header.hpp) as parashade.<kind>/1, as the text a report file holds.
+std::string report_text(nlohmann::json body, const std::string& kind);
+
+// Writes the stamped report whole or not at all.
+void write_report(const std::string& path, nlohmann::json body, const std::string& kind);
+
+}  // namespace parashade::cli

@@ -1,0 +1,28 @@
+#pragma once
+// What makes a JSON report self-describing (docs/reports.md; schemas/): which schema it follows, which
+// build wrote it, when, from which command line, and how loaded the host was. Every report the CLI
+// writes starts from stamp_report; timed runs add timing_json. Device-free: the device goes in as JSON.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace parashade {
+
+// The command line a report names; main records it once (argv as given).
+void set_report_command_line(int argc, const char* const* argv);
+const std::vector<std::string>& report_command_line();
+
+// Adds the header to `report`: "schema": "parashade.<kind>/<version>", "parashade": {version, git_hash},
+// "created_utc" (ISO 8601), "command_line" (array), "host": {"load_1min"} (null where /proc/loadavg is
+// unreadable). Keys the body already has are not overwritten (a body may not take a header key).
+nlohmann::json& stamp_report(nlohmann::json& report, const std::string& kind, int version = 1);
+
+// Timed frames: {"frames", "warmup", "samples_ms", "min_ms", "median_ms", "mean_ms", "stddev_ms"}
+// (standard deviation of the samples, n - 1 in the denominator; 0 for one sample).
+nlohmann::json timing_json(const std::vector<double>& samples_ms, int warmup);
+
+// The one-minute load average from /proc/loadavg; negative when unreadable.
+double host_load_1min();
+
+}  // namespace parashade

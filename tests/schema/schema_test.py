@@ -1,0 +1,180 @@
+#!/usr/bin/env python3
+"""The schema label (docs/reports.md): every report kind, written by the real binary on a small scene,
+validates against its schema in schemas/; every scene in scenes/ validates against the scene schema;
+and the schemas are strict enough to fail: a report without any one of its required keys, or a scene with
+an unknown key, does not validate.
+
+    schema_test.py PARASHADE SOURCE_DIR [MPIEXEC]
+"""
+import copy
+import glob
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import warnings
+
+try:
+    import jsonschema
+except ImportError:
+    sys.exit("schema_test: python3-jsonschema is not installed (scripts/install-deps.sh installs it)")
+
+PARASHADE, SOURCE = sys.argv[1], sys.argv[2]
+MPIEXEC = sys.argv[3] if len(sys.argv) > 3 and sys.argv[3] else None
+SCHEMAS = os.path.join(SOURCE, "schemas")
+failures = []
+
+
+def check(cond, what):
+    if not cond:
+        failures.append(what)
+        print("FAIL: " + what, flush=True)
+
+
+def load(path):
+    with open(path) as f:
+        return json.load(f)
+
+
+def validator(name):
+    """Draft 2020-12 validator for schemas/NAME.schema.json, its references (common.schema.json) resolved
+    from the folder: through `referencing` where jsonschema has it (4.18 and later), else RefResolver
+    (Debian bookworm's 4.10)."""
+    schemas = []
+    for path in glob.glob(os.path.join(SCHEMAS, "*.schema.json")):
+        s = load(path)
+        jsonschema.Draft202012Validator.check_schema(s)
+        schemas.append(s)
+    schema = load(os.path.join(SCHEMAS, name + ".schema.json"))
+    try:
+        from referencing import Registry, Resource
+        from referencing.jsonschema import DRAFT202012
+    except ImportError:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", DeprecationWarning)
+            resolver = jsonschema.RefResolver.from_schema(schema, store={s["$id"]: s for s in schemas})
+            return jsonschema.Draft202012Validator(schema, resolver=resolver)
+    registry = Registry().with_resources(
+        (s["$id"], Resource.from_contents(s, default_specification=DRAFT202012)) for s in schemas)
+    return jsonschema.Draft202012Validator(schema, registry=registry)
+
+
+def errors(v, doc):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", DeprecationWarning)
+        return [e.message for e in v.iter_errors(doc)]
+
+
+def required_keys(v):
+    """The report's top-level required keys: its own and the header's."""
+    keys = list(v.schema.get("required", []))
+    common = load(os.path.join(SCHEMAS, "common.schema.json"))
+    return keys + common["$defs"]["header"]["required"]
+
+
+def run(args, cmd_prefix=()):
+    p = subprocess.run(list(cmd_prefix) + [PARASHADE] + args, capture_output=True, text=True, timeout=300)
+    check(p.returncode == 0, "parashade %s: exit %d\n%s" % (" ".join(args), p.returncode, p.stderr[-2000:]))
+    return p
+
+
+def validate_report(kind, path):
+    if not os.path.exists(path):
+        check(False, "%s: no report written at %s" % (kind, path))
+        return
+    doc = load(path)
+    v = validator(kind)
+    errs = errors(v, doc)
+    check(not errs, "%s report does not validate: %s" % (kind, errs[:5]))
+    check(doc.get("schema") == "parashade.%s/1" % kind, "%s report's schema is %r" % (kind, doc.get("schema")))
+    # Strict enough to fail: without any one required key, or with the wrong kind, it must not validate.
+    for key in required_keys(v):
+        broken = copy.deepcopy(doc)
+        broken.pop(key, None)
+        check(errors(v, broken), "%s report without '%s' still validates" % (kind, key))
+    other = dict(doc, schema="parashade.other/1")
+    check(errors(v, other), "%s report naming another schema still validates" % kind)
+    if "timing" in doc:
+        broken = copy.deepcopy(doc)
+        del broken["timing"]["stddev_ms"]
+        check(errors(v, broken), "%s report whose timing lacks stddev_ms still validates" % kind)
+    print("ok: %s (%d required keys each shown to be needed)" % (kind, len(required_keys(v))), flush=True)
+
+
+def main():
+    with tempfile.TemporaryDirectory(prefix="parashade-schema-") as tmp:
+        return run_all(tmp)
+
+
+def run_all(tmp):
+    scene = os.path.join(SOURCE, "scenes", "sphere.json")
+    out = lambda name: os.path.join(tmp, name)  # noqa: E731
+    small = ["--size", "64x48"]
+
+    run(["render", scene, *small, "--frames", "2", "--warmup", "1", "-q", "--no-tuned", "-o", out("r.png"),
+         "--report", out("render.json")])
+    validate_report("render", out("render.json"))
+    run(["render", scene, *small, "--frames", "2", "--warmup", "1", "-q", "--device", "all", "-o", out("s.png"),
+         "--report", out("render-split.json")])
+    validate_report("render-split", out("render-split.json"))
+    if MPIEXEC:
+        run(["render", scene, *small, "--frames", "1", "--warmup", "0", "-q", "--no-tuned", "--distribute",
+             "sort-last", "-o", out("d.png"), "--report", out("render-distributed.json")],
+            [MPIEXEC, "--oversubscribe", "-np", "2"])
+        validate_report("render-distributed", out("render-distributed.json"))
+    else:
+        print("skipped: render-distributed (built without MPI)")
+    run(["plan", scene, *small, "--cu", "1,4", "--report", out("plan.json")])
+    validate_report("plan", out("plan.json"))
+    run(["scaling", scene, *small, "--units", "classic,counter", "--frames", "2", "-q", "--report", out("scaling.json")])
+    validate_report("scaling", out("scaling.json"))
+    run(["tune", scene, *small, "--budget-runs", "2", "--frames", "1", "-q", "--cache", out("tune-cache.json"),
+         "--report", out("tune.json")])
+    validate_report("tune", out("tune.json"))
+    run(["unit-error", "--units", "counter", "--lengths", "1,4", "--trials", "20", "--report", out("unit-error.json")])
+    validate_report("unit-error", out("unit-error.json"))
+    run(["phong-study", "--report", out("phong-study.json")])
+    validate_report("phong-study", out("phong-study.json"))
+    run(["devices", "--report", out("devices.json")])
+    validate_report("devices", out("devices.json"))
+    run(["vectors", "--unit", "counter", "--spans", "2", "-o", out("v.txt"), "--report", out("vectors.json")])
+    validate_report("vectors", out("vectors.json"))
+    run(["combinations", "--report", out("combinations.json")])
+    validate_report("combinations", out("combinations.json"))
+
+    # Every schema file is a report kind this test wrote (or the scene or common schema): none unchecked.
+    kinds = {os.path.basename(p)[: -len(".schema.json")] for p in glob.glob(os.path.join(SCHEMAS, "*.schema.json"))}
+    written = {os.path.basename(p)[:-5] for p in glob.glob(os.path.join(tmp, "*.json"))}
+    unchecked = kinds - written - {"scene", "common"} - (set() if MPIEXEC else {"render-distributed"})
+    check(not unchecked, "schemas without a report in this test: %s" % sorted(unchecked))
+
+    # Scenes: every committed scene validates; an unknown key, a missing "objects", a light without its
+    # direction and a perspective camera with an orthographic height do not.
+    sv = validator("scene")
+    scenes = sorted(glob.glob(os.path.join(SOURCE, "scenes", "**", "*.json"), recursive=True))
+    check(len(scenes) >= 5, "only %d scenes found" % len(scenes))
+    for path in scenes:
+        errs = errors(sv, load(path))
+        check(not errs, "%s does not validate against scene.schema.json: %s" % (path, errs[:3]))
+    base = load(scene)
+    bad = {"unknown key": dict(base, colour=[1, 1, 1]),
+           "no objects": {k: v for k, v in base.items() if k != "objects"},
+           "light without direction": dict(base, lights=[{"type": "directional"}]),
+           "perspective camera with height": dict(base, camera=dict(base["camera"], height=2)),
+           "shape with an unknown parameter": dict(base, objects=[{"shape": {"type": "sphere", "radius": 2}}]),
+           "object with shape and mesh": dict(base, objects=[{"shape": "sphere", "mesh": "a.obj"}]),
+           "resolution beyond the 12-bit limit": dict(base, resolution=[8192, 64])}
+    for what, doc in bad.items():
+        check(errors(sv, doc), "scene with %s still validates" % what)
+    print("ok: %d scenes, %d broken ones refused" % (len(scenes), len(bad)))
+
+    if failures:
+        print("schema_test: %d failure(s)" % len(failures))
+        return 1
+    print("schema_test: ok")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
