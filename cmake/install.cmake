@@ -19,7 +19,7 @@ install(TARGETS parashade RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS parashade_scene parashade_core parashade_cl parashade_library EXPORT parashadeTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY include/parashade DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} PATTERN distributed.hpp EXCLUDE)
-install(FILES ${PARASHADE_GENERATED_INCLUDE}/parashade/version.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/parashade)
+install(FILES ${PARASHADE_GENERATED_INCLUDE}/parashade/version.hpp ${PARASHADE_GENERATED_INCLUDE}/parashade/unit_kinds.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/parashade)
 install(DIRECTORY kernels/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/parashade/kernels FILES_MATCHING PATTERN "*.h")
 install(FILES LICENSE README.md CHANGELOG.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
 

@@ -14,8 +14,9 @@
 #define MAX_RESOLUTION (1 << SCREEN_ADDRESS_BITS)
 
 /* Lanes of the kernels' vectors (common.h's floatV is float16): a work-item shades a row segment of VEC
- * pixels at once, and finds the spans of VEC rows at once. 16 floats fill an AVX-512 register, and
- * explicit 16-wide vectors are what PoCL compiles best (DESIGN.md). */
+ * pixels at once, and finds the spans of VEC rows at once. 16 floats fill an AVX-512 register. PoCL
+ * vectorizes across work-items by wrapping the work-item loop around the whole body, which leaves a
+ * per-triangle loop scalar; explicit float16/int16 rows compile to full AVX-512 instead. */
 #define VEC 16
 
 /* Screen tile edge in pixels: 16, 32 or 64 (--tile), the powers of two from TILE_MIN to TILE_MAX. A tile
@@ -50,5 +51,16 @@
 #define MAX_SEGMENT_LANES 64
 #define MAX_SIERPINSKI_DEPTH 3
 #define MAX_MODELED_UNITS 4096
+
+/* Span registers (--arith fixed:I.F, kernels/fixed_point.h): I integer bits including the sign, at least
+ * REGISTER_MIN_INT_BITS to hold level 255 and a sign; width I + F at most REGISTER_MAX_BITS, the 32-bit
+ * ps_int the registers are modeled in. */
+#define REGISTER_MIN_INT_BITS 9
+#define REGISTER_MAX_BITS 32
+
+/* Dichotomy normalization (--normalize dichotomy:S:K, kernels/normalize_dichotomy.h): segments of 2^K
+ * pixels, 1 <= K <= MAX_DICHOTOMY_SEGMENT_LOG2. A bound we set, not the source's: each pixel descends up
+ * to K + 3 bisection levels, and the tests and docs/phong-methods.md measure K up to 6. */
+#define MAX_DICHOTOMY_SEGMENT_LOG2 6
 
 #endif

@@ -27,8 +27,8 @@ std::string resolve(const std::string& from, const std::string& name) {
   return embedded_kernel_files().count(sibling) ? sibling : name;
 }
 
-// PoCL resolves #include against its cache directory, so the host expands includes itself
-// (DESIGN.md). Each file is expanded once; the headers also carry include guards.
+// PoCL resolves a kernel's #include against its own cache directory, not kernels/, so the host expands
+// includes itself. Each file is expanded once; the headers also carry include guards.
 void expand(const std::string& file, std::set<std::string>& seen, std::string& out) {
   const auto& files = embedded_kernel_files();
   const auto it = files.find(file);

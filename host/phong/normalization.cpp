@@ -9,6 +9,7 @@
 
 #include "parashade/errors.hpp"
 #include "parashade/minimax.hpp"
+#include "parashade/kernels/constants.h"
 
 namespace parashade {
 namespace {
@@ -339,8 +340,9 @@ NormalizeMethod parse_normalize(const std::string& text) {
                                      : BisectorScale::quadratic_fit;
     if (g[3].matched) {
       m.segment_log2 = std::stoi(g[3]);
-      if (m.segment_log2 < 1 || m.segment_log2 > 6)
-        throw UsageError("normalization '" + text + "': segment size 2^K needs K in 1..6");
+      if (m.segment_log2 < 1 || m.segment_log2 > MAX_DICHOTOMY_SEGMENT_LOG2)
+        throw UsageError("normalization '" + text + "': segment size 2^K needs K in 1.." +
+                         std::to_string(MAX_DICHOTOMY_SEGMENT_LOG2));
     }
     m.extrapolate_last = g[4].matched;
   } else if (g[5].matched) {

@@ -1,6 +1,7 @@
 // The exact reference (reference.hpp): its own rasterizer, written from the coverage rule of
 // screen_geometry.hpp, and its own interpolation, in double precision. It shares only edge_bias and
-// the Blinn–Phong formula (lighting.hpp) with the rest of the project, on purpose (DESIGN.md §3).
+// the Blinn–Phong formula (lighting.hpp) with the rest of the project, on purpose: a
+// reference that reused the renderer's code would agree with the renderer's mistakes.
 //
 // Two passes. Visibility: the screen is cut into bands of rows; each band, owned by one thread,
 // visits its triangles in primitive order and keeps per pixel the nearest depth (nearer by more than the rounding of coplanar depths, so the

@@ -17,6 +17,8 @@ enum class ReciprocalRounding {
   nearest,   // m = round(2^n / k), ties up: |error| <= 2^-(n+1), equal only at the tie k = 2^(n+1)
 };
 
+// At most 30 digits: m (2^n for k = 1) stays within a signed 32-bit register, and a span register
+// difference (W <= 32 bits) shifted further contributes nothing but its sign.
 constexpr int kMaxShiftAddBits = 30;
 
 struct ShiftAddReciprocal {

@@ -7,18 +7,9 @@
 
 #include "parashade/kernels/span_division.h"
 #include "parashade/kernels/unit_cost.h"
+#include "parashade/unit_kinds.hpp"  // UnitKind: one member per kernels/units/<unit>.h (cmake/unit_kinds.cmake)
 
 namespace parashade {
-
-// A unit's id, shared with the kernels (UNIT_KIND; kernels/units/<unit>.h defines it).
-enum class UnitKind {
-  classic = UNIT_CLASSIC,
-  counter = UNIT_COUNTER,
-  interleave = UNIT_INTERLEAVE,
-  segment = UNIT_SEGMENT,
-  sierpinski = UNIT_SIERPINSKI,  // extra triangulation ([Malovanyi 2019, parallel Gouraud] ch. 3): one of 4^D sub-triangles shaded, the rest copied
-  pipelined = UNIT_PIPELINED,    // interleave:M with double-buffered span registers: the load overlaps the last span
-};
 
 // How the extra triangulation gets its midpoints onto pixel corners ([Malovanyi 2019, parallel Gouraud] ch. 3, the sources' two remedies).
 enum class SierpinskiGrid {
