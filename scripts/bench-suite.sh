@@ -112,8 +112,8 @@ fi
 "$PYTHON" scripts/peak_memory.py --binary "$BUILD/parashade" -o "$OUT/memory.json"
 
 if "$PYTHON" -c "import matplotlib" 2>/dev/null; then
-  "$PYTHON" scripts/report.py "$OUT"/peer-*.json "$OUT"/scaling-*.json "$OUT/memory.json" --images "$OUT/images" \
-      -o "$OUT/report"
+  "$PYTHON" scripts/report.py "$OUT"/peer-*.json "$OUT"/scaling-*.json "$OUT/memory.json" \
+      "$OUT/combined-study.json" "$OUT/phong-methods.json" --images "$OUT/images" -o "$OUT/report"
 else
   echo "bench-suite: python3-matplotlib is not installed: no plots (apt-get install python3-matplotlib)" >&2
 fi
