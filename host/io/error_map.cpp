@@ -36,12 +36,13 @@ std::string label(double v, int decimals) {
   return buf;
 }
 
-// The top's label: two decimals at most, trailing zeros dropped ("124.37", "12.5", "1").
-std::string top_label(double top) {
+// The top's label: two decimals at most, trailing zeros dropped ("124.37", "12.5", "1"), and "max" when
+// it is the largest error (not the 1-level floor).
+std::string top_label(double top, bool is_max) {
   std::string s = label(top, 2);
   while (s.back() == '0') s.pop_back();
   if (s.back() == '.') s.pop_back();
-  return s + " max";
+  return is_max ? s + " max" : s;
 }
 
 // Evenly spaced ticks below the top: steps of 1, 2 or 5 times a power of ten, at most 5 of them.
@@ -70,6 +71,8 @@ RenderedImage error_map_image(const std::vector<double>& errors, int width, int 
     throw InputError("error map: " + std::to_string(errors.size()) + " errors for a " + std::to_string(width) + "x" +
                      std::to_string(height) + " image");
   const double top = error_scale_top(errors);
+  bool top_is_max = false;
+  for (double e : errors) top_is_max = top_is_max || e == top;
   const int s = std::clamp((height + 199) / 300, 1, 4);  // font and bar scale: readable at 256 and at 4096 rows
 
   // Ticks: 0, step, 2 step, ... and the top, leaving out one too close to the top's label.
@@ -77,7 +80,7 @@ RenderedImage error_map_image(const std::vector<double>& errors, int width, int 
   const int decimals = std::max(0, -int(std::floor(std::log10(step) + 1e-9)));
   std::vector<std::pair<double, std::string>> ticks;
   for (int k = 0; k * step < top * (1 - 1e-9); ++k) ticks.push_back({k * step, label(k * step, decimals)});
-  int label_width = text_width(top_label(top), s);
+  int label_width = text_width(top_label(top, top_is_max), s);
   for (const auto& t : ticks) label_width = std::max(label_width, text_width(t.second, s));
 
   const std::string title = "levels";
@@ -114,7 +117,7 @@ RenderedImage error_map_image(const std::vector<double>& errors, int width, int 
   const int min_gap = (kGlyphHeight + 3) * s;  // label rows between two ticks
   for (const auto& t : ticks)
     if (span * (top - t.first) / top >= min_gap) tick(t.first, t.second);
-  tick(top, top_label(top));
+  tick(top, top_label(top, top_is_max));
   return picture;
 }
 

@@ -22,7 +22,7 @@ int error_colour_index(double error, double top);
 // An RGB picture (alpha 255) of `errors` (width x height, row 0 at the top; NaN: not compared): the map
 // at the top left, pixel by pixel kViridis[error_colour_index(e, top)] with top = error_scale_top(errors)
 // and white where nothing was compared; to its right a colour bar from 0 (bottom) to top, ticks labelled
-// in levels ("levels" above; the top tick reads "<top> max"). The picture is at least as tall as the
+// in levels ("levels" above; the top tick reads "<top> max", or "1" when every error is below 1 level). The picture is at least as tall as the
 // scale needs, so it can be taller than the map (white below). Throws InputError on a size mismatch.
 RenderedImage error_map_image(const std::vector<double>& errors, int width, int height);
 
