@@ -104,13 +104,14 @@ int run_compare(const CompareArgs& args) {
 Command add_compare_command(CLI::App& app) {
   auto args = std::make_shared<CompareArgs>();
   auto* cmd = app.add_subcommand(
-      "compare",
-      "Compare image A with image B (the reference): max and mean error in 8-bit levels, NMSE, PSNR, differing "
-      "pixels; exit 1 when --fail is exceeded. Any format OpenImageIO reads; float files in levels (x255). "
-      "OpenImageIO's 'idiff A B' does much the same for those who have it");
+      "compare", "Compare image A with image B: error in 8-bit levels, NMSE, PSNR, differing pixels (docs/pictures.md)");
+  cmd->footer(
+      "Any format OpenImageIO reads (float files in levels, x255; alpha not compared). Exit 1 when the max error "
+      "is above --fail, 2 usage error, 3 unreadable files or different sizes or channels.\n"
+      "OpenImageIO's 'idiff A B' (openimageio-tools) does much the same for those who have it.");
   cmd->add_option("a", args->a, "The image to judge")->required();
   cmd->add_option("b", args->b, "The reference image (NMSE's denominator); same size and channels as A")->required();
-  cmd->add_option("--fail", args->fail, "Exit 1 when the max error is above LEVELS (equal passes)");
+  cmd->add_option("--fail", args->fail, "Exit 1 when the max error is above LEVELS (equal passes)")->type_name("LEVELS");
   cmd->add_option("--diff", args->diff,
                   "Write the per-pixel error (largest channel difference) as a colour map with its scale "
                   "(as render --error-map)");
