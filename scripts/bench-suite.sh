@@ -122,8 +122,8 @@ normalize_bench() {
       --benchmark_out="$OUT/normalize.json" --benchmark_out_format=json
 }
 report() {
-  "$PYTHON" scripts/report.py "$OUT"/peer-*.json "$OUT"/scaling-*.json "$OUT/memory.json" --images "$OUT/images" \
-      -o "$OUT/report"
+  "$PYTHON" scripts/report.py "$OUT"/peer-*.json "$OUT"/scaling-*.json "$OUT/memory.json" \
+      "$OUT/combined-study.json" "$OUT/phong-methods.json" --images "$OUT/images" -o "$OUT/report"
 }
 
 PHONG_SCENES="scenes/sphere.json scenes/teapot.json scenes/robot.json"

@@ -1,6 +1,7 @@
 """Reading result files for report.py and claims.py: bench_llvmpipe / bench_frame JSON (Google Benchmark),
-`parashade scaling --report` JSON and scripts/peak_memory.py JSON, told apart by their "schema" field
-(files without one by the keys they had before; docs/reports.md). Each Google Benchmark case becomes one
+`parashade scaling --report` JSON, scripts/peak_memory.py JSON, and the method variants of
+scripts/combined_study.py (combined-study.json) and scripts/phong_methods.py (phong-methods.json), told
+apart by their "schema" field (files without one by their keys; docs/reports.md). Each Google Benchmark case becomes one
 row: {"peer", "scene", "size", "method", "name", counters...}, the median aggregate when the run had
 repetitions, else the single run."""
 import json
@@ -18,12 +19,16 @@ SCHEMAS = {"parashade.scaling": ("scaling", {1}), "parashade.memory": ("memory",
 
 
 def legacy_kind(doc):
-    """Files written before reports carried "schema" (the committed docs/bench-report/results): the old
-    rule, by the keys each kind had. Only for files without a schema field."""
+    """Files without a "schema" field, by the keys each kind has: those written before reports carried one
+    (the committed docs/bench-report/results), and the studies' files (combined_study.py, phong_methods.py)."""
     if "rows" in doc and "speedup_note" in doc:
         return "scaling"
     if "rows" in doc and "command" in doc:
         return "memory"
+    if "measurements" in doc and "claims" in doc:
+        return "combined_study"
+    if "rows" in doc and doc["rows"] and "normalize" in doc["rows"][0]:
+        return "phong_methods"
     return "unknown"
 
 
@@ -45,6 +50,39 @@ def kind(doc):
         raise ValueError(f"result schema {schema}: this script reads {name}/" +
                          ",".join(str(v) for v in sorted(versions)))
     return k
+
+
+# The study scenes under their benchmark names: scenes/sphere.json is bench_llvmpipe's sphere_8k.
+STUDY_SCENE_NAMES = {"sphere": "sphere_8k"}
+
+
+def variant_rows(doc, k):
+    """Whole-frame time and NMSE against exact Phong of each method variant of a study file, as rows
+    {"scene", "size", "family", "label", "frame_ms", "phong_ms", "nmse"}: family "combined"
+    (combined-study.json: combined:K, combined:auto@budget, triangle choices) or "phong variants"
+    (phong-methods.json: the normalization and specular models; the exact/exact row is plain Phong, left
+    out). phong_ms: plain Phong's frame in the same run, so a plot can use the ratio."""
+    out = []
+    if k == "combined_study":
+        phong = {m["scene"]: m["frame_ms"] for m in doc["measurements"] if m["method"] == "phong"}
+        for m in doc["measurements"]:
+            if not m["method"].startswith("combined"):
+                continue
+            out.append({"scene": STUDY_SCENE_NAMES.get(m["scene"], m["scene"]),
+                        "size": f"{m['width']}x{m['height']}", "family": "combined", "label": m["method"],
+                        "frame_ms": m["frame_ms"], "phong_ms": phong.get(m["scene"]),
+                        "nmse": m["error_vs_exact_phong"]["nmse"]})
+    elif k == "phong_methods":
+        phong = {r["scene"]: r["frame_ms"] for r in doc["rows"] if r["normalize"] == "exact" and r["specular"] == "exact"}
+        for r in doc["rows"]:
+            if r["normalize"] == "exact" and r["specular"] == "exact":
+                continue
+            label = (f"n {r['normalize']}" if r["specular"] == "exact" else
+                     f"s {r['specular']}" if r["normalize"] == "exact" else f"n {r['normalize']}, s {r['specular']}")
+            out.append({"scene": STUDY_SCENE_NAMES.get(r["scene"], r["scene"]), "size": r["size"],
+                        "family": "phong variants", "label": label, "frame_ms": r["frame_ms"],
+                        "phong_ms": phong.get(r["scene"]), "nmse": r["nmse"]})
+    return out
 
 
 def benchmark_rows(doc, aggregate="median"):
@@ -82,7 +120,7 @@ def load_results(paths, aggregate="median"):
             files += sorted(os.path.join(p, f) for f in os.listdir(p) if f.endswith(".json"))
         else:
             files.append(p)
-    out = {"benchmark": [], "contexts": [], "scaling": [], "memory": [], "files": files}
+    out = {"benchmark": [], "contexts": [], "scaling": [], "memory": [], "variants": [], "files": files}
     for path in files:
         try:
             doc = load_json(path)
@@ -98,6 +136,8 @@ def load_results(paths, aggregate="median"):
         elif k == "memory":
             out["memory"] += doc["rows"]
             out["memory_baseline"] = doc.get("baseline_mib")
+        elif k in ("combined_study", "phong_methods"):
+            out["variants"] += variant_rows(doc, k)
     return out
 
 

@@ -5,8 +5,8 @@
 # and yosys: the units' RTL tests and synthesis, docs/hardware.md).
 # openmpi-bin, libopenmpi-dev: render --distribute and the mpi test label (docs/distributed.md).
 # python3-jsonschema: the schema tests check every report kind and scene against schemas/ (docs/reports.md).
-# Runs as root or through sudo; safe to run again. scripts/report.py (plots) also needs python3-matplotlib,
-# which CI does not install.
+# python3-matplotlib: scripts/report.py's plots (bench-suite.sh skips them without it).
+# Runs as root or through sudo; safe to run again.
 set -eu
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
@@ -17,7 +17,7 @@ $SUDO apt-get install -y -q --no-install-recommends \
     pocl-opencl-icd oclgrind ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers clinfo \
     libglm-dev libopenmesh-dev libopenimageio-dev openimageio-tools \
     nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev \
-    libegl-dev libgl-dev libgl1-mesa-dri python3 python3-jsonschema \
+    libegl-dev libgl-dev libgl1-mesa-dri python3 python3-jsonschema python3-matplotlib \
     clang libclang-rt-dev \
     openmpi-bin libopenmpi-dev verilator yosys \
     ca-certificates

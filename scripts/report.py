@@ -1,13 +1,17 @@
 #!/usr/bin/env python3
 """Turns benchmark and sweep results into a report directory (needs python3-matplotlib):
   speed_error_SCENE_SIZE.png  frame time against NMSE vs exact Phong, every parashade method/unit/arith
-                              point and the llvmpipe points, the Pareto front marked;
+                              point and the llvmpipe points, with the combined and Phong-variant points
+                              of combined-study.json and phong-methods.json when given; the Pareto front
+                              marked;
   scaling_SCENE.png           interpolators per clock -> modeled and measured speed-up, and error
                               (`parashade scaling --report` files);
   strip_SCENE_SIZE.png        exact Phong | parashade Gouraud | llvmpipe Gouraud | parashade Phong, and
-                              their error maps magnified (bench_llvmpipe --images=DIR);
+                              their error maps on one scale up to the largest error (bench_llvmpipe
+                              --images=DIR);
   index.md                    the device, the ratio table against llvmpipe and the fill limit, links.
-Inputs: result files or directories (bench_llvmpipe JSON, scaling JSON, peak_memory JSON).
+Inputs: result files or directories (bench_llvmpipe JSON, scaling JSON, peak_memory JSON, combined_study
+JSON, phong_methods JSON).
 
     scripts/report.py bench-results/*.json --images bench-results/images -o bench-results/report
 """
@@ -44,29 +48,52 @@ def pareto(points, rel=0.01):
     return front
 
 
-def speed_error_plot(rows, scene, size, out_dir):
-    pts = [(r["frame_ms"], max(r["nmse"], NMSE_FLOOR), r) for r in rows
+# Marker and colour per kind of point; the legend names kinds, not points, so it stays one row.
+FAMILIES = [  # (family, label in the legend, marker, colour)
+    ("llvmpipe", "llvmpipe", "s", "tab:red"),
+    ("parashade", "parashade flat/Gouraud/Phong", "o", "tab:blue"),
+    ("units", "parashade modeled units", "v", "tab:cyan"),
+    ("combined", "combined:K / auto (combined study)", "^", "tab:green"),
+    ("phong variants", "Phong normalization / specular (phong methods)", "D", "tab:purple"),
+]
+
+
+def point_family(r):
+    if r["peer"] == "llvmpipe":
+        return "llvmpipe"
+    return "units" if ":" in r["method"] else "parashade"
+
+
+def speed_error_plot(rows, variants, scene, size, out_dir):
+    """Frame time against NMSE vs exact Phong: the peer run's points and, from the study files (other
+    runs of the same scene and size, at another load), the combined and Phong-variant points placed by
+    their time ratio to plain Phong in their own run, times parashade Phong's time in this run."""
+    pts = [(r["frame_ms"], max(r["nmse"], NMSE_FLOOR), point_family(r), point_label(r)) for r in rows
            if r["scene"] == scene and r["size"] == size and r["peer"] in ("llvmpipe", "parashade")
            and isinstance(r.get("nmse"), (int, float)) and math.isfinite(r["nmse"])]
+    phong = find(rows, peer="parashade", scene=scene, size=size, method="phong")
+    if phong:
+        pts += [(v["frame_ms"] / v["phong_ms"] * phong["frame_ms"], max(v["nmse"], NMSE_FLOOR), v["family"], v["label"])
+                for v in variants if v["scene"] == scene and v["size"] == size and v.get("phong_ms")
+                and math.isfinite(v["nmse"])]
     if len(pts) < 2:
         return None
-    fig, ax = plt.subplots(figsize=(13, 5.5))
-    front = pareto(pts)
-    front_ids = {id(p[2]) for p in front}
-    # Numbered points and a key beside the plot: many points share an error (the units) and their
-    # labels would overlap.
-    key = []
-    for k, (t, e, r) in enumerate(sorted(pts, key=lambda q: (q[0], q[1])), start=1):
-        peer = r["peer"]
-        ax.scatter(t, e, marker="s" if peer == "llvmpipe" else "o", s=60,
-                   color="tab:red" if peer == "llvmpipe" else "tab:blue",
-                   edgecolor="black" if id(r) in front_ids else "none", linewidth=1.5, zorder=3)
-        ax.annotate(str(k), (t, e), textcoords="offset points", xytext=(5, 5 + 8 * (k % 2)), fontsize=8)
-        key.append(f"{k:2d} {'*' if id(r) in front_ids else ' '} {point_label(r)}: {t:.1f} ms, NMSE {r['nmse']:.2e}")
-    fig.text(0.57, 0.92, "\n".join(key) + "\n\n* on the Pareto front", fontsize=7.5, va="top", family="monospace")
-    fig.subplots_adjust(left=0.07, right=0.55)
+    fig, ax = plt.subplots(figsize=(11, 7))
+    front = pareto([(t, e, (fam, lab)) for t, e, fam, lab in pts])
+    on_front = {(p[0], p[1], p[2]) for p in front}
+    for fam, legend, marker, colour in FAMILIES:
+        sel = [p for p in pts if p[2] == fam]
+        if sel:
+            ax.scatter([p[0] for p in sel], [p[1] for p in sel], marker=marker, s=46, color=colour, label=legend,
+                       edgecolors="none", zorder=3, alpha=0.9)
+    ax.scatter([p[0] for p in front], [p[1] for p in front], s=110, facecolors="none", edgecolors="black",
+               linewidth=1.2, zorder=4)
+    # Names only where they matter: the Pareto front and the plain methods of both peers.
+    for t, e, fam, lab in pts:
+        if (t, e, (fam, lab)) in on_front or fam in ("llvmpipe", "parashade"):
+            ax.annotate(lab.replace("parashade ", ""), (t, e), textcoords="offset points", xytext=(5, 3), fontsize=6.5)
     ax.step([p[0] for p in front], [p[1] for p in front], where="post", color="black", linestyle="--",
-            linewidth=1, label="Pareto front (outlined points)", zorder=2)
+            linewidth=1, label="Pareto front (circled)", zorder=2)
     ax.set_xscale("log")
     ax.set_yscale("log")
     # Label the minor ticks too: a decade or less is all most plots span.
@@ -76,12 +103,14 @@ def speed_error_plot(rows, scene, size, out_dir):
     ax.tick_params(axis="both", which="minor", labelsize=7)
     ax.set_xlabel("frame time, ms (median, whole frame; log)")
     ax.set_ylabel("NMSE against exact Phong (log)")
-    ax.set_title(f"{scene} {size}: speed against error (blue parashade, red llvmpipe)")
+    ax.set_title(f"{scene} {size}: speed against error (study points: their run's time ratio to Phong "
+                 f"x this run's Phong)", fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(loc="upper right", fontsize=8)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), ncol=3, fontsize=8, frameon=False)
     xs, es = [p[0] for p in pts], [p[1] for p in pts]
-    ax.set_xlim(min(xs) / 1.3, max(xs) * 1.3)
-    ax.set_ylim(min(es) * (min(es) / max(es)) ** 0.1 / 1.2, max(es) * (max(es) / min(es)) ** 0.1 * 1.2)  # room for the numbers
+    ax.set_xlim(min(xs) / 1.2, max(xs) * 1.5)  # room for the names on the right
+    ax.set_ylim(min(es) / 1.5, max(es) * 1.5)
+    fig.tight_layout()
     name = f"speed_error_{scene}_{size}.png"
     fig.savefig(os.path.join(out_dir, name), dpi=110)
     plt.close(fig)
@@ -169,28 +198,29 @@ def strip_plot(images, scene, size, out_dir):
         return None
     exact = load_rgb(exact_path)
     diffs = [np.abs(load_rgb(path) - exact).max(axis=2) for _, _, path in cols]
-    # One colour scale for every map: up to the largest error shown (at least 4 levels), so the maps
-    # compare with each other and small errors are still visible.
-    vmax = max(4.0, max(float(np.percentile(d, 99.9)) for d in diffs))
-    fig, axes = plt.subplots(2, len(cols) + 1, figsize=(3.6 * (len(cols) + 1), 5.2))
+    # One colour scale for every map, up to the largest error of any (at least 1 level, never clipped):
+    # the maps compare with each other and the worst pixel keeps its true value. Viridis, as
+    # `parashade render --error-map` and `compare --diff` draw it.
+    vmax = max(1.0, max(float(d.max()) for d in diffs))
+    fig, axes = plt.subplots(2, len(cols) + 1, figsize=(5.2 * (len(cols) + 1), 6.6))
     axes[0][0].imshow(exact.astype(np.uint8))
-    axes[0][0].set_title("exact Phong (reference)", fontsize=9)
+    axes[0][0].set_title("exact Phong (reference)", fontsize=10)
     axes[1][0].axis("off")
-    axes[1][0].text(0.0, 0.5, f"error maps:\n|image - exact|, max over RGB,\nin 8-bit levels; colour scale\n"
-                    f"0..{vmax:.0f} levels (magnified {255 / vmax:.0f}x)", fontsize=9, va="center")
+    axes[1][0].text(0.0, 0.5, f"error maps:\n|image - exact|, max over RGB,\nin 8-bit levels; one colour scale\n"
+                    f"0..{vmax:.0f} levels (the largest error)", fontsize=10, va="center")
     im = None
     for k, ((p, m, path), diff) in enumerate(zip(cols, diffs), start=1):
         axes[0][k].imshow(load_rgb(path).astype(np.uint8))
-        axes[0][k].set_title(f"{p} {m}", fontsize=9)
-        im = axes[1][k].imshow(diff, cmap="inferno", vmin=0, vmax=vmax)
-        axes[1][k].set_title(f"error: max {diff.max():.0f}, mean {diff.mean():.2f} levels", fontsize=8)
+        axes[0][k].set_title(f"{p} {m}", fontsize=10)
+        im = axes[1][k].imshow(diff, cmap="viridis", vmin=0, vmax=vmax, interpolation="nearest")
+        axes[1][k].set_title(f"error: max {diff.max():.0f}, mean {diff.mean():.2f} levels", fontsize=9)
     for row in axes:
         for ax in row:
             ax.set_xticks([])
             ax.set_yticks([])
     if im is not None:
         cb = fig.colorbar(im, ax=list(axes[1][1:]), fraction=0.02, pad=0.01)
-        cb.set_label("levels", fontsize=8)
+        cb.set_label("levels", fontsize=9)
     fig.suptitle(f"{scene} {size}", fontsize=10)
     name = f"strip_{scene}_{size}.png"
     fig.savefig(os.path.join(out_dir, name), dpi=110)
@@ -303,7 +333,7 @@ def main():
     plots = []
     for size in sizes:
         for scene in scenes:
-            n = speed_error_plot(rows, scene, size, args.output)
+            n = speed_error_plot(rows, res["variants"], scene, size, args.output)
             if n:
                 plots.append(n)
     if plots:

@@ -12,6 +12,7 @@
 #include "common_options.hpp"
 #include "commands.hpp"
 #include "device_option.hpp"
+#include "error_pictures.hpp"
 #include "plan_cli.hpp"
 #include "progress.hpp"
 #include "tune_cache.hpp"
@@ -45,6 +46,7 @@ struct RenderArgs {
   bool float_output = false, no_error = false, quiet = false, highlight_test = false;
   PlanArgs plan;
   std::string tune_cache;
+  std::string reference_image, error_map, error_reference = "ideal";  // the pictures of the error
   std::string distribute, rank_partition;  // --distribute: MPI ranks (docs/distributed.md)
   std::string device_origin = "--device";  // or PARASHADE_DEVICE (device_option.hpp)
   bool no_tuned = false, explicit_config = false, keep_going = false;  // explicit: --tile, --work-items, --cu or --partition given
@@ -85,22 +87,61 @@ std::string describe(const ErrorMetrics& e) {
   return buf;
 }
 
-// The image's error against the exact reference: the method's own ideal and exact Phong.
-nlohmann::json error_figures(const Scene& scene, Method method, const RenderedImage& image, std::vector<std::string>& lines) {
-  nlohmann::json errors = nlohmann::json::object();
+// The exact reference of the scene's frame: the method's own ideal and exact Phong.
+ReferenceImage reference_of(const Scene& scene, Method method) {
   ScreenGeometry g;
   build_screen_geometry(scene, {method, true}, g);
-  const ReferenceImage ref = render_reference(scene, g, method);
-  const ErrorMetrics ideal =
-      compare_to_reference(image, ref.covered, ref.ideal,
-                           // combined's own ideal is Phong's (segment ends are exact Phong)
-                           method == Method::combined ? "ideal phong" : std::string("ideal ") + method_name(method));
+  return render_reference(scene, g, method);
+}
+
+// The name of the method's own ideal; combined's is Phong's (segment ends are exact Phong).
+std::string ideal_name(Method method) {
+  return method == Method::combined ? "ideal phong" : std::string("ideal ") + method_name(method);
+}
+
+// The image's error against the exact reference: the method's own ideal and exact Phong.
+nlohmann::json error_figures(const ReferenceImage& ref, Method method, const RenderedImage& image,
+                             std::vector<std::string>& lines) {
+  nlohmann::json errors = nlohmann::json::object();
+  const ErrorMetrics ideal = compare_to_reference(image, ref.covered, ref.ideal, ideal_name(method));
   const ErrorMetrics exact = compare_to_reference(image, ref.covered, ref.exact, "exact phong");
   errors["implementation"] = to_json(ideal);
   errors["method"] = to_json(exact);
   lines.push_back("error vs " + ideal.reference + ": " + describe(ideal));
   lines.push_back("error vs " + exact.reference + ": " + describe(exact));
   return errors;
+}
+
+// --reference-image and --error-map were given.
+bool wants_pictures(const RenderArgs& a) { return !a.reference_image.empty() || !a.error_map.empty(); }
+
+// The pictures' options make sense together with the rest of the command line (before any work).
+void check_picture_options(const RenderArgs& a) {
+  if (a.error_reference != "ideal" && a.error_reference != "exact")
+    throw UsageError("--error-reference must be ideal (the method's own ideal) or exact (exact Phong), not '" +
+                     a.error_reference + "'");
+  if (wants_pictures(a) && a.no_error)
+    throw UsageError(std::string(a.error_map.empty() ? "--reference-image" : "--error-map") +
+                     " needs the exact reference, which --no-error skips");
+}
+
+// --reference-image and --error-map against the reference --error-reference names, staged: the caller
+// commits them with its other outputs.
+std::vector<StagedFile> stage_error_pictures(const RenderArgs& a, Method method, const ReferenceImage& ref,
+                                             const RenderedImage& image, std::vector<std::string>& lines) {
+  const bool exact = a.error_reference == "exact";
+  const std::vector<glm::dvec3>& values = exact ? ref.exact : ref.ideal;
+  const std::string name = exact ? "exact phong" : ideal_name(method);
+  std::vector<StagedFile> files;
+  if (!a.reference_image.empty()) {
+    files.push_back(stage_image(a.reference_image, levels_image(values, ref.width, ref.height)));
+    lines.push_back("reference image " + a.reference_image + ": " + name);
+  }
+  if (!a.error_map.empty()) {
+    files.push_back(stage_error_map(a.error_map, image, ref.covered, values, lines));
+    lines.back() += ", against " + name;
+  }
+  return files;
 }
 
 // render --distribute: the frame across MPI ranks (docs/distributed.md); every rank runs this.
@@ -154,12 +195,22 @@ int run_distributed_checked(const RenderArgs& a, RenderOptions options, const st
     return scene;
   };
   job.check_destinations = [&] {
+    check_distinct_files({{"-o", a.output}, {"--report", a.report}, {"--reference-image", a.reference_image},
+                          {"--error-map", a.error_map}},
+                         {a.scene});
     check_image_destination(a.output);
     if (!a.report.empty()) check_report_destination(a.report);
+    if (!a.reference_image.empty()) check_image_destination(a.reference_image);
+    if (!a.error_map.empty()) check_image_destination(a.error_map);
   };
   const Method method = options.method;
-  job.error_figures = [method](const Scene& scene, const RenderedImage& image, std::vector<std::string>& lines) {
-    return error_figures(scene, method, image, lines);
+  // Rank 0 holds the whole image and scene here; the pictures are written at once, before the image.
+  job.error_figures = [method, &a](const Scene& scene, const RenderedImage& image, std::vector<std::string>& lines) {
+    const ReferenceImage ref = reference_of(scene, method);
+    nlohmann::json errors = error_figures(ref, method, image, lines);
+    std::vector<StagedFile> pictures = stage_error_pictures(a, method, ref, image, lines);
+    for (StagedFile& f : pictures) f.commit();
+    return errors;
   };
   return run_distributed_render(job);
 }
@@ -202,6 +253,7 @@ int run_render(const RenderArgs& a) {
   if (a.warmup < 0 || a.warmup > kMaxFrames)
     throw UsageError("--warmup must be 0.." + std::to_string(kMaxFrames) + " (got " + std::to_string(a.warmup) + ")");
   if (a.work_items < 0) throw UsageError("--work-items must not be negative");
+  check_picture_options(a);
   if (!a.distribute.empty()) return run_distributed(a, options, size);
   if (!a.rank_partition.empty()) throw UsageError("--rank-partition needs --distribute sort-last");
   // --cu with sub:NAME:N: the units' depth pass spread over the sub-devices; without --cu a device list
@@ -216,11 +268,18 @@ int run_render(const RenderArgs& a) {
   std::vector<std::filesystem::path> inputs;  // the scene file and its meshes
   Scene scene = load_scene_at(a.scene, size, a.size, &inputs);
   for (const std::string& w : scene.warnings) std::cerr << "parashade: warning: " << w << "\n";
-  check_distinct_files({{"-o", a.output}, {"--report", a.report}}, inputs);
+  check_distinct_files({{"-o", a.output}, {"--report", a.report}, {"--reference-image", a.reference_image},
+                        {"--error-map", a.error_map}},
+                       inputs);
   // Fail on an unwritable output before the work, not after it.
   const std::filesystem::path out_path(a.output);
   check_image_destination(out_path);
   if (!a.report.empty()) check_report_destination(a.report);
+  if (!a.reference_image.empty()) check_image_destination(a.reference_image);
+  if (!a.error_map.empty()) check_image_destination(a.error_map);
+  if (wants_pictures(a) && is_device_list(a.device) && !units_on_sub_devices)
+    throw UsageError("--reference-image and --error-map need the error figures, which a frame split across devices ('" +
+                     a.device + "') does not compute; render on one device");
 
   if (a.keep_going && units_on_sub_devices)
     throw UsageError("--keep-going drops devices of a split frame; the units of --cu on sub-devices ('" + a.device +
@@ -276,11 +335,17 @@ int run_render(const RenderArgs& a) {
 
   nlohmann::json errors = nlohmann::json::object();
   std::vector<std::string> error_lines;
-  if (!a.no_error) errors = error_figures(scene, method, frame.image, error_lines);
+  std::optional<ReferenceImage> ref;
+  if (!a.no_error) {
+    ref = reference_of(scene, method);
+    errors = error_figures(*ref, method, frame.image, error_lines);
+  }
 
-  // Both outputs are written to temporary files first and replace their destinations only when both were
-  // written: a failed report leaves the previous image in place.
+  // Every output is written to a temporary file first and replaces its destination only when all were
+  // written: a failed report leaves the previous image (and pictures) in place.
   StagedFile staged_image = stage_image(out_path, frame.image);
+  std::vector<StagedFile> pictures;
+  if (ref) pictures = stage_error_pictures(a, method, *ref, frame.image, error_lines);
   const double pixels = double(scene.width) * scene.height;
   nlohmann::json report = {
       {"scene", scene.name},
@@ -328,13 +393,11 @@ int run_render(const RenderArgs& a) {
     report["plan"]["measured_frame_ms"] = med.total_ms;
     report["plan"]["mapping"] = unit_mapping_json(frame.stats, med);
   }
-  if (!a.report.empty()) {
-    StagedFile staged_report = stage_text(a.report, report_text(report, "render"));
-    staged_image.commit();
-    staged_report.commit();
-  } else {
-    staged_image.commit();
-  }
+  std::optional<StagedFile> staged_report;
+  if (!a.report.empty()) staged_report.emplace(stage_text(a.report, report_text(report, "render")));
+  staged_image.commit();
+  for (StagedFile& f : pictures) f.commit();
+  if (staged_report) staged_report->commit();
 
   std::printf("%s: %dx%d, %llu triangles (%llu after culling and clipping), method %s\n", scene.name.c_str(),
               scene.width, scene.height, (unsigned long long)frame.stats.geometry.triangles_in,
@@ -465,6 +528,16 @@ Command add_render_command(CLI::App& app) {
                 "combined:*: skip the specular term per triangle and light where no highlight can fall ([Dembitsky 2025, software/hardware rendering] ch. 3)");
   cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
   cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");
+  cmd->add_option("--reference-image", a->reference_image,
+                  "Also write the exact reference (double precision, --error-reference) as an image; any format -o "
+                  "takes (EXR keeps the unrounded values)");
+  cmd->add_option("--error-map", a->error_map,
+                  "Also write the per-pixel error (levels, largest channel difference, as the report's max) as a "
+                  "viridis colour map with its scale; white: not compared (docs/pictures.md)");
+  cmd->add_option("--error-reference", a->error_reference,
+                  "Reference of --reference-image and --error-map: ideal (the method's own ideal, the report's "
+                  "'implementation' error) or exact (exact Phong, the report's 'method' error)")
+      ->capture_default_str();
   add_quiet_flag(*cmd, a->quiet);
   return {cmd, [a, cmd]() {
             a->explicit_config = cmd->count("--tile") + cmd->count("--work-items") + cmd->count("--cu") +

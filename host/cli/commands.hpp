@@ -12,6 +12,7 @@ struct Command {
   std::function<int()> run;
 };
 Command add_combinations_command(CLI::App& app);
+Command add_compare_command(CLI::App& app);
 Command add_devices_command(CLI::App& app);
 Command add_phong_study_command(CLI::App& app);
 Command add_render_command(CLI::App& app);

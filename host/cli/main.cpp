@@ -29,7 +29,8 @@ int main(int argc, char** argv) {
                                               cli::add_scaling_command(app),
                                               cli::add_unit_error_command(app),
                                               cli::add_combinations_command(app),
-                                              cli::add_vectors_command(app)};
+                                              cli::add_vectors_command(app),
+                                              cli::add_compare_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -39,7 +40,7 @@ int main(int argc, char** argv) {
   try {
     for (const cli::Command& c : commands)
       if (c.app->parsed()) return c.run();
-    std::cerr << "parashade: error: a command is required: devices, phong-study, render, plan, tune, scaling, unit-error or vectors\n"
+    std::cerr << "parashade: error: a command is required: devices, phong-study, render, plan, tune, scaling, unit-error, vectors or compare\n"
                  "Run with --help for more information.\n";
     return int(ExitCode::usage);
   } catch (const Error& e) {

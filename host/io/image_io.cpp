@@ -166,7 +166,7 @@ StagedFile stage_image(const fs::path& path, const RenderedImage& image) {
   return file;
 }
 
-RenderedImage read_image(const fs::path& path) {
+RenderedImage read_image(const fs::path& path, int* channels_out) {
   auto in = OIIO::ImageInput::open(path.string());
   if (!in) {
     const std::string why = take_global_oiio_error();
@@ -176,6 +176,7 @@ RenderedImage read_image(const fs::path& path) {
   const int channels = spec.nchannels;
   if (spec.width < 1 || spec.height < 1 || channels < 1)
     throw InputError("cannot read " + path.string() + ": empty image");
+  if (channels_out) *channels_out = channels;
 
   RenderedImage image;
   image.width = spec.width;

@@ -23,11 +23,8 @@ glm::dvec3 image_value(const RenderedImage& image, std::size_t p) {
   return glm::dvec3(image.rgba[4 * p], image.rgba[4 * p + 1], image.rgba[4 * p + 2]);
 }
 
-}  // namespace
-
-ErrorMetrics compare_to_reference(const RenderedImage& image, const std::vector<std::uint8_t>& ref_covered,
-                                  const std::vector<glm::dvec3>& ref_values,
-                                  const std::string& reference_name) {
+void check_sizes(const RenderedImage& image, const std::vector<std::uint8_t>& ref_covered,
+                 const std::vector<glm::dvec3>& ref_values, const std::string& reference_name) {
   const std::size_t pixels = std::size_t(std::max(image.width, 0)) * std::size_t(std::max(image.height, 0));
   if (image.rgba.size() != 4 * pixels || (!image.rgb_float.empty() && image.rgb_float.size() != 3 * pixels) ||
       ref_covered.size() != pixels || ref_values.size() != pixels) {
@@ -35,6 +32,31 @@ ErrorMetrics compare_to_reference(const RenderedImage& image, const std::vector<
                      std::to_string(image.height) + ") and the reference '" + reference_name +
                      "' differ in size");
   }
+}
+
+}  // namespace
+
+glm::dvec3 channel_errors(const RenderedImage& image, std::size_t pixel, const glm::dvec3& reference) {
+  return glm::abs(reference - image_value(image, pixel));
+}
+
+std::vector<double> pixel_errors(const RenderedImage& image, const std::vector<std::uint8_t>& ref_covered,
+                                 const std::vector<glm::dvec3>& ref_values) {
+  check_sizes(image, ref_covered, ref_values, "per-pixel error");
+  std::vector<double> errors(ref_values.size(), std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t p = 0; p < errors.size(); ++p) {
+    if (!image.covered(p) || ref_covered[p] == 0) continue;
+    const glm::dvec3 e = channel_errors(image, p, ref_values[p]);
+    errors[p] = std::max({e.x, e.y, e.z});
+  }
+  return errors;
+}
+
+ErrorMetrics compare_to_reference(const RenderedImage& image, const std::vector<std::uint8_t>& ref_covered,
+                                  const std::vector<glm::dvec3>& ref_values,
+                                  const std::string& reference_name) {
+  check_sizes(image, ref_covered, ref_values, reference_name);
+  const std::size_t pixels = ref_values.size();
 
   ErrorMetrics m;
   m.reference = reference_name;
@@ -62,7 +84,7 @@ ErrorMetrics compare_to_reference(const RenderedImage& image, const std::vector<
     if (!image.covered(p) || ref_covered[p] == 0) continue;
     const glm::dvec3 diff = ref_values[p] - image_value(image, p);
     const glm::dvec3 spread = ref_values[p] - ref_mean;
-    const glm::dvec3 abs_diff = glm::abs(diff);
+    const glm::dvec3 abs_diff = channel_errors(image, p, ref_values[p]);
     error_sq += glm::dot(diff, diff);
     spread_sq += glm::dot(spread, spread);
     abs_sum += abs_diff.x + abs_diff.y + abs_diff.z;

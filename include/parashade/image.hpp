@@ -5,6 +5,8 @@
 #include <new>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 namespace parashade {
 
 // Page-aligned storage, so an OpenCL device can write a frame straight into it (CL_MEM_USE_HOST_PTR).
@@ -43,7 +45,13 @@ void write_image(const std::filesystem::path& path, const RenderedImage& image);
 void check_image_destination(const std::filesystem::path& path);
 
 // Reads an image as 8-bit RGBA (alpha 255 where the file has none; grey files give R = G = B). Float
-// files (EXR) also fill rgb_float with their values in levels (x255). Throws InputError.
-RenderedImage read_image(const std::filesystem::path& path);
+// files (EXR) also fill rgb_float with their values in levels (x255). `channels`, when given, receives
+// the file's channel count. Throws InputError.
+RenderedImage read_image(const std::filesystem::path& path, int* channels = nullptr);
+
+// An image of values in levels (row 0 at the top; alpha 255): 8-bit channels rounded to the nearest
+// level after clamping to [0, 255], and rgb_float holding the values themselves (EXR writes them).
+// Throws InputError when `levels` does not hold width x height values.
+RenderedImage levels_image(const std::vector<glm::dvec3>& levels, int width, int height);
 
 }  // namespace parashade

@@ -30,4 +30,14 @@ struct ErrorMetrics {
 ErrorMetrics compare_to_reference(const RenderedImage& image, const std::vector<std::uint8_t>& ref_covered,
                                   const std::vector<glm::dvec3>& ref_values, const std::string& reference_name);
 
+// |reference - image| per channel at `pixel`, in levels, as compare_to_reference counts it (the image's
+// float values clamped to [0, 255] when present, else its 8-bit values).
+glm::dvec3 channel_errors(const RenderedImage& image, std::size_t pixel, const glm::dvec3& reference);
+
+// Per pixel, the largest of channel_errors: compare_to_reference's max_abs is the largest of these.
+// NaN where the image or the reference does not cover the pixel (not compared). Throws InputError when
+// the sizes differ.
+std::vector<double> pixel_errors(const RenderedImage& image, const std::vector<std::uint8_t>& ref_covered,
+                                 const std::vector<glm::dvec3>& ref_values);
+
 }  // namespace parashade

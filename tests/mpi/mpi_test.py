@@ -105,6 +105,24 @@ def identity(tmp, mode, cases):
             os.remove(img)
 
 
+def error_pictures(tmp, mode):
+    """--error-map and --reference-image under --distribute: rank 0 has the whole image and scene, so its
+    files are the one-process render's, byte for byte."""
+    opts = ["--size", SIZE, "-q", "--no-tuned", "--warmup", "0", "--frames", "1"]
+    files = {}
+    for who in ("one", "dist"):
+        files[who] = [os.path.join(tmp, "%s_%s.png" % (who, k)) for k in ("image", "map", "reference")]
+        args = ["render", SCENE, "-o", files[who][0], "--error-map", files[who][1], "--reference-image",
+                files[who][2]] + opts
+        rc, out, err = run([PARASHADE] + args) if who == "one" else mpirun(2, args + ["--distribute", mode])
+        check(rc == 0, "%s error pictures (%s): exit %d: %s" % (mode, who, rc, err.strip()))
+        if rc != 0:
+            return
+    for k, name in enumerate(("image", "error map", "reference image")):
+        check(os.path.exists(files["dist"][k]) and same_bytes(files["one"][k], files["dist"][k]),
+              "%s: the distributed %s differs from the one-process one" % (mode, name))
+
+
 def main():
     with tempfile.TemporaryDirectory() as tmp:
         tie = os.path.join(tmp, "tie.json")
@@ -121,6 +139,7 @@ def main():
                 ("segment:4 fixed, --cu 2", SCENE, ["--units", "segment:4", "--arith", "fixed", "--cu", "2"], [(2, [])]),
                 ("phong classic unit", SCENE, ["--method", "phong", "--units", "classic"], [(2, [])]),
             ])
+            error_pictures(tmp, "sort-last")
         elif GROUP == "sort-first":
             identity(tmp, "sort-first", [
                 ("gouraud float", SCENE, [], [(1, []), (2, []), (3, []), (4, [])]),

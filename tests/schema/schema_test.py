@@ -142,6 +142,8 @@ def run_all(tmp):
     validate_report("vectors", out("vectors.json"))
     run(["combinations", "--report", out("combinations.json")])
     validate_report("combinations", out("combinations.json"))
+    run(["compare", out("r.png"), out("r.png"), "--report", out("compare.json")])
+    validate_report("compare", out("compare.json"))
 
     # Every schema file is a report kind this test wrote (or the scene or common schema): none unchecked.
     kinds = {os.path.basename(p)[: -len(".schema.json")] for p in glob.glob(os.path.join(SCHEMAS, "*.schema.json"))}
