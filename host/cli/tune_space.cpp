@@ -94,6 +94,10 @@ int index_of(const TuneSpace& s, const char* name) {
   return int(std::find(s.names.begin(), s.names.end(), name) - s.names.begin());
 }
 
+const ParamDef& param_def(const std::string& name) {
+  return *std::find_if(param_defs().begin(), param_defs().end(), [&](const ParamDef& d) { return name == d.name; });
+}
+
 }  // namespace
 
 const std::vector<std::string>& tune_param_names() {
@@ -129,7 +133,7 @@ TuneSpace default_tune_space(const std::string& method, int compute_units) {
               partitions,
               distinct({cu, 2 * cu, 4 * cu, 16}),
               {"16", "64", "256"},
-              {for_option("--method", [&] { return param_defs()[5].canonical(method); })},
+              {for_option("--method", [&] { return param_def("method").canonical(method); })},
               {"none"},
               {"exact"},
               {"exact"}};
