@@ -193,6 +193,7 @@ int run_tune(const TuneArgs& a) {
     space = default_tune_space(a.method, device->info().compute_units);
     for (const std::string& p : a.params) set_tune_param(space, p);
     points = enumerate_points(space, base);
+    if (points.valid.empty()) throw UsageError("--param: the space has no point the table of combinations models");
   });
   const DeviceInfo& dev = device->info();
   if (rank == 0) {
@@ -207,7 +208,6 @@ int run_tune(const TuneArgs& a) {
     if (const std::string stale = cache->stale_entries(dev); !stale.empty() && !a.quiet)
       std::cerr << "parashade: note: " << stale << "\n";
   }
-  if (points.valid.empty()) throw UsageError("--param: the space has no point the table of combinations models");
 
   const auto started = std::chrono::steady_clock::now();
   const auto elapsed_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };

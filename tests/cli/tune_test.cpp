@@ -92,6 +92,7 @@ TEST_F(CliTune, BadOptionsAreUsageErrors) {
   EXPECT_TRUE(fails_with(tune({"--objective", "slowest"}), kUsage, {"--objective", "slowest", "fastest"}));
   EXPECT_TRUE(fails_with(tune({"--max-error", "-1"}), kUsage, {"--max-error"}));
   EXPECT_TRUE(fails_with(tune({"--mpi", "--strategy", "anneal"}), kUsage, {"--mpi", "anneal"}));
+  EXPECT_TRUE(fails_with(tune({"--param", "method=flat", "--param", "unit=counter"}), kUsage, {"no point"}));
   EXPECT_TRUE(nothing_written());
 }
 
