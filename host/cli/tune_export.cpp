@@ -19,23 +19,25 @@ std::string key_of(const nlohmann::json& params, const std::vector<std::string>&
 
 }  // namespace
 
-nlohmann::json kernel_tuner_cache(const TuneSpace& space, const std::string& device_name, const std::string& kernel_name,
+nlohmann::ordered_json kernel_tuner_cache(const TuneSpace& space, const std::string& device_name, const std::string& kernel_name,
                                   int width, int height, const nlohmann::json& candidates) {
-  nlohmann::json tune_params = nlohmann::json::object();
+  nlohmann::ordered_json tune_params = nlohmann::ordered_json::object();
   for (std::size_t i = 0; i < space.names.size(); ++i) {
-    nlohmann::json values = nlohmann::json::array();
+    nlohmann::ordered_json values = nlohmann::ordered_json::array();
     const bool numeric = space.names[i] == "tile" || space.names[i] == "work_items" || space.names[i] == "units" ||
                          space.names[i] == "batch";
-    for (const std::string& v : space.values[i]) values.push_back(numeric ? nlohmann::json(std::stoi(v)) : nlohmann::json(v));
+    for (const std::string& v : space.values[i])
+      values.push_back(numeric ? nlohmann::ordered_json(std::stoi(v)) : nlohmann::ordered_json(v));
     // "-": a layout parameter nothing reads at that point (units without a plan, batch of a static one).
     for (const auto& c : candidates)
       if (c["params"][space.names[i]] == "-" && std::find(values.begin(), values.end(), "-") == values.end())
         values.push_back("-");
     tune_params[space.names[i]] = values;
   }
-  nlohmann::json cache = nlohmann::json::object();
+  nlohmann::ordered_json cache = nlohmann::ordered_json::object();
   for (const auto& c : candidates) {
-    nlohmann::json e = c["params"];
+    nlohmann::ordered_json e;
+    for (const std::string& n : space.names) e[n] = c["params"][n];
     const std::vector<double> times = c.value("frame_ms_samples", std::vector<double>{});
     e["time"] = c["frame_ms"];
     e["times"] = times;
@@ -49,7 +51,7 @@ nlohmann::json kernel_tuner_cache(const TuneSpace& space, const std::string& dev
     for (const char* k : {"verified", "max_error", "nmse", "within_budget"}) e[k] = c.value(k, nlohmann::json());
     cache[key_of(c["params"], space.names)] = e;
   }
-  return {{"schema_version", "1.1.0"},
+  return nlohmann::ordered_json{{"schema_version", "1.1.0"},
           {"device_name", device_name},
           {"kernel_name", kernel_name},
           {"problem_size", {width, height}},

@@ -2,6 +2,7 @@
 // and budgets, the error-budget objective, cache invalidation by build and device, and the Kernel Tuner
 // export. A small procedural scene at a small size; one timed frame per candidate.
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <string>
 #include <vector>
@@ -259,6 +260,17 @@ TEST_F(CliTune, KernelTunerExportHasItsKeysAndOneEntryPerCandidate) {
   ASSERT_TRUE(succeeds(tune(args)));
   const nlohmann::json k = read_json(kt);
   ASSERT_FALSE(k.is_discarded()) << "not JSON";
+  // Kernel Tuner's reader treats a cache file as open for appending unless it ends in "}\n}" with the
+  // cache last (its util.correct_open_cache); anything else it "closes" again and fails to parse.
+  std::ifstream text_in(kt);
+  std::string text((std::istreambuf_iterator<char>(text_in)), std::istreambuf_iterator<char>());
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+  EXPECT_EQ(text.substr(text.size() - 3), "}\n}");
+  const nlohmann::ordered_json ordered = nlohmann::ordered_json::parse(text);
+  EXPECT_EQ(ordered.items().begin().key(), "schema_version");
+  std::string last;
+  for (const auto& item : ordered.items()) last = item.key();
+  EXPECT_EQ(last, "cache");
   for (const char* key : {"schema_version", "device_name", "kernel_name", "problem_size", "tune_params_keys",
                           "tune_params", "objective", "cache"})
     EXPECT_TRUE(k.contains(key)) << key;
