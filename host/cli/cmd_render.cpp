@@ -298,11 +298,14 @@ int run_render(const RenderArgs& a) {
   auto device = units_on_sub_devices ? std::move(sub.parent) : for_device(a.device_origin, [&] { return open_device(a.device); });
   const DeviceInfo& dev = device->info();
   nlohmann::json tuned = nullptr;
-  if (!a.no_tuned && !a.explicit_config && !options.unit_path()) {
+  const std::optional<TuneProblem> problem = tune_problem(scene, options);
+  if (!a.no_tuned && !a.explicit_config && problem) {
     const std::filesystem::path path = a.tune_cache.empty() ? default_tune_cache() : std::filesystem::path(a.tune_cache);
     try {
-      const TuneProblem problem{scene.name, scene.width, scene.height, method_name(method), "float"};
-      if (const auto best = TuneCache(path).best(dev, problem)) {
+      const TuneCache cache(path);
+      if (const std::string stale = cache.stale_entries(dev, &*problem); !stale.empty() && !a.quiet)
+        std::cerr << "parashade: note: " << stale << "\n";
+      if (const auto best = cache.best(dev, *problem)) {
         apply_tuned_params(best->at("params"), options);
         tuned = {{"cache", path.string()}, {"params", best->at("params")}, {"objective_ms", best->at("objective")}};
         std::cerr << "using the tuned configuration " << best->at("params").dump() << " from " << path.string()

@@ -4,12 +4,40 @@
 #include <fstream>
 
 #include "parashade/errors.hpp"
+#include "parashade/json_number.hpp"
 #include "parashade/report.hpp"
+#include "parashade/version.hpp"
 
 namespace parashade::cli {
+namespace {
+
+// The build an entry was measured with, "0.1.0+abc123def456": a timing from another build of the
+// kernels or the host stages says nothing about this one.
+std::string build_id() { return std::string(version) + "+" + git_hash; }
+
+}  // namespace
 
 nlohmann::json TuneProblem::to_json() const {
-  return {{"scene", scene}, {"width", width}, {"height", height}, {"method", method}, {"unit", unit}};
+  return {{"scene", scene}, {"width", width},         {"height", height},
+          {"method", method}, {"unit", unit}, {"normalize", normalize}, {"specular", specular}};
+}
+
+std::optional<TuneProblem> tune_problem(const Scene& scene, const RenderOptions& o) {
+  if (o.arith.fixed || o.dda_coverage || o.division.mode != DIV_CONSTANT) return std::nullopt;
+  TuneProblem p{scene.name, scene.width, scene.height, method_name(o.method)};
+  if (o.method == Method::combined) {
+    // Only what combined:K or combined:auto alone gives (the tuner's values of the method parameter).
+    const CombinedConfig plain = parse_combined(combined_name(o.combined));
+    const CombinedConfig& c = o.combined;
+    if (c.rule != plain.rule || c.highlight_test != plain.highlight_test || c.min_width != plain.min_width ||
+        c.max_error != plain.max_error)
+      return std::nullopt;
+    p.method = combined_name(c);
+  }
+  if (o.units) p.unit = unit_name(*o.units);
+  p.normalize = normalize_name(o.normalize);
+  p.specular = specular_name(o.specular);
+  return p;
 }
 
 std::filesystem::path default_tune_cache() {
@@ -20,7 +48,7 @@ std::filesystem::path default_tune_cache() {
 }
 
 TuneCache::TuneCache(std::filesystem::path path) : path_(std::move(path)) {
-  doc_ = {{"format", "parashade tune cache 1"}, {"objective", "frame_ms (median, lower is better)"},
+  doc_ = {{"format", "parashade tune cache 2"}, {"objective", "frame_ms (median, lower is better)"},
           {"tune_params_keys", {"tile", "work_items", "partition", "units", "batch"}},
           {"entries", nlohmann::json::array()}};
   std::error_code ec;
@@ -34,43 +62,89 @@ TuneCache::TuneCache(std::filesystem::path path) : path_(std::move(path)) {
   }
   if (!read.is_object() || !read.contains("entries") || !read["entries"].is_array())
     throw InputError("tune cache '" + path_.string() + "' has no \"entries\" array");
+  for (const auto& e : read["entries"])
+    if (!e.is_object()) throw InputError("tune cache '" + path_.string() + "' has an entry that is not an object");
   doc_["entries"] = read["entries"];
 }
 
-bool TuneCache::matches(const nlohmann::json& e, const DeviceInfo& d, const TuneProblem& p) const {
+bool TuneCache::ours(const nlohmann::json& e, const DeviceInfo& d) const {
   return e.value("device_name", "") == d.name && e.value("driver_version", "") == d.driver &&
-         e.contains("problem") && e["problem"] == p.to_json();
+         e.value("compute_units", -1) == d.compute_units && e.value("version", "") == build_id();
 }
 
-bool TuneCache::has(const DeviceInfo& d, const TuneProblem& p, const nlohmann::json& params) const {
+std::optional<nlohmann::json> TuneCache::find(const DeviceInfo& d, const TuneProblem& p, const nlohmann::json& params) const {
+  const nlohmann::json problem = p.to_json();
   for (const auto& e : doc_["entries"])
-    if (matches(e, d, p) && e.contains("params") && e["params"] == params) return true;
-  return false;
+    if (ours(e, d) && e.value("problem", nlohmann::json()) == problem && e.value("params", nlohmann::json()) == params)
+      return e;
+  return std::nullopt;
 }
 
-void TuneCache::add(const DeviceInfo& d, const TuneProblem& p, const nlohmann::json& params,
-                    const std::vector<double>& times, double objective, bool verified) {
+void TuneCache::add(const DeviceInfo& d, const TuneProblem& p, const nlohmann::json& params, const TuneMeasurement& m) {
   doc_["entries"].push_back({{"device_name", d.name},
                              {"driver_version", d.driver},
                              {"platform", d.platform},
                              {"compute_units", d.compute_units},
+                             {"version", build_id()},
                              {"problem", p.to_json()},
                              {"params", params},
-                             {"times_ms", times},
-                             {"objective", objective},
-                             {"verified", verified}});
+                             {"times_ms", m.times},
+                             {"objective", m.objective},
+                             {"verified", m.verified},
+                             {"max_error", m.max_error},
+                             {"nmse", number_or_null(m.nmse)}});
+}
+
+void TuneCache::write() const {
   std::error_code ec;
   if (path_.has_parent_path()) std::filesystem::create_directories(path_.parent_path(), ec);
   write_text_atomically(path_, doc_.dump(1) + "\n");
 }
 
 std::optional<nlohmann::json> TuneCache::best(const DeviceInfo& d, const TuneProblem& p) const {
+  const nlohmann::json problem = p.to_json();
   std::optional<nlohmann::json> out;
   for (const auto& e : doc_["entries"])
-    if (matches(e, d, p) && e.value("verified", false) && e.contains("objective") && e["objective"].is_number() &&
+    if (ours(e, d) && e.value("problem", nlohmann::json()) == problem && e.value("verified", false) &&
+        e.contains("objective") && e["objective"].is_number() &&
         (!out || e["objective"].get<double>() < (*out)["objective"].get<double>()))
       out = e;
   return out;
+}
+
+std::string TuneCache::stale_entries(const DeviceInfo& d, const TuneProblem* p) const {
+  int other_build = 0, other_device = 0;
+  std::string build_example, device_example;
+  for (const auto& e : doc_["entries"]) {
+    if (ours(e, d)) continue;
+    if (p) {
+      const nlohmann::json q = e.value("problem", nlohmann::json::object());
+      if (q.value("scene", "") != p->scene || q.value("width", 0) != p->width || q.value("height", 0) != p->height)
+        continue;
+    }
+    const bool same_device = e.value("device_name", "") == d.name && e.value("driver_version", "") == d.driver &&
+                             e.value("compute_units", -1) == d.compute_units;
+    if (same_device) {
+      ++other_build;
+      if (build_example.empty()) build_example = e.value("version", std::string("an unversioned build"));
+    } else {
+      ++other_device;
+      if (device_example.empty())
+        device_example = e.value("device_name", std::string("?")) + ", driver " + e.value("driver_version", std::string("?")) +
+                         ", " + std::to_string(e.value("compute_units", -1)) + " compute units";
+    }
+  }
+  if (!other_build && !other_device) return "";
+  std::string s = "tune cache '" + path_.string() + "': ";
+  if (other_build)
+    s += std::to_string(other_build) + " entr" + (other_build == 1 ? "y" : "ies") + " of another parashade build (" +
+         build_example + "; this is " + build_id() + ")";
+  if (other_build && other_device) s += " and ";
+  if (other_device)
+    s += std::to_string(other_device) + " entr" + (other_device == 1 ? "y" : "ies") + " of another device (" +
+         device_example + "; this is " + d.name + ", driver " + d.driver + ", " + std::to_string(d.compute_units) +
+         " compute units)";
+  return s + " not used";
 }
 
 nlohmann::json tuned_params(const RenderOptions& o) {
@@ -78,7 +152,7 @@ nlohmann::json tuned_params(const RenderOptions& o) {
   if (o.plan) {
     p["partition"] = partition_name(o.plan->partition);
     p["units"] = o.plan->units;
-    p["batch"] = o.plan->batch;
+    if (o.plan->partition == Partition::dynamic) p["batch"] = o.plan->batch;
   } else {
     p["partition"] = "none";
   }
@@ -96,7 +170,7 @@ void apply_tuned_params(const nlohmann::json& params, RenderOptions& o) {
       PlanOptions plan;
       plan.partition = parse_partition(part);
       plan.units = params.at("units").get<int>();
-      plan.batch = params.at("batch").get<int>();
+      if (params.contains("batch")) plan.batch = params.at("batch").get<int>();
       o.plan = plan;
     }
   } catch (const nlohmann::json::exception& e) {

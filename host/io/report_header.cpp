@@ -19,6 +19,8 @@ std::vector<std::string>& command_line() {
   return args;
 }
 
+}  // namespace
+
 std::string utc_now_iso8601() {
   const std::time_t now = std::time(nullptr);
   std::tm utc{};
@@ -27,8 +29,6 @@ std::string utc_now_iso8601() {
   std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &utc);
   return buf;
 }
-
-}  // namespace
 
 void set_report_command_line(int argc, const char* const* argv) {
   command_line().assign(argv, argv + argc);

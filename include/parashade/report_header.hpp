@@ -18,6 +18,9 @@ const std::vector<std::string>& report_command_line();
 // unreadable). Keys the body already has are not overwritten (a body may not take a header key).
 nlohmann::json& stamp_report(nlohmann::json& report, const std::string& kind, int version = 1);
 
+// Now, UTC, as 2026-12-02T22:10:00Z (the header's created_utc).
+std::string utc_now_iso8601();
+
 // Timed frames: {"frames", "warmup", "samples_ms", "min_ms", "median_ms", "mean_ms", "stddev_ms"}
 // (standard deviation of the samples, n - 1 in the denominator; 0 for one sample).
 nlohmann::json timing_json(const std::vector<double>& samples_ms, int warmup);

@@ -75,11 +75,11 @@ TEST_F(PlannerCli, TuneFillsTheCacheAndRenderUsesIt) {
     EXPECT_TRUE(e.value("verified", false)) << e.dump();
     EXPECT_TRUE(e.contains("device_name") && e.contains("driver_version") && e.contains("problem") && e.contains("params"));
   }
-  // Resumed: the cached configurations are skipped, new ones appended.
+  // Resumed: the cached configurations are skipped, the budget's worth of new ones appended.
   const RunResult second = run_parashade(tune, {}, std::chrono::seconds(300));
   ASSERT_TRUE(succeeds(second));
   std::ifstream in2(cache);
-  EXPECT_EQ(field(nlohmann::json::parse(in2, nullptr, false), "/entries").size(), 5u) << second;
+  EXPECT_EQ(field(nlohmann::json::parse(in2, nullptr, false), "/entries").size(), 6u) << second;
   EXPECT_NE(second.out.find("speed-up"), std::string::npos) << second;
 
   const RunResult used = render(scene, {"--tune-cache", cache});

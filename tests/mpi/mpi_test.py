@@ -3,7 +3,7 @@
 
     mpi_test.py PARASHADE SOURCE_DIR MPIEXEC GROUP
 
-GROUP is one of sort-last, sort-first, faults, sweep. The expected images come from the one-process render
+GROUP is one of sort-last, sort-first, faults, sweep (scaling --mpi), tune (tune --mpi). The expected images come from the one-process render
 (`parashade render` without MPI), never from the distributed code; images are compared byte for byte.
 """
 import json
@@ -214,6 +214,50 @@ def main():
             check(rc == 4 and "rank 2 of 3" in err and "PARASHADE_FAIL_DEVICE" in err,
                   "scaling --mpi with a failing rank 2: exit %d: %s" % (rc, err.strip()))
             check(not os.path.exists(rep), "scaling --mpi wrote a report after rank 2 failed")
+        elif GROUP == "tune":
+            # tune --mpi deals its candidates across the ranks; rank 0's merged report must equal the
+            # one-process report up to the timing fields (and what depends on them: the best, the
+            # confirmation; and the compute units, as for scaling).
+            timing = {"frame_ms", "frame_ms_samples", "compile_ms", "verify_ms", "timestamp"}
+
+            def untimed(path):
+                r = json.load(open(path))
+                r["device"].pop("compute_units")
+                r.pop("best")
+                r.pop("confirmation")
+                r["candidates"] = [{k: v for k, v in c.items() if k not in timing} for c in r["candidates"]]
+                return r
+            space = ["--param", "tile=16,32", "--param", "work_items=0,4", "--param", "partition=none,lpt",
+                     "--param", "units=2", "--param", "method=gouraud,phong,flat", "--param", "unit=none,counter"]
+            for strategy, budget, nps in (("brute", "100", (2, 3)), ("random", "7", (2,))):
+                args = ["tune", SCENE, "--size", SIZE, "--frames", "1", "-q", "--strategy", strategy, "--seed", "5",
+                        "--budget-runs", budget] + space
+                one = os.path.join(tmp, "one-%s.json" % strategy)
+                rc, out, err = run([PARASHADE] + args + ["--report", one, "--cache", one + ".cache"])
+                check(rc == 0, "unsharded tune %s failed: %s" % (strategy, err.strip()))
+                if rc != 0:
+                    continue
+                for np in nps:
+                    rep = os.path.join(tmp, "m%d-%s.json" % (np, strategy))
+                    rc, out, err = mpirun(np, args + ["--mpi", "--report", rep, "--cache", rep + ".cache"])
+                    check(rc == 0, "tune --mpi %s np=%d: exit %d: %s" % (strategy, np, rc, err.strip()))
+                    if rc != 0:
+                        continue
+                    a, b = untimed(one), untimed(rep)
+                    check(len(a["candidates"]) == int(budget) if strategy == "random" else len(a["candidates"]) > 10,
+                          "tune %s: %d candidates" % (strategy, len(a["candidates"])))
+                    check(a == b, "tune --mpi %s np=%d: merged report differs beyond timings: %s" %
+                          (strategy, np, [k for k in a if a[k] != b.get(k)]))
+                    check(out.count("wrote ") == 1, "tune --mpi np=%d: %d ranks reported" % (np, out.count("wrote ")))
+                    cached = json.load(open(rep + ".cache"))["entries"]
+                    check(len(cached) == len(b["candidates"]),
+                          "tune --mpi np=%d: the cache holds %d of %d candidates" % (np, len(cached), len(b["candidates"])))
+            rep = os.path.join(tmp, "fail.json")
+            rc, out, err = mpirun(2, ["tune", SCENE, "--size", SIZE, "--frames", "1", "-q", "--mpi", "--report", rep,
+                                      "--cache", rep + ".cache"] + space, {1: {"PARASHADE_FAIL_DEVICE": "pthread"}})
+            check(rc == 4 and "rank 1 of 2" in err and "PARASHADE_FAIL_DEVICE" in err,
+                  "tune --mpi with a failing rank 1: exit %d: %s" % (rc, err.strip()))
+            check(not os.path.exists(rep), "tune --mpi wrote a report after rank 1 failed")
         else:
             sys.exit("unknown group " + GROUP)
     if failures:

@@ -1,0 +1,303 @@
+// parashade tune (docs/tuning.md): the search space of --param and its errors, the strategies' sequences
+// and budgets, the error-budget objective, cache invalidation by build and device, and the Kernel Tuner
+// export. A small procedural scene at a small size; one timed frame per candidate.
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cli_fixture.hpp"
+
+namespace parashade {
+namespace {
+
+using namespace testing_support;
+
+class CliTune : public CliTest {
+ protected:
+  std::filesystem::path cache() const { return out_dir() / "cache.json"; }
+
+  // tune SCENE --cache out/cache.json --report out/report.json --frames 1 -q on the test device, then `extra`.
+  RunResult tune(std::vector<std::string> extra, const std::filesystem::path& cache_file = {}) const {
+    std::vector<std::string> args = {"tune",     scene_.string(), "--cache", (cache_file.empty() ? cache() : cache_file).string(),
+                                     "--report", report().string(), "--frames", "1", "-q"};
+    const std::vector<std::string> device = device_args();
+    args.insert(args.end(), device.begin(), device.end());
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_parashade(args, {}, std::chrono::seconds(300));
+  }
+
+  // The candidates' parameters in the report, in order.
+  std::vector<nlohmann::json> visited() const {
+    std::vector<nlohmann::json> out;
+    for (const auto& c : field(read_report(), "/candidates")) out.push_back(c["params"]);
+    return out;
+  }
+
+  nlohmann::json read_json(const std::filesystem::path& p) const {
+    std::ifstream in(p);
+    return nlohmann::json::parse(in, nullptr, false);
+  }
+
+  // The error of the image `render` gives for `method`, against exact Phong, measured by render itself.
+  double render_error(const std::string& method) const {
+    const RunResult r = render(scene_, {"--method", method, "--no-tuned"}, ErrorFigures::compute);
+    EXPECT_TRUE(succeeds(r));
+    return field(read_report(), "/error/method/max_abs").get<double>();
+  }
+
+  std::filesystem::path scene_ = input("ball.json", sphere_scene());
+};
+
+// --- the space ---------------------------------------------------------------------------------------
+
+TEST_F(CliTune, UnknownParameterNamesTheValidOnes) {
+  const RunResult r = tune({"--param", "colour=red"});
+  EXPECT_TRUE(fails_with(r, kUsage, {"colour", "tile", "work_items", "partition", "units", "batch", "method", "unit",
+                                     "normalize", "specular"}));
+  EXPECT_TRUE(nothing_written());
+}
+
+TEST_F(CliTune, BadValuesNameTheParameterAndTheValidValues) {
+  // Each valid-value list comes from the project's own tables (tile sizes, partitions, the unit table,
+  // the method axis of the table of combinations, the Phong parsers).
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {"tile=17", {"--param tile", "17", "16, 32 or 64"}},
+      {"tile=big", {"--param tile", "big"}},
+      {"partition=lpt,zigzag", {"--param partition", "zigzag", "none", "round-robin", "dynamic"}},
+      {"units=99999", {"--param units", "99999", "4096"}},
+      {"batch=0", {"--param batch", "0"}},
+      {"method=gouraud,toon", {"--param method", "toon", "flat", "phong", "combined:auto"}},
+      {"method=combined:99", {"--param method", "combined:99"}},
+      {"unit=abacus", {"--param unit", "abacus", "classic", "sierpinski", "interleave"}},
+      {"normalize=nearest", {"--param normalize", "nearest", "slerp"}},
+      {"specular=mirror", {"--param specular", "mirror", "quadratic"}},
+      {"tile=16,32,16", {"--param tile", "twice"}},
+      {"tile=", {"--param tile", "16, 32 or 64"}},
+  };
+  for (const auto& [param, culprits] : cases) {
+    SCOPED_TRACE(param);
+    const RunResult r = tune({"--param", param});
+    ASSERT_TRUE(r.exited()) << r;
+    EXPECT_EQ(r.exit_code, kUsage) << r;
+    for (const std::string& c : culprits) EXPECT_NE(r.err.find(c), std::string::npos) << "stderr lacks '" << c << "'" << r;
+  }
+  EXPECT_TRUE(nothing_written());
+}
+
+TEST_F(CliTune, BadOptionsAreUsageErrors) {
+  EXPECT_TRUE(fails_with(tune({"--strategy", "genetic"}), kUsage, {"--strategy", "genetic", "anneal"}));
+  EXPECT_TRUE(fails_with(tune({"--objective", "slowest"}), kUsage, {"--objective", "slowest", "fastest"}));
+  EXPECT_TRUE(fails_with(tune({"--max-error", "-1"}), kUsage, {"--max-error"}));
+  EXPECT_TRUE(fails_with(tune({"--mpi", "--strategy", "anneal"}), kUsage, {"--mpi", "anneal"}));
+  EXPECT_TRUE(fails_with(tune({"--param", "method=flat", "--param", "unit=counter"}), kUsage, {"no point"}));
+  EXPECT_TRUE(nothing_written());
+}
+
+TEST_F(CliTune, RefusedCombinationsAreSkippedAndCounted) {
+  // flat through a shading unit is refused by the table of combinations; flat without one is not.
+  const RunResult r = tune({"--param", "tile=16", "--param", "work_items=0", "--param", "partition=none",
+                            "--param", "method=flat,gouraud", "--param", "unit=none,counter", "--budget-runs", "10"});
+  ASSERT_TRUE(succeeds(r));
+  EXPECT_NE(r.out.find("3 valid, 1 refused"), std::string::npos) << r;
+  const nlohmann::json rep = read_report();
+  EXPECT_EQ(field(rep, "/points/refused"), 1);
+  EXPECT_EQ(field(rep, "/points/valid"), 3);
+  EXPECT_EQ(field(rep, "/candidates").size(), 3u);
+  for (const auto& p : visited()) EXPECT_FALSE(p["method"] == "flat" && p["unit"] == "counter") << p;
+}
+
+TEST_F(CliTune, UnitsAndBatchAreOnlyVariedWhereAPlanReadsThem) {
+  const RunResult r = tune({"--param", "tile=16", "--param", "work_items=0", "--param", "partition=none,lpt,dynamic",
+                            "--param", "units=2,4", "--param", "batch=16,64", "--budget-runs", "20"});
+  ASSERT_TRUE(succeeds(r));
+  // none: 1 point; lpt: 2 (U); dynamic: 2 x 2.
+  EXPECT_EQ(field(read_report(), "/points/valid"), 7);
+  EXPECT_EQ(field(read_report(), "/points/not_applicable"), 12 - 7);
+  std::set<std::string> seen;
+  for (const auto& p : visited()) seen.insert(p.dump());
+  EXPECT_EQ(seen.size(), 7u);
+  EXPECT_EQ(seen.count(nlohmann::json({{"tile", 16}, {"work_items", 0}, {"partition", "none"}, {"units", "-"},
+                                       {"batch", "-"}, {"method", "gouraud"}, {"unit", "none"}, {"normalize", "exact"},
+                                       {"specular", "exact"}}).dump()), 1u);
+}
+
+// --- strategies ------------------------------------------------------------------------------------------
+
+const std::vector<std::string> kLayout = {"--param", "tile=16,32,64", "--param", "work_items=0,8",
+                                          "--param", "partition=none,lpt", "--param", "units=2,4"};
+
+TEST_F(CliTune, RandomVisitsTheSameSequenceForTheSameSeed) {
+  std::vector<std::string> args = kLayout;
+  args.insert(args.end(), {"--strategy", "random", "--seed", "7", "--budget-runs", "4"});
+  ASSERT_TRUE(succeeds(tune(args, out_dir() / "a.json")));
+  const auto first = visited();
+  ASSERT_EQ(first.size(), 4u);
+  ASSERT_TRUE(succeeds(tune(args, out_dir() / "b.json")));
+  EXPECT_EQ(visited(), first);
+  args[args.size() - 3] = "8";  // --seed 8
+  ASSERT_TRUE(succeeds(tune(args, out_dir() / "c.json")));
+  EXPECT_NE(visited(), first);
+}
+
+TEST_F(CliTune, BruteMeasuresTheDefaultFirstAndResumesFromTheCache) {
+  std::vector<std::string> args = kLayout;
+  args.insert(args.end(), {"--budget-runs", "3"});
+  ASSERT_TRUE(succeeds(tune(args)));
+  const auto first = visited();
+  ASSERT_EQ(first.size(), 3u);
+  EXPECT_EQ(first[0]["tile"], 16);
+  EXPECT_EQ(first[0]["work_items"], 0);
+  EXPECT_EQ(first[0]["partition"], "none");
+  // The next run continues the same sequence after what is cached.
+  const RunResult second = tune(args);
+  ASSERT_TRUE(succeeds(second));
+  EXPECT_NE(second.out.find("3 already in the cache"), std::string::npos) << second;
+  const auto next = visited();
+  ASSERT_EQ(next.size(), 3u);
+  for (const auto& p : next)
+    for (const auto& q : first) EXPECT_NE(p, q);
+}
+
+TEST_F(CliTune, AnnealKeepsToItsBudget) {
+  std::vector<std::string> args = kLayout;
+  args.insert(args.end(), {"--strategy", "anneal", "--seed", "3", "--budget-runs", "5"});
+  ASSERT_TRUE(succeeds(tune(args)));
+  const auto seen = visited();
+  EXPECT_EQ(seen.size(), 5u);
+  std::set<std::string> distinct;
+  for (const auto& p : seen) distinct.insert(p.dump());
+  EXPECT_EQ(distinct.size(), 5u);
+}
+
+// --- the error budget --------------------------------------------------------------------------------
+
+TEST_F(CliTune, AnErrorBudgetChoosesTheExactMethodOverTheFastOneThatMissesIt) {
+  // The budget lies between Phong's and Gouraud's error as render measures them: Gouraud must be
+  // recorded over the budget and the best must be Phong, however fast Gouraud is.
+  const double gouraud = render_error("gouraud"), phong = render_error("phong");
+  ASSERT_LT(phong + 1.0, gouraud) << "the scene does not separate the methods";
+  const double budget = (gouraud + phong) / 2;
+  const RunResult r = tune({"--param", "tile=16", "--param", "work_items=0", "--param", "partition=none", "--param",
+                            "method=gouraud,phong", "--max-error", std::to_string(budget)});
+  ASSERT_TRUE(succeeds(r));
+  const nlohmann::json rep = read_report();
+  ASSERT_EQ(field(rep, "/candidates").size(), 2u) << rep.dump(2);
+  for (const auto& c : rep["candidates"]) {
+    const bool is_gouraud = c["params"]["method"] == "gouraud";
+    EXPECT_NEAR(c["max_error"].get<double>(), is_gouraud ? gouraud : phong, 1e-9) << c.dump();
+    EXPECT_EQ(c["within_budget"], !is_gouraud) << c.dump();
+    EXPECT_TRUE(c["verified"].get<bool>()) << c.dump();
+  }
+  EXPECT_EQ(field(rep, "/best/params/method"), "phong") << rep.dump(2);
+  EXPECT_NE(r.out.find("render with: --method phong"), std::string::npos) << r;
+  // Without the budget Gouraud is eligible too (which is faster is the machine's business).
+  ASSERT_TRUE(succeeds(tune({"--param", "tile=16", "--param", "work_items=0", "--param", "partition=none", "--param",
+                             "method=gouraud,phong"},
+                            out_dir() / "nobudget.json")));
+  for (const auto& c : field(read_report(), "/candidates")) EXPECT_TRUE(c["within_budget"].get<bool>()) << c.dump();
+}
+
+TEST_F(CliTune, AnNmseBudgetNoCandidateMeetsLeavesNoBest) {
+  const RunResult r = tune({"--param", "tile=16", "--param", "work_items=0", "--param", "partition=none", "--param",
+                            "method=gouraud", "--max-nmse", "1e-30"});
+  ASSERT_TRUE(succeeds(r));
+  EXPECT_TRUE(field(read_report(), "/best").is_null());
+  EXPECT_NE(r.out.find("no candidate is eligible"), std::string::npos) << r;
+}
+
+// --- the cache -----------------------------------------------------------------------------------------
+
+TEST_F(CliTune, CacheEntriesOfAnotherBuildOrDeviceAreNotUsed) {
+  ASSERT_TRUE(succeeds(tune({"--param", "tile=32", "--param", "work_items=0", "--param", "partition=none"})));
+  const nlohmann::json good = read_json(cache());
+  ASSERT_EQ(field(good, "/entries").size(), 1u) << good.dump(2);
+  // The entry is used as it is ...
+  RunResult used = render(scene_, {"--tune-cache", cache().string()});
+  ASSERT_TRUE(succeeds(used));
+  EXPECT_NE(used.err.find("using the tuned configuration"), std::string::npos) << used;
+
+  const auto rewrite = [&](const std::string& pointer, const nlohmann::json& value, const std::string& name) {
+    nlohmann::json c = good;
+    c["entries"][0][nlohmann::json::json_pointer(pointer)] = value;
+    const std::filesystem::path p = out_dir() / name;
+    std::ofstream(p) << c.dump(1);
+    return p;
+  };
+  const auto other_build = rewrite("/version", "0.0.1+deadbee", "other_build.json");
+  const auto other_cus = rewrite("/compute_units", good["entries"][0]["compute_units"].get<int>() + 7, "other_cus.json");
+  const auto other_driver = rewrite("/driver_version", "driver from elsewhere", "other_driver.json");
+  for (const auto& [path, why] : std::vector<std::pair<std::filesystem::path, std::string>>{
+           {other_build, "another parashade build (0.0.1+deadbee"},
+           {other_cus, "another device"},
+           {other_driver, "another device (" + good["entries"][0]["device_name"].get<std::string>() + ", driver driver from elsewhere"}}) {
+    SCOPED_TRACE(path.filename().string());
+    // ... but not by render, which says why ...
+    const RunResult r = render(scene_, {"--tune-cache", path.string()});
+    ASSERT_TRUE(succeeds(r));
+    EXPECT_EQ(r.err.find("using the tuned configuration"), std::string::npos) << r;
+    const RunResult noisy = run_parashade({"render", scene_.string(), "-o", image().string(), "--frames", "1",
+                                           "--warmup", "0", "--no-error", "--tune-cache", path.string()});
+    EXPECT_NE(noisy.err.find(why), std::string::npos) << noisy;
+    EXPECT_TRUE(field(read_report(), "/tuned").is_null());
+    // ... and tune measures the configuration again instead of skipping it.
+    const RunResult again = tune({"--param", "tile=32", "--param", "work_items=0", "--param", "partition=none"}, path);
+    ASSERT_TRUE(succeeds(again));
+    EXPECT_NE(again.out.find("0 already in the cache"), std::string::npos) << again;
+    EXPECT_EQ(field(read_report(), "/candidates").size(), 1u);
+  }
+}
+
+// --- the Kernel Tuner export -------------------------------------------------------------------------
+
+TEST_F(CliTune, KernelTunerExportHasItsKeysAndOneEntryPerCandidate) {
+  const std::filesystem::path kt = out_dir() / "kt.json";
+  std::vector<std::string> args = kLayout;
+  args.insert(args.end(), {"--budget-runs", "5", "--export-kt", kt.string()});
+  ASSERT_TRUE(succeeds(tune(args)));
+  const nlohmann::json k = read_json(kt);
+  ASSERT_FALSE(k.is_discarded()) << "not JSON";
+  // Kernel Tuner's reader treats a cache file as open for appending unless it ends in "}\n}" with the
+  // cache last (its util.correct_open_cache); anything else it "closes" again and fails to parse.
+  std::ifstream text_in(kt);
+  std::string text((std::istreambuf_iterator<char>(text_in)), std::istreambuf_iterator<char>());
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+  EXPECT_EQ(text.substr(text.size() - 3), "}\n}");
+  const nlohmann::ordered_json ordered = nlohmann::ordered_json::parse(text);
+  EXPECT_EQ(ordered.items().begin().key(), "schema_version");
+  std::string last;
+  for (const auto& item : ordered.items()) last = item.key();
+  EXPECT_EQ(last, "cache");
+  for (const char* key : {"schema_version", "device_name", "kernel_name", "problem_size", "tune_params_keys",
+                          "tune_params", "objective", "cache"})
+    EXPECT_TRUE(k.contains(key)) << key;
+  EXPECT_EQ(k["problem_size"], nlohmann::json({64, 48}));
+  EXPECT_EQ(k["objective"], "time");
+  const nlohmann::json rep = read_report();
+  EXPECT_EQ(k["device_name"], rep["device"]["name"]);
+  ASSERT_EQ(k["cache"].size(), 5u);
+  ASSERT_EQ(rep["candidates"].size(), 5u);
+  const std::vector<std::string> keys = k["tune_params_keys"];
+  for (const auto& c : rep["candidates"]) {
+    std::string key;
+    for (const std::string& n : keys) {
+      const nlohmann::json& v = c["params"][n];
+      key += (key.empty() ? "" : ",") + (v.is_string() ? v.get<std::string>() : v.dump());
+      EXPECT_NE(std::find(k["tune_params"][n].begin(), k["tune_params"][n].end(), v), k["tune_params"][n].end())
+          << n << " value " << v << " is not in tune_params";
+    }
+    ASSERT_TRUE(k["cache"].contains(key)) << key;
+    const nlohmann::json& e = k["cache"][key];
+    for (const char* f : {"time", "times", "compile_time", "verification_time", "benchmark_time", "strategy_time",
+                          "framework_time", "timestamp"})
+      EXPECT_TRUE(e.contains(f)) << key << " lacks " << f;
+    EXPECT_EQ(e["time"], c["frame_ms"]);
+    for (const std::string& n : keys) EXPECT_EQ(e[n], c["params"][n]) << key;
+  }
+}
+
+}  // namespace
+}  // namespace parashade
