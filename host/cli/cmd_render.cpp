@@ -73,14 +73,6 @@ FrameTimings median_timings(const std::vector<FrameTimings>& f) {
   return m;
 }
 
-std::string describe(const ErrorMetrics& e) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, "NMSE %.3g, PSNR %.2f dB, max %.2f, mean %.3f levels, %llu px > 1 level, %llu coverage mismatches",
-                e.nmse, e.psnr_db, e.max_abs, e.mean_abs, (unsigned long long)e.pixels_over_1_level,
-                (unsigned long long)e.coverage_mismatch);
-  return buf;
-}
-
 // The image's error against the exact reference: the method's own ideal and exact Phong.
 nlohmann::json error_figures(const Scene& scene, Method method, const RenderedImage& image, std::vector<std::string>& lines) {
   nlohmann::json errors = nlohmann::json::object();
@@ -94,8 +86,8 @@ nlohmann::json error_figures(const Scene& scene, Method method, const RenderedIm
   const ErrorMetrics exact = compare_to_reference(image, ref.covered, ref.exact, "exact phong");
   errors["implementation"] = to_json(ideal);
   errors["method"] = to_json(exact);
-  lines.push_back("error vs " + ideal.reference + ": " + describe(ideal));
-  lines.push_back("error vs " + exact.reference + ": " + describe(exact));
+  lines.push_back("error vs " + ideal.reference + ": " + describe_error(ideal));
+  lines.push_back("error vs " + exact.reference + ": " + describe_error(exact));
   return errors;
 }
 
