@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "plan_cli.hpp"
 #include "progress.hpp"
+#include "register_events_cli.hpp"
 #include "tune_cache.hpp"
 #include "split_render_cli.hpp"
 #include "parashade/split_renderer.hpp"
@@ -263,6 +264,12 @@ int run_render(const RenderArgs& a) {
   nlohmann::json errors = nlohmann::json::object();
   std::vector<std::string> error_lines;
   if (!a.no_error) errors = error_figures(scene, method, frame.image, error_lines);
+  // Fixed point: the registers' wraps and saturations, from the golden models (the kernels count none).
+  std::optional<RegisterEvents> registers;
+  if (options.arith.fixed) {
+    registers = count_register_events(scene, options);
+    warn_register_events(*registers, options.arith, std::cerr);
+  }
 
   // Both outputs are written to temporary files first and replace their destinations only when both were
   // written: a failed report leaves the previous image in place.
@@ -307,6 +314,7 @@ int run_render(const RenderArgs& a) {
     report["span_division"] = division_name(options.division);
     report["coverage"] = a.coverage;
     report["modeled_clocks"] = to_json(frame.stats.clocks);
+    if (registers) report["registers"] = register_events_json(*registers);
   }
   if (frame.stats.plan) {
     report["plan"] = to_json(*frame.stats.plan);
@@ -338,6 +346,10 @@ int run_render(const RenderArgs& a) {
                 unit_name(options.unit()).c_str(), arith_name(options.arith).c_str(),
                 division_name(options.division).c_str(), (unsigned long long)c.clocks,
                 (unsigned long long)c.spans, (unsigned long long)c.pixels, c.clocks ? double(c.pixels) / double(c.clocks) : 0.0);
+    if (registers)
+      std::printf("registers: %llu of %llu span pixels wrapped around, %llu span register loads saturated\n",
+                  (unsigned long long)registers->wrapped_pixels, (unsigned long long)registers->span_pixels,
+                  (unsigned long long)registers->saturated_loads);
   }
   if (frame.stats.plan) {
     print_plan(*frame.stats.plan, !a.quiet);
