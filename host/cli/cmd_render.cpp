@@ -13,6 +13,7 @@
 #include "plan_cli.hpp"
 #include "progress.hpp"
 #include "register_events_cli.hpp"
+#include "vanishing_warnings.hpp"
 #include "tune_cache.hpp"
 #include "split_render_cli.hpp"
 #include "parashade/split_renderer.hpp"
@@ -261,6 +262,7 @@ int run_render(const RenderArgs& a) {
   const Frame& frame = *last;
   const FrameTimings med = median_timings(timings);
 
+  warn_vanishing(frame.stats, frame.image, std::cerr);
   nlohmann::json errors = nlohmann::json::object();
   std::vector<std::string> error_lines;
   if (!a.no_error) errors = error_figures(scene, method, frame.image, error_lines);
