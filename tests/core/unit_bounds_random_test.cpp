@@ -130,10 +130,10 @@ struct Tally {
   double worst_ratio = 0;  // max |error| / bound(z)
 };
 
-Tally run(const UnitConfig& unit, const Arithmetic& a, std::uint64_t seed, int triangles = kTriangles) {
+Tally run(const UnitConfig& unit, const Arithmetic& a, std::uint64_t seed) {
   std::mt19937_64 g(seed);
   std::vector<RandomTriangle> tris;
-  for (int t = 0; t < triangles; ++t) tris.push_back(random_triangle(g, t));
+  for (int t = 0; t < kTriangles; ++t) tris.push_back(random_triangle(g, t));
   const ScreenGeometry geometry = screen_geometry(tris);
   const std::size_t n = geometry.triangles.size();
   std::vector<TriangleGeometry> rec(n);
@@ -212,12 +212,12 @@ TEST(UnitBoundsOnRandomTriangles, FewIntegerBitsWrapAsPredictedAndOnlyByOneRange
   // 4096 pixels far past the 1-level margin of a value near +-255.
   for (const std::string& spec : bounded_units()) {
     const UnitConfig unit = parse_units(spec);
-    const Tally t = run(unit, Arithmetic{true, 9, 1}, 29, 40000);
+    const Tally t = run(unit, Arithmetic{true, 9, 1}, 29);  // wraps are rare: all 130 000 triangles
     // The counter unit cannot wrap while its end registers fit: the increment rounds to 0 when |dI| is
     // below half an LSB, else to at most twice |dI|, so neither half passes the end value it runs toward.
     if (unit.kind == UnitKind::counter) EXPECT_EQ(t.wrapped, 0u) << spec;
     else EXPECT_GT(t.wrapped, 0u) << spec << ": no register wrapped (" << t.long_spans << " long spans)";
-    EXPECT_GE(t.spans, 15000u) << spec << " (" << t.saturated_spans << " spans saturated a load)";
+    EXPECT_GE(t.spans, 50000u) << spec << " (" << t.saturated_spans << " spans saturated a load)";
     EXPECT_EQ(t.not_one_range, 0u) << spec;
     EXPECT_EQ(t.over_bound, 0u) << spec << ": worst reduced error " << t.worst_ratio << " x the bound";
     if (unit.kind == UnitKind::classic) EXPECT_EQ(t.wrapped, t.predicted_wraps) << spec;
