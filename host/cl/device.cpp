@@ -5,7 +5,9 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "captured_stderr.hpp"
 #include "parashade/errors.hpp"
+#include "pocl_cache_dir.hpp"
 
 namespace parashade {
 namespace {
@@ -38,6 +40,7 @@ std::vector<Found> enumerate() {
   // (teapot Phong kernel 3.6 or 7.2 ms, per process at random, docs/pipeline.md). Pinning them
   // (POCL_AFFINITY=1, read when PoCL initializes) removes that; an explicit setting is left alone.
   ::setenv("POCL_AFFINITY", "1", 0);
+  check_pocl_cache_dir();
   std::vector<cl::Platform> platforms;
   try {
     cl::Platform::get(&platforms);
@@ -156,6 +159,7 @@ cl::Program& Device::program(const std::vector<std::string>& files, const std::s
     rethrow_cl_error("creating program on '" + info_.name + "'");
   }
   const bool strict = kernel_warnings_are_errors();
+  CapturedStderr compiler_output;  // PoCL's compiler writes to stderr directly
   try {
     // -w: PoCL 3.1's compiler prints a bare "N warnings generated." to stderr on every fresh build
     // (the warnings themselves are not shown, and clang-14 finds none in our sources); errors still
@@ -167,11 +171,14 @@ cl::Program& Device::program(const std::vector<std::string>& files, const std::s
     try {
       log = program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device_);
     } catch (const cl::Error&) {
-      log = "(no build log)";
     }
+    const std::string printed = trim(compiler_output.take());
+    if (trim(log).empty()) log = printed.empty() ? "(no build log)" : "";
+    if (!printed.empty()) log = trim(log) + (trim(log).empty() ? "" : "\n") + "--- the compiler's own output ---\n" + printed;
     throw DeviceError("building kernels (" + files.back() + ", options '" + options + "') failed on '" + info_.name +
                       "': " + cl_error_name(e.err()) + "\n--- build log ---\n" + trim(log));
   }
+  compiler_output.take();  // a successful build's stray lines ("N warnings generated.") are dropped
   if (strict) {
     std::string log;
     try {

@@ -16,6 +16,7 @@ nlohmann::json to_json(const DeviceInfo& d) {
 
 nlohmann::json to_json(const ErrorMetrics& m) {
   return {{"reference", m.reference},
+          {"status", metrics_status_name(m.status)},  // says why a figure is null: identical or nothing compared
           {"nmse", number_or_null(m.nmse)},
           {"psnr_db", number_or_null(m.psnr_db)},
           {"max_abs", number_or_null(m.max_abs)},

@@ -15,6 +15,8 @@
 #include "error_pictures.hpp"
 #include "plan_cli.hpp"
 #include "progress.hpp"
+#include "register_events_cli.hpp"
+#include "vanishing_warnings.hpp"
 #include "tune_cache.hpp"
 #include "split_render_cli.hpp"
 #include "parashade/split_renderer.hpp"
@@ -79,14 +81,6 @@ FrameTimings median_timings(const std::vector<FrameTimings>& f) {
   return m;
 }
 
-std::string describe(const ErrorMetrics& e) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, "NMSE %.3g, PSNR %.2f dB, max %.2f, mean %.3f levels, %llu px > 1 level, %llu coverage mismatches",
-                e.nmse, e.psnr_db, e.max_abs, e.mean_abs, (unsigned long long)e.pixels_over_1_level,
-                (unsigned long long)e.coverage_mismatch);
-  return buf;
-}
-
 // The exact reference of the scene's frame: the method's own ideal and exact Phong.
 ReferenceImage reference_of(const Scene& scene, Method method) {
   ScreenGeometry g;
@@ -107,8 +101,8 @@ nlohmann::json error_figures(const ReferenceImage& ref, Method method, const Ren
   const ErrorMetrics exact = compare_to_reference(image, ref.covered, ref.exact, "exact phong");
   errors["implementation"] = to_json(ideal);
   errors["method"] = to_json(exact);
-  lines.push_back("error vs " + ideal.reference + ": " + describe(ideal));
-  lines.push_back("error vs " + exact.reference + ": " + describe(exact));
+  lines.push_back("error vs " + ideal.reference + ": " + describe_error(ideal));
+  lines.push_back("error vs " + exact.reference + ": " + describe_error(exact));
   return errors;
 }
 
@@ -336,12 +330,19 @@ int run_render(const RenderArgs& a) {
   const Frame& frame = *last;
   const FrameTimings med = median_timings(timings);
 
+  warn_vanishing(frame.stats, frame.image, std::cerr);
   nlohmann::json errors = nlohmann::json::object();
   std::vector<std::string> error_lines;
   std::optional<ReferenceImage> ref;
   if (!a.no_error) {
     ref = reference_of(scene, method);
     errors = error_figures(*ref, method, frame.image, error_lines);
+  }
+  // Fixed point: the registers' wraps and saturations, from the golden models (the kernels count none).
+  std::optional<RegisterEvents> registers;
+  if (options.arith.fixed) {
+    registers = count_register_events(scene, options);
+    warn_register_events(*registers, options.arith, std::cerr);
   }
 
   // Every output is written to a temporary file first and replaces its destination only when all were
@@ -390,6 +391,7 @@ int run_render(const RenderArgs& a) {
     report["span_division"] = division_name(options.division);
     report["coverage"] = a.coverage;
     report["modeled_clocks"] = to_json(frame.stats.clocks);
+    if (registers) report["registers"] = register_events_json(*registers);
   }
   if (frame.stats.plan) {
     report["plan"] = to_json(*frame.stats.plan);
@@ -419,6 +421,10 @@ int run_render(const RenderArgs& a) {
                 unit_name(options.unit()).c_str(), arith_name(options.arith).c_str(),
                 division_name(options.division).c_str(), (unsigned long long)c.clocks,
                 (unsigned long long)c.spans, (unsigned long long)c.pixels, c.clocks ? double(c.pixels) / double(c.clocks) : 0.0);
+    if (registers)
+      std::printf("registers: %llu of %llu span pixels wrapped around, %llu span register loads saturated\n",
+                  (unsigned long long)registers->wrapped_pixels, (unsigned long long)registers->span_pixels,
+                  (unsigned long long)registers->saturated_loads);
   }
   if (frame.stats.plan) {
     print_plan(*frame.stats.plan, !a.quiet);

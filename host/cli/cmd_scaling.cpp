@@ -2,11 +2,13 @@
 // arithmetic the modeled clocks of a frame and the measured frame time on the device, each against the
 // classic one-intensity-per-clock unit in the same arithmetic, and the error against the ideal Gouraud.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <iterator>
 #include <memory>
+#include <limits>
 #include <optional>
 #include <regex>
 #include <set>
@@ -108,13 +110,14 @@ void print_table(const std::vector<Config>& configs, bool markdown) {
                         "kernel ms", "kernel min", "max abs", "NMSE"};
   std::vector<std::vector<std::string>> rows;
   for (const Config& c : configs) {
-    char ppc[32], frame[32], kernel[32], kernel_min[32], max_abs[32], nmse[32];
+    char ppc[32], frame[32], kernel[32], kernel_min[32];
     std::snprintf(ppc, sizeof ppc, "%.3f", pixels_per_clock(c.clocks));
     std::snprintf(frame, sizeof frame, "%.2f", c.frame_ms);
     std::snprintf(kernel, sizeof kernel, "%.2f", c.kernel_med_ms);
     std::snprintf(kernel_min, sizeof kernel_min, "%.2f", c.kernel_min_ms);
-    std::snprintf(max_abs, sizeof max_abs, "%.3g", c.ideal.max_abs);
-    std::snprintf(nmse, sizeof nmse, "%.3g", c.ideal.nmse);
+    // Undefined figures (no pixel compared: metrics.hpp) as "-", never "nan".
+    const auto figure = [](double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; };
+    const std::string max_abs = fixed_or_dash(figure(c.ideal.max_abs), "%.3g"), nmse = fixed_or_dash(figure(c.ideal.nmse), "%.3g");
     rows.push_back({c.name(), arith_name(c.arith), grouped(c.clocks.clocks), fixed_or_dash(modeled_speedup(c), "%.2f"),
                     ppc, frame, fixed_or_dash(measured_speedup(c), "%.2f"), kernel, kernel_min, max_abs, nmse});
   }
@@ -283,8 +286,10 @@ int run_scaling(const ScalingArgs& a) {
         c.geometry.triangles_out = j["out"];
         c.ideal_json = j["ideal"];
         c.exact_json = j["exact"];
-        c.ideal.max_abs = c.ideal_json["max_abs"].is_null() ? 0.0 : c.ideal_json["max_abs"].get<double>();
-        c.ideal.nmse = c.ideal_json["nmse"].is_null() ? 0.0 : c.ideal_json["nmse"].get<double>();
+        // null: undefined (nothing compared), printed "-", not 0
+        const double undefined = std::numeric_limits<double>::quiet_NaN();
+        c.ideal.max_abs = c.ideal_json["max_abs"].is_null() ? undefined : c.ideal_json["max_abs"].get<double>();
+        c.ideal.nmse = c.ideal_json["nmse"].is_null() ? undefined : c.ideal_json["nmse"].get<double>();
         c.total_ms = j["total_ms"].get<std::vector<double>>();
         c.kernel_ms = j["kernel_ms"].get<std::vector<double>>();
       }

@@ -9,6 +9,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <mutex>
 #include <string>
@@ -167,6 +168,14 @@ StagedFile stage_image(const fs::path& path, const RenderedImage& image) {
 }
 
 RenderedImage read_image(const fs::path& path, int* channels_out) {
+  // OpenImageIO says only "Could not open file": open it first to give the system's reason.
+  if (std::FILE* f = std::fopen(path.c_str(), "rb")) {
+    std::fclose(f);
+  } else {
+    throw InputError("cannot read " + path.string() + ": " + std::strerror(errno));
+  }
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw InputError("cannot read " + path.string() + ": it is a directory");
   auto in = OIIO::ImageInput::open(path.string());
   if (!in) {
     const std::string why = take_global_oiio_error();

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstddef>
 #include <limits>
 #include <string>
@@ -35,6 +36,31 @@ void check_sizes(const RenderedImage& image, const std::vector<std::uint8_t>& re
 }
 
 }  // namespace
+
+const char* metrics_status_name(MetricsStatus s) {
+  switch (s) {
+    case MetricsStatus::identical: return "identical";
+    case MetricsStatus::nothing_compared: return "nothing compared";
+    case MetricsStatus::compared: break;
+  }
+  return "compared";
+}
+
+std::string describe_error(const ErrorMetrics& e) {
+  char buf[320];
+  if (e.status == MetricsStatus::nothing_compared) {
+    std::snprintf(buf, sizeof buf, "no pixel covered by both (NMSE, PSNR, max and mean undefined), %llu coverage mismatches",
+                  (unsigned long long)e.coverage_mismatch);
+    return buf;
+  }
+  char psnr[32];
+  if (e.status == MetricsStatus::identical) std::snprintf(psnr, sizeof psnr, "exact");
+  else std::snprintf(psnr, sizeof psnr, "%.2f dB", e.psnr_db);
+  std::snprintf(buf, sizeof buf, "NMSE %.3g, PSNR %s, max %.2f, mean %.3f levels, %llu px > 1 level, %llu coverage mismatches",
+                e.nmse, psnr, e.max_abs, e.mean_abs, (unsigned long long)e.pixels_over_1_level,
+                (unsigned long long)e.coverage_mismatch);
+  return buf;
+}
 
 glm::dvec3 channel_errors(const RenderedImage& image, std::size_t pixel, const glm::dvec3& reference) {
   return glm::abs(reference - image_value(image, pixel));
@@ -74,6 +100,7 @@ ErrorMetrics compare_to_reference(const RenderedImage& image, const std::vector<
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   constexpr double inf = std::numeric_limits<double>::infinity();
   if (m.pixels_compared == 0) {  // nothing to compare: every statistic is undefined
+    m.status = MetricsStatus::nothing_compared;
     m.nmse = m.psnr_db = m.max_abs = m.mean_abs = nan;
     return m;
   }
@@ -96,10 +123,11 @@ ErrorMetrics compare_to_reference(const RenderedImage& image, const std::vector<
   const double samples = 3.0 * double(m.pixels_compared);
   const double mse = error_sq / samples;
   m.mean_abs = abs_sum / samples;
-  // A constant reference has no spread: NMSE is 0 when the image matches it, +inf otherwise.
+  // A constant reference has no spread (decided exactly); a near-uniform one is floored (metrics.hpp).
   if (ref_constant) spread_sq = 0.0;
-  m.nmse = spread_sq > 0.0 ? error_sq / spread_sq : (error_sq > 0.0 ? inf : 0.0);
+  m.nmse = error_sq / std::max(spread_sq, samples * kNmseSpreadFloor);
   m.psnr_db = mse > 0.0 ? 10.0 * std::log10(255.0 * 255.0 / mse) : inf;
+  if (error_sq == 0.0) m.status = MetricsStatus::identical;
   return m;
 }
 

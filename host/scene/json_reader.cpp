@@ -56,6 +56,13 @@ int JsonValue::integer(int lo, int hi) const {
   return static_cast<int>(v);
 }
 
+long long JsonValue::any_integer() const {
+  if (!value_->is_number_integer()) fail("expected an integer, got " + (value_->is_number() ? dump() : type_name(*value_)));
+  if (value_->is_number_unsigned() && value_->get<unsigned long long>() > 9223372036854775807ULL)
+    return 9223372036854775807LL;
+  return value_->get<long long>();
+}
+
 glm::vec3 JsonValue::vec3() const {
   if (!value_->is_array() || value_->size() != 3) fail("expected [x, y, z], got " + (value_->is_array() ? dump() : type_name(*value_)));
   glm::vec3 v;

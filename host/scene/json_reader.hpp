@@ -28,6 +28,7 @@ class JsonValue {
   bool boolean() const;
   double number() const;                                  // finite
   int integer(int lo, int hi) const;                      // lo <= value <= hi
+  long long any_integer() const;                          // an integer of any size, clamped to long long
   glm::vec3 vec3() const;                                 // [x, y, z], finite
   glm::vec3 color() const;                                // [r, g, b], finite and >= 0
   std::vector<JsonValue> array(std::size_t min_size = 0) const;

@@ -141,13 +141,32 @@ std::size_t count_stl_facets(const std::filesystem::path& path) {
   if (!in) throw InputError(path.string() + ": cannot open");
   // Binary STL: 80-byte header, uint32 facet count, 50 bytes per facet. A text file that happens to have
   // exactly that size is not a concern in practice (it would have to match to the byte).
+  // A file that does not start with "solid" is binary: its count must fit its size, and every vertex must
+  // be finite (OpenMesh drops such facets silently, which ended in a misleading "no faces").
   const std::uintmax_t size = std::filesystem::file_size(path);
   if (size >= 84) {
     char header[84];
     in.read(header, sizeof header);
     std::uint32_t count = 0;
     std::memcpy(&count, header + 80, sizeof count);  // little-endian on every platform we target
-    if (size == 84 + 50 * std::uintmax_t(count)) return count;
+    const std::uintmax_t expected = 84 + 50 * std::uintmax_t(count);
+    const bool text = std::string(header, 5) == "solid";
+    if (size == expected) {
+      char facet[50];
+      for (std::uint32_t f = 0; f < count && in.read(facet, sizeof facet); ++f) {
+        float xyz[9];
+        std::memcpy(xyz, facet + 12, sizeof xyz);  // after the facet normal: three vertices
+        for (int k = 0; k < 9; ++k)
+          if (!std::isfinite(xyz[k]))
+            throw InputError(path.string() + ": binary STL facet " + std::to_string(f) + ", vertex " +
+                             std::to_string(k / 3) + ": a coordinate is " + (std::isnan(xyz[k]) ? "NaN" : "infinite"));
+      }
+      return count;
+    }
+    if (!text)
+      throw InputError(path.string() + ": binary STL whose header says " + std::to_string(count) + " facets (" +
+                       std::to_string(expected) + " bytes) but the file has " + std::to_string(size) +
+                       " bytes: truncated or a wrong count");
     in.seekg(0);
   }
   std::size_t facets = 0;

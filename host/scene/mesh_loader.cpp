@@ -168,7 +168,6 @@ std::string lower_extension(const std::filesystem::path& path) {
 
 void check_readable(const std::filesystem::path& path, const std::string& name) {
   std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(name + ": no such file");
   detail::check_input_file(path, name, detail::kMaxMeshFileBytes, "mesh file");
   const std::string ext = lower_extension(path);
   if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl")

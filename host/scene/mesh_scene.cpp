@@ -53,7 +53,7 @@ Scene scene_for_mesh(const std::filesystem::path& mesh_path) {
   // and the image would be NaN, so such a mesh is refused rather than rendered wrong.
   constexpr double kLargest = 1e18;
   if (!(radius < kLargest && glm::length(centre) < kLargest))
-    throw InputError("'" + mesh_path.string() + "': coordinates reach " + std::to_string(glm::length(centre) + radius) +
+    throw InputError("'" + mesh_path.string() + "': coordinates reach " + short_number(glm::length(centre) + radius) +
                      ", beyond the 1e18 that single-precision shading can take");
   // Too small to frame: the camera's offset from the target would underflow or vanish next to the
   // target's own coordinates in single precision (fuzzing finding F12: a view direction of 1e-40).

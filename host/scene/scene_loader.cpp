@@ -237,9 +237,15 @@ Camera read_camera(const JsonValue& v) {
   // Only the parameters of the chosen projection are accepted, so a forgotten "type" is noticed.
   if (cam.projection == Projection::perspective) {
     if (const auto x = c.optional("fov")) {
-      cam.fov_y_degrees = float(x->number());
-      if (!(cam.fov_y_degrees > 0.0f && cam.fov_y_degrees < 180.0f))
-        x->fail("must be in (0, 180) degrees (got " + x->dump() + ")");
+      const double fov = x->number();
+      cam.fov_y_degrees = float(fov);
+      if (!(fov > 0.0 && fov < 180.0)) x->fail("must be in (0, 180) degrees (got " + x->dump() + ")");
+      // A field this narrow has no usable projection in single precision (tan(fov/2) underflows or the
+      // scale overflows): say so instead of claiming the value is out of (0, 180).
+      constexpr double kMinFovDegrees = 1e-3;
+      if (!(fov >= kMinFovDegrees))
+        x->fail("too narrow: at least 0.001 degrees (got " + x->dump() +
+                "); the single-precision projection cannot take a narrower field");
     }
   } else if (const auto x = c.optional("height")) {
     cam.ortho_height = float(positive(*x));
@@ -350,11 +356,16 @@ Scene read_scene(const nlohmann::json& doc, const std::filesystem::path& path,
   if (const auto x = top.optional("resolution")) {
     const std::vector<JsonValue> wh = x->array();
     if (wh.size() != 2) x->fail("expected [width, height]");
-    // Integers first (any size), then the limit with its reason.
-    const int w = wh[0].integer(-1000000000, 1000000000), h = wh[1].integer(-1000000000, 1000000000);
-    check_resolution(w, h, file + ": " + x->path());
-    scene.width = w;
-    scene.height = h;
+    // Integers of any size, then the limit with its reason (check_resolution's words for those beyond int).
+    const long long w = wh[0].any_integer(), h = wh[1].any_integer();
+    for (const auto& [v, axis] : {std::pair{w, "width"}, std::pair{h, "height"}})
+      if (v < -1000000000 || v > 1000000000)
+        throw InputError(file + ": " + x->path() + ": " + axis + " " + std::to_string(v) +
+                         (v < 1 ? " must be at least 1"
+                                : " is larger than the 12-bit screen address limit " + std::to_string(kMaxResolution)));
+    check_resolution(int(w), int(h), file + ": " + x->path());
+    scene.width = int(w);
+    scene.height = int(h);
   }
   if (const auto x = top.optional("background")) scene.background = x->color();
   if (const auto x = top.optional("ambient")) scene.ambient_light = x->color();
@@ -410,7 +421,9 @@ Scene load_scene(const std::filesystem::path& path, std::vector<std::filesystem:
   files.push_back(path);
   const std::string ext = lower_extension(path);
   std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path.string() + ": no such file");
+  // The system's reason when it cannot be reached: "no such file", a loop of symbolic links, permission.
+  if (!std::filesystem::exists(path, ec))
+    throw InputError(path.string() + ": " + (ec && ec != std::errc::no_such_file_or_directory ? ec.message() : "no such file"));
   // A directory opens as an empty stream, which would read as "invalid JSON".
   if (std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": is a directory, not a scene file");
   if (ext == ".json") return read_scene(detail::parse_json_file(path), path, files);

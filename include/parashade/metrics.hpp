@@ -1,10 +1,16 @@
 #pragma once
 // Error of a rendered image against a reference, over the pixels both cover; coverage mismatches
-// are counted separately. Values in 8-bit levels. NMSE = sum (I - O)^2 / sum (I - mean_c(I))^2 over
-// covered pixels and the three channels (mean per channel); PSNR = 10 log10(255^2 / MSE).
-// Degenerate cases: no pixel covered by both -> nmse, psnr_db, max_abs and mean_abs are NaN (undefined;
-// JSON null). A constant reference (every compared pixel equal) -> nmse 0 if the image equals it, +inf
-// otherwise. MSE 0 -> psnr_db +inf. Throws InputError when the image and reference sizes differ.
+// are counted separately. Values in 8-bit levels, over the N = 3 x (pixels compared) channel samples:
+//   MSE  = sum (I - O)^2 / N
+//   NMSE = sum (I - O)^2 / max(sum (I - mean_c(I))^2, N x 1 level^2)   (mean per channel)
+//   PSNR = 10 log10(255^2 / MSE)
+// NMSE's denominator is the reference's spread, floored at one level^2 per sample: a reference flatter
+// than one 8-bit step (an ambient-only box, a constant image) is normalized as if it varied by one level,
+// so NMSE is then the MSE in levels^2 and stays finite (it used to be +inf or ~1e29). docs/error-bounds.md.
+// Degenerate cases, told apart by `status`:
+//   identical         MSE 0: nmse, max_abs, mean_abs 0; psnr_db +inf (unbounded; JSON null, printed "exact")
+//   nothing_compared  no pixel covered by both: nmse, psnr_db, max_abs, mean_abs NaN (undefined; JSON null)
+// Throws InputError when the image and reference sizes differ.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -15,9 +21,17 @@
 
 namespace parashade {
 
+enum class MetricsStatus { compared, identical, nothing_compared };
+// "compared", "identical", "nothing compared"
+const char* metrics_status_name(MetricsStatus s);
+
+// NMSE's floor on the reference's spread, per channel sample: one 8-bit level, squared.
+constexpr double kNmseSpreadFloor = 1.0;
+
 struct ErrorMetrics {
   std::string reference;                 // "ideal <method>" or "exact phong"
-  double nmse = 0.0;                     // +inf when the reference is constant and the image is not
+  MetricsStatus status = MetricsStatus::compared;
+  double nmse = 0.0;
   double psnr_db = 0.0;                  // dB; +inf when identical
   double max_abs = 0.0;                  // levels, largest channel difference
   double mean_abs = 0.0;                 // levels, per channel sample
@@ -27,6 +41,10 @@ struct ErrorMetrics {
 };
 
 // Uses image.rgb_float when present (the unquantized output), else the 8-bit values.
+// One line for people: "NMSE 0.0123, PSNR 40.12 dB, max ..."; never "nan" or "inf" ("PSNR exact",
+// "no pixel compared").
+std::string describe_error(const ErrorMetrics& e);
+
 ErrorMetrics compare_to_reference(const RenderedImage& image, const std::vector<std::uint8_t>& ref_covered,
                                   const std::vector<glm::dvec3>& ref_values, const std::string& reference_name);
 

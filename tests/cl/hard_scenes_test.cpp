@@ -16,6 +16,7 @@
 #include "parashade/reference.hpp"
 #include "parashade/renderer.hpp"
 #include "parashade/scene.hpp"
+#include "parashade/unit_error.hpp"
 
 namespace parashade {
 namespace {
@@ -59,14 +60,55 @@ TEST_P(PlanarTiling, CoversItsRegionExactlyOnce) {  const Scene scene = hard_sce
   }
 }
 
+// The hard meshes are planar and most have no vertex normals, so as loaded every image is one colour and
+// any bound holds trivially (measured max 0 against 1.1e-4). Here every vertex gets a normal that varies
+// across the mesh (a few degrees per pixel at most, up to 50 degrees overall) and the material a highlight,
+// so intensities vary over each triangle and the planes' increments are far from 0; the material keeps
+// every value inside 0..255 (no clamping to hide an error).
+Scene with_varying_normals(Scene scene) {
+  for (Object& o : scene.objects) {
+    auto mesh = std::make_shared<Mesh>(*o.mesh);
+    mesh->normals.resize(mesh->positions.size());
+    for (std::size_t i = 0; i < mesh->positions.size(); ++i) {
+      const glm::vec3 p = mesh->positions[i];
+      mesh->normals[i] = glm::normalize(glm::vec3(0.8f * std::sin(0.05f * p.x + 0.02f * p.y), 0.8f * std::cos(0.04f * p.y), 1.0f));
+    }
+    o.mesh = mesh;
+  }
+  scene.lights = {Light{LightType::directional, glm::normalize(glm::vec3(0.4f, -0.3f, -1.0f)), {}, glm::vec3(1.0f)}};
+  scene.ambient_light = glm::vec3(1.0f);
+  scene.materials = {Material{"lit", glm::vec3(0.1f), glm::vec3(0.55f), glm::vec3(0.3f), 8.0f}};
+  for (Object& o : scene.objects) o.material = 0;
+  return scene;
+}
+
+// The widest box of the frame's triangles, at most the frame's width, pixels: no span is longer.
+int widest_span(const ScreenGeometry& g, int width) {
+  int widest = 1;
+  for (const glm::uvec3& t : g.triangles) {
+    const double x[3] = {double(g.xy[t.x].x), double(g.xy[t.y].x), double(g.xy[t.z].x)};
+    const double lo = std::min({x[0], x[1], x[2]}) / kSubpixel, hi = std::max({x[0], x[1], x[2]}) / kSubpixel;
+    widest = std::max(widest, int(std::ceil(hi) - std::floor(lo)) + 1);
+  }
+  return std::min(widest, width);
+}
+
 TEST_P(HardScene, RendersInFloatAndFixedPointWithinTheErrorBound) {
-  const Scene scene = hard_scene(GetParam().name);
+  const Scene scene = with_varying_normals(hard_scene(GetParam().name));
   Renderer renderer(test_device(), render_options(Method::gouraud, true, 16));
   const Frame& frame = renderer.render(scene);
   ASSERT_EQ(frame.image.rgba.size(), std::size_t(scene.width) * scene.height * 4);
   ScreenGeometry geometry;
   build_screen_geometry(scene, {Method::gouraud, true}, geometry);
   const ReferenceImage reference = render_reference(scene, geometry, Method::gouraud);
+  // The bound must have something to bind: the reference spans levels, and no value is clamped.
+  double lo = 255, hi = 0;
+  for (std::size_t p = 0; p < reference.ideal.size(); ++p)
+    if (reference.covered[p]) lo = std::min(lo, reference.ideal[p].x), hi = std::max(hi, reference.ideal[p].x);
+  EXPECT_GT(hi - lo, 2.0) << "the reference is (nearly) one colour: the bound would not bind";
+  EXPECT_GT(lo, 0.0);
+  EXPECT_LT(hi, 255.0);
+
   const ErrorMetrics e = compare_to_reference(frame.image, reference.covered, reference.ideal, "ideal");
   const double bound = gouraud_bound(geometry);
   RecordProperty("bound_levels", std::to_string(bound));
@@ -76,10 +118,22 @@ TEST_P(HardScene, RendersInFloatAndFixedPointWithinTheErrorBound) {
   // Coplanar included: the reference breaks exact depth ties for the earlier triangle as the kernel does
   // (before, its barycentric rounding picked the later quad on 336 of the 3 200 overlap pixels).
   EXPECT_LE(e.max_abs, bound) << "pixels compared " << e.pixels_compared << ", over one level " << e.pixels_over_1_level;
-  RenderOptions fixed;
+
+  // Fixed point through the classic unit: the float output holds the span register in levels (exact for
+  // I + F <= 24), within the register model's bound (1 + z)(h + e) at pixel z of a span (docs/unit-error.md),
+  // largest for the widest span.
+  RenderOptions fixed = render_options(Method::gouraud, true, 16);
   fixed.arith = parse_arith("fixed:10.4");
   Renderer fixed_renderer(test_device(), fixed);
-  EXPECT_NO_THROW(fixed_renderer.render(scene));
+  const Frame& fixed_frame = fixed_renderer.render(scene);
+  const ErrorMetrics f = compare_to_reference(fixed_frame.image, reference.covered, reference.ideal, "ideal");
+  const int widest = widest_span(geometry, scene.width);
+  const double fixed_bound = unit_error_bound(UnitConfig{}, fixed.arith, widest, widest - 1);
+  RecordProperty("fixed_bound_levels", std::to_string(fixed_bound));
+  RecordProperty("fixed_max_abs_levels", std::to_string(f.max_abs));
+  EXPECT_EQ(f.coverage_mismatch, 0u);
+  EXPECT_GT(f.max_abs, 0.0) << "fixed:10.4 cannot represent every value exactly";
+  EXPECT_LE(f.max_abs, fixed_bound) << "widest span " << widest << " pixels";
 }
 
 const HardCase kPlanar[] = {{"slivers", 400},           {"fan", 10000},         {"one_pixel", 400 + 16},

@@ -12,6 +12,9 @@
 #include <gtest/gtest.h>
 
 #include "cl_fixture.hpp"
+#include "parashade/combined.hpp"
+#include "parashade/geometry_stage.hpp"
+#include "parashade/reference.hpp"
 #include "parashade/renderer.hpp"
 
 namespace parashade {
@@ -172,6 +175,82 @@ TEST(PhongHardCases, SpanLengthsAndNearlyOppositeEnds) {
 
 TEST(PhongHardCases, SpecularModels) {
   for (const char* s : {"cosk:taylor:2", "cosk:lobe:4", "quadratic", "7n16", "7n16:1.78"}) check("quadratic:cubic-fit", s);
+}
+
+// Inside the equal-normals triangle of hard_scene (screen (8,69), (108,69), (58,124)) and inside the one
+// facing away (ambient only, 25.5 levels).
+bool in_equal_triangle(int x, int y) { return x >= 50 && x <= 66 && y >= 80 && y <= 100; }
+bool in_away_triangle(int x, int y) { return x >= 170 && x <= 210 && y >= 72 && y <= 80; }
+
+// Phong through the fixed-point units (issue 17, item 15): the registers carry the normal's components,
+// which pass through zero on the opposite-normals triangle. Finite everywhere; where the normals are
+// equal, the unit's quantized normal shades within half a level of float Phong; the away-facing
+// triangle stays ambient.
+TEST(PhongHardCases, FixedPointUnitsWithOppositeNormals) {
+  for (float n : {1.0f, 1000.0f}) {
+    const Scene scene = hard_scene(n);
+    RenderOptions plain;
+    plain.method = Method::phong;
+    plain.float_output = true;
+    Renderer phong(test_device(), plain);
+    const std::vector<float> exact = phong.render(scene).image.rgb_float;
+    for (const auto& [unit, arith] : {std::pair{"classic", "fixed:12.8"}, std::pair{"counter", "fixed:9.4"},
+                                      std::pair{"interleave:2:own", "fixed:12.12"}, std::pair{"segment:8", "fixed:10.6"}}) {
+      RenderOptions o = plain;
+      o.units = parse_units(unit);
+      o.arith = parse_arith(arith);
+      Renderer renderer(test_device(), o);
+      const Frame& f = renderer.render(scene);
+      std::size_t equal = 0, away = 0;
+      for (int y = 0; y < f.image.height; ++y)
+        for (int x = 0; x < f.image.width; ++x) {
+          const std::size_t p = std::size_t(y) * f.image.width + x;
+          for (int c = 0; c < 3; ++c) {
+            const float v = f.image.rgb_float[3 * p + c];
+            ASSERT_TRUE(std::isfinite(v)) << unit << " " << arith << " n " << n << " at " << x << "," << y;
+            if (in_equal_triangle(x, y)) EXPECT_NEAR(v, exact[3 * p + c], 0.5f) << unit << " " << arith << " n " << n;
+            if (in_away_triangle(x, y)) EXPECT_NEAR(v, 25.5f, 1e-3f) << unit << " " << arith;
+          }
+          equal += in_equal_triangle(x, y);
+          away += in_away_triangle(x, y);
+        }
+      EXPECT_GT(equal, 200u);
+      EXPECT_GT(away, 100u);
+    }
+  }
+}
+
+// combined:auto on the same triangles (infinite viewer, directional light: the case its bound covers):
+// finite, and the 8-bit image within the budget of exact Phong wherever exact Phong is defined (the
+// interpolated normal is not zero).
+TEST(PhongHardCases, CombinedAutoWithOppositeNormalsMeetsItsBudget) {
+  for (float n : {1.0f, 1000.0f}) {
+    Scene scene = hard_scene(n);
+    scene.local_viewer = false;
+    for (const double budget : {1.0, 4.0}) {
+      RenderOptions o;
+      o.method = Method::combined;
+      o.combined = parse_combined("combined:auto");
+      o.combined.max_error = budget;
+      o.float_output = true;
+      Renderer renderer(test_device(), o);
+      const Frame& f = renderer.render(scene);
+      ScreenGeometry g;
+      build_screen_geometry(scene, {Method::phong, true}, g);
+      const ReferenceImage ref = render_reference(scene, g, Method::phong);
+      double worst = 0;
+      std::size_t compared = 0;
+      for (std::size_t p = 0; p < ref.covered.size(); ++p) {
+        for (int c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(f.image.rgb_float[3 * p + c])) << "pixel " << p;
+        if (!ref.covered[p] || !f.image.covered(p) || !std::isfinite(ref.exact[p].x)) continue;
+        for (int c = 0; c < 3; ++c)
+          worst = std::max(worst, std::abs(double(f.image.rgba[4 * p + c]) - std::clamp(ref.exact[p][c], 0.0, 255.0)));
+        ++compared;
+      }
+      EXPECT_GT(compared, 5000u);
+      EXPECT_LE(worst, budget) << "n " << n << ", budget " << budget;
+    }
+  }
 }
 
 }  // namespace

@@ -135,6 +135,26 @@ TEST_F(ImageIo, ReadingAMissingFileIsAnInputError) {
   EXPECT_THROW(read_image(dir_ / "absent.png"), InputError);
 }
 
+// OpenImageIO says only "Could not open file"; the message gives the system's reason (issue 17, item 16).
+TEST_F(ImageIo, ReadErrorsGiveTheSystemsReason) {
+  const auto message = [](const fs::path& p) {
+    try {
+      read_image(p);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message(dir_ / "absent.png").find("No such file or directory"), std::string::npos) << message(dir_ / "absent.png");
+  fs::create_symlink(dir_ / "b.png", dir_ / "a.png");
+  fs::create_symlink(dir_ / "a.png", dir_ / "b.png");
+  EXPECT_NE(message(dir_ / "a.png").find("Too many levels of symbolic links"), std::string::npos) << message(dir_ / "a.png");
+  fs::create_directories(dir_ / "folder.png");
+  EXPECT_NE(message(dir_ / "folder.png").find("is a directory"), std::string::npos) << message(dir_ / "folder.png");
+  for (const char* name : {"absent.png", "a.png", "folder.png"})
+    EXPECT_EQ(message(dir_ / name).find("Could not open"), std::string::npos) << message(dir_ / name);
+}
+
 std::string file_bytes(const fs::path& p) {
   std::ostringstream s;
   s << std::ifstream(p, std::ios::binary).rdbuf();

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "parashade/errors.hpp"
@@ -95,27 +96,52 @@ TEST(Metrics, NoCommonPixelsGivesUndefinedStatistics) {
   EXPECT_TRUE(std::isnan(m.mean_abs));
 }
 
-TEST(Metrics, ConstantReferenceGivesZeroOrInfiniteNmse) {
-  // 0.1 + 0.1 + 0.1 != 0.3 in double: a mean computed by division is not exactly 0.1, so constancy
-  // must be decided exactly or NMSE becomes a huge finite number instead of +inf.
-  const std::vector<Pixel> ref = {{{0.1, 0.1, 0.1}, true}, {{0.1, 0.1, 0.1}, true}, {{0.1, 0.1, 0.1}, true}};
-  RenderedImage rounded = image_of(ref);
-  rounded.rgb_float.assign(9, 0.1f);  // off by float rounding only, but off
-  const ErrorMetrics near = compare_to_reference(rounded, covered_of(ref), values_of(ref), "ideal flat");
-  EXPECT_TRUE(std::isinf(near.nmse)) << near.nmse;
-
-  std::vector<Pixel> exact = ref;
-  for (Pixel& p : exact) p.value = glm::dvec3(82.0);
-  const ErrorMetrics zero =
-      compare_to_reference(image_of(exact), covered_of(exact), values_of(exact), "ideal flat");
+TEST(Metrics, ConstantReferenceIsNormalizedByTheFloor) {
+  // A constant reference has no spread: NMSE's denominator is the floor, one level^2 per channel sample,
+  // so NMSE is the MSE in levels^2 (issue 17 item 10: it was +inf).
+  std::vector<Pixel> exact = {{{82, 82, 82}, true}, {{82, 82, 82}, true}, {{82, 82, 82}, true}};
+  const ErrorMetrics zero = compare_to_reference(image_of(exact), covered_of(exact), values_of(exact), "ideal flat");
+  EXPECT_EQ(zero.status, MetricsStatus::identical);
   EXPECT_EQ(zero.nmse, 0.0);
   EXPECT_TRUE(std::isinf(zero.psnr_db));
 
   RenderedImage off = image_of(exact);
-  off.rgba[0] += 3;
-  const ErrorMetrics inf = compare_to_reference(off, covered_of(exact), values_of(exact), "ideal flat");
-  EXPECT_TRUE(std::isinf(inf.nmse) && inf.nmse > 0);
-  EXPECT_EQ(inf.max_abs, 3.0);
+  off.rgba[0] += 3;  // 3^2 over 9 samples: MSE 1
+  const ErrorMetrics m = compare_to_reference(off, covered_of(exact), values_of(exact), "ideal flat");
+  EXPECT_EQ(m.status, MetricsStatus::compared);
+  EXPECT_DOUBLE_EQ(m.nmse, 9.0 / 9.0);
+  EXPECT_DOUBLE_EQ(m.psnr_db, 10.0 * std::log10(255.0 * 255.0));
+  EXPECT_EQ(m.max_abs, 3.0);
+}
+
+TEST(Metrics, NearUniformReferenceGivesAFiniteNmse) {
+  // A spread of 1e-6 levels (0.1 + 0.1 + 0.1 != 0.3: the mean is not exact) and an image off by float
+  // rounding: without the floor NMSE came out near 1e29 or +inf; with it it is the MSE.
+  const std::vector<Pixel> ref = {{{0.1, 0.1, 0.1}, true}, {{0.1, 0.1, 0.1}, true}, {{0.100001, 0.1, 0.1}, true}};
+  RenderedImage rounded = image_of(ref);
+  rounded.rgb_float.assign(9, 0.1f);
+  const ErrorMetrics m = compare_to_reference(rounded, covered_of(ref), values_of(ref), "ideal flat");
+  EXPECT_TRUE(std::isfinite(m.nmse)) << m.nmse;
+  EXPECT_LT(m.nmse, 1e-12);
+  const double mse = std::pow(10.0, -m.psnr_db / 10.0) * 255.0 * 255.0;
+  EXPECT_NEAR(m.nmse, mse, 1e-6 * mse);
+}
+
+TEST(Metrics, DescriptionsNeverSayNanOrInf) {
+  const std::vector<Pixel> px = {{{10, 20, 30}, true}};
+  const std::vector<Pixel> none = {{{10, 20, 30}, false}};
+  const ErrorMetrics identical = compare_to_reference(image_of(px), covered_of(px), values_of(px), "ideal flat");
+  const ErrorMetrics nothing = compare_to_reference(image_of(none), covered_of(px), values_of(px), "ideal flat");
+  EXPECT_EQ(nothing.status, MetricsStatus::nothing_compared);
+  for (const ErrorMetrics& m : {identical, nothing}) {
+    const std::string text = describe_error(m);
+    EXPECT_EQ(text.find("nan"), std::string::npos) << text;
+    EXPECT_EQ(text.find("inf"), std::string::npos) << text;
+  }
+  EXPECT_NE(describe_error(identical).find("PSNR exact"), std::string::npos) << describe_error(identical);
+  EXPECT_NE(describe_error(nothing).find("no pixel covered by both"), std::string::npos) << describe_error(nothing);
+  EXPECT_STREQ(metrics_status_name(nothing.status), "nothing compared");
+  EXPECT_STREQ(metrics_status_name(identical.status), "identical");
 }
 
 TEST(Metrics, SizeMismatchIsAnInputError) {
