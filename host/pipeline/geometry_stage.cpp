@@ -468,10 +468,25 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
     scratch.light_ranges.clear();
   const auto light = [&](const ObjectRange& range) {
     const VertexSource& src = sources[range.object];
+    constexpr int kLanes = VertexLighting::kLanes;  // used vertices lit kLanes at a time
+    std::size_t lane_vertex[kLanes];
+    glm::vec3 p[kLanes], n[kLanes], colour[kLanes];
+    int lanes = 0;
     for (std::size_t i = range.first; i < range.last; ++i) {
       const std::size_t v = src.base + i;
-      g.color[v] = used[v] ? lighting.shade(src.material, src.world(i), src.normal(i)) : glm::vec3(0.0f);
+      if (!used[v]) {
+        g.color[v] = glm::vec3(0.0f);
+        continue;
+      }
+      lane_vertex[lanes] = v;
+      p[lanes] = src.world(i);
+      n[lanes] = src.normal(i);
+      if (++lanes < kLanes) continue;
+      lighting.shade_lanes(src.material, p, n, colour);
+      for (int k = 0; k < kLanes; ++k) g.color[lane_vertex[k]] = colour[k];
+      lanes = 0;
     }
+    for (int k = 0; k < lanes; ++k) g.color[lane_vertex[k]] = lighting.shade(src.material, p[k], n[k]);
   };
   parallel_for(scratch.light_ranges.size() + jobs.size(), [&](std::size_t item) {
     if (item < scratch.light_ranges.size()) return light(scratch.light_ranges[item]);
