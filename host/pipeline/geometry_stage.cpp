@@ -117,12 +117,24 @@ class Assembler {
     out.face.reserve(job.count);
     if (needs_.flat) out.flat_color.reserve(job.count);
     out.stats.triangles_in += job.count;
+    // Plain pointers: the used flags are bytes, and a store through them may alias anything.
+    const glm::uvec3* triangles = mesh.triangles.data();
+    const std::uint8_t* outcode = g_.outcode.data();
+    const glm::ivec2* xy = g_.xy.data();
+    std::uint8_t* used = needs_.color ? used_.data() : nullptr;
     for (std::size_t t = job.first; t < job.first + job.count; ++t) {
-      const glm::uvec3 tri = mesh.triangles[t] + glm::uvec3(vertex_base);
+      glm::uvec3 tri = triangles[t] + glm::uvec3(vertex_base);
       const std::uint32_t face = std::uint32_t(job.face_first + (t - job.first));
-      const std::uint8_t o0 = g_.outcode[tri.x], o1 = g_.outcode[tri.y], o2 = g_.outcode[tri.z];
+      const std::uint8_t o0 = outcode[tri.x], o1 = outcode[tri.y], o2 = outcode[tri.z];
       if ((o0 | o1 | o2) == 0) {  // the common case: inside the guard band, scene vertices only
-        emit_inside(tri, face, obj.material, out);
+        const std::int64_t area2 = area2_of(glm::i64vec2(xy[tri.x]), glm::i64vec2(xy[tri.y]), glm::i64vec2(xy[tri.z]));
+        if (!survives(area2, out)) continue;
+        if (needs_.flat) out.flat_color.push_back(flat_value(obj.material, tri));  // in the scene's vertex order
+        if (area2 < 0) std::swap(tri.y, tri.z);
+        if (used)  // the same value from any thread
+          for (std::uint32_t v : {tri.x, tri.y, tri.z}) __atomic_store_n(&used[v], std::uint8_t(1), __ATOMIC_RELAXED);
+        out.triangles.push_back(tri);
+        out.face.push_back(face);
         continue;
       }
       if ((o0 | o1 | o2) & kNonFinite) {  // no meaningful position to clip or draw
@@ -190,18 +202,6 @@ class Assembler {
 
   void mark_used(std::uint32_t v) const {
     if (!(v & kNewVertex)) __atomic_store_n(&used_[v], std::uint8_t(1), __ATOMIC_RELAXED);  // same value from any thread
-  }
-
-  // emit() for a triangle of scene vertices that needs no clipping.
-  void emit_inside(glm::uvec3 tri, std::uint32_t face, std::uint32_t material, ChunkOutput& out) const {
-    const std::int64_t area2 = area2_of(glm::i64vec2(g_.xy[tri.x]), glm::i64vec2(g_.xy[tri.y]), glm::i64vec2(g_.xy[tri.z]));
-    if (!survives(area2, out)) return;
-    if (needs_.flat) out.flat_color.push_back(flat_value(material, tri));  // in the scene's vertex order
-    if (area2 < 0) std::swap(tri.y, tri.z);
-    if (needs_.color)
-      for (std::uint32_t v : {tri.x, tri.y, tri.z}) mark_used(v);
-    out.triangles.push_back(tri);
-    out.face.push_back(face);
   }
 
   void emit(glm::uvec3 tri, FlatValue& flat, ChunkOutput& out) const {
@@ -300,7 +300,8 @@ void object_ranges(const std::vector<VertexSource>& sources, std::size_t min_chu
   out.clear();
   for (std::size_t o = 0; o < sources.size(); ++o) {
     const std::size_t count = sources[o].mesh->positions.size(), chunk = balanced_chunk(count, min_chunk, max_chunk);
-    for (std::size_t first = 0; first < count; first += chunk) out.push_back({o, first, std::min(count, first + chunk)});
+    for (std::size_t first = 0; first < count; first += chunk)
+      out.push_back({o, first, std::min(count, first + chunk)});
   }
 }
 
@@ -387,18 +388,28 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
   parallel_for(scratch.vertex_ranges.size(), [&](std::size_t r) {
     const ObjectRange range = scratch.vertex_ranges[r];
     const VertexSource& src = sources[range.object];
-    const Mesh& mesh = *src.mesh;
+    const glm::mat4 m = model_vp[range.object];
+    const glm::vec3* position = src.mesh->positions.data();
+    // Plain pointers: a store through the outcodes' bytes may alias anything, so the vectors' data
+    // pointers would be reloaded from memory after every vertex.
+    glm::vec4* clip_out = g.clip.data() + src.base;
+    std::uint8_t* outcode = g.outcode.data() + src.base;
+    glm::ivec2* xy = g.xy.data() + src.base;
+    float* depth = g.depth.data() + src.base;
+    float* inv_w = g.inv_w.data() + src.base;
+    glm::vec3* world = needs.world ? g.world.data() + src.base : nullptr;
+    glm::vec3* normal = needs.normal ? g.normal.data() + src.base : nullptr;
+    const int width = g.width, height = g.height;
     for (std::size_t i = range.first; i < range.last; ++i) {
-      const std::size_t v = src.base + i;
-      const glm::vec4 clip = model_vp[range.object] * glm::vec4(mesh.positions[i], 1.0f);
-      g.clip[v] = clip;
-      g.outcode[v] = outcode_of(clip);
-      const Snapped s = snap(clip, g.width, g.height);
-      g.xy[v] = s.xy;
-      g.depth[v] = s.depth;
-      g.inv_w[v] = s.inv_w;
-      if (needs.world) g.world[v] = src.world(i);
-      if (needs.normal) g.normal[v] = src.normal(i);
+      const glm::vec4 clip = m * glm::vec4(position[i], 1.0f);
+      clip_out[i] = clip;
+      outcode[i] = outcode_of(clip);
+      const Snapped s = snap(clip, width, height);
+      xy[i] = s.xy;
+      depth[i] = s.depth;
+      inv_w[i] = s.inv_w;
+      if (world) world[i] = src.world(i);
+      if (normal) normal[i] = src.normal(i);
     }
   });
 

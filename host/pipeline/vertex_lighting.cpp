@@ -50,6 +50,7 @@ namespace {
 // kLanes floats as one vector (GCC/Clang vector extensions: +, -, *, / are the IEEE operations lane
 // by lane, SSE on any x86-64); comparisons give lanes of all ones (true) or zero. Casts between the
 // two types keep the bits.
+#define PARASHADE_LANE inline __attribute__((always_inline))
 typedef float Floats __attribute__((vector_size(4 * VertexLighting::kLanes)));
 typedef int Mask __attribute__((vector_size(4 * VertexLighting::kLanes)));
 
@@ -57,13 +58,13 @@ struct Vec3s {
   Floats x, y, z;
 };
 
-Floats splat(float v) {
+PARASHADE_LANE Floats splat(float v) {
   Floats r;
   for (int k = 0; k < VertexLighting::kLanes; ++k) r[k] = v;
   return r;
 }
 
-Floats sqrt_lanes(Floats v) {
+PARASHADE_LANE Floats sqrt_lanes(Floats v) {
 #if defined(__SSE__) && !defined(__clang__)
   return __builtin_ia32_sqrtps(v);  // correctly rounded, as std::sqrt(float)
 #else
@@ -72,23 +73,25 @@ Floats sqrt_lanes(Floats v) {
 #endif
 }
 
-Floats select(Mask m, Floats yes, Floats no) { return Floats((m & Mask(yes)) | (~m & Mask(no))); }
+PARASHADE_LANE Floats select(Mask m, Floats yes, Floats no) { return Floats((m & Mask(yes)) | (~m & Mask(no))); }
 // glm::dot of vec3: (x*x' + y*y') + z*z'; glm::length = sqrt(dot(a, a)).
-Floats dot(const Vec3s& a, const Vec3s& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Floats length(const Vec3s& a) { return sqrt_lanes(dot(a, a)); }
-Vec3s minus(const Vec3s& a, const Vec3s& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-Vec3s plus(const Vec3s& a, const Vec3s& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-Vec3s divide(const Vec3s& a, Floats d) { return {a.x / d, a.y / d, a.z / d}; }
-Vec3s splat3(glm::vec3 v) { return {splat(v.x), splat(v.y), splat(v.z)}; }
-Vec3s select3(Mask m, const Vec3s& yes, const Vec3s& no) {
+PARASHADE_LANE Floats dot(const Vec3s& a, const Vec3s& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+PARASHADE_LANE Floats length(const Vec3s& a) { return sqrt_lanes(dot(a, a)); }
+PARASHADE_LANE Vec3s minus(const Vec3s& a, const Vec3s& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+PARASHADE_LANE Vec3s plus(const Vec3s& a, const Vec3s& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+PARASHADE_LANE Vec3s divide(const Vec3s& a, Floats d) { return {a.x / d, a.y / d, a.z / d}; }
+PARASHADE_LANE Vec3s splat3(glm::vec3 v) { return {splat(v.x), splat(v.y), splat(v.z)}; }
+PARASHADE_LANE Vec3s select3(Mask m, const Vec3s& yes, const Vec3s& no) {
   return {select(m, yes.x, no.x), select(m, yes.y, no.y), select(m, yes.z, no.z)};
 }
 // out + (i * k) * s where m holds (glm: light.intensity * m.diffuse * n_dot_l, added to out).
-void add_where(Mask m, Vec3s& out, glm::vec3 ik, Floats s) {
+PARASHADE_LANE void add_where(Mask m, Vec3s& out, glm::vec3 ik, Floats s) {
   out.x = select(m, out.x + splat(ik.x) * s, out.x);
   out.y = select(m, out.y + splat(ik.y) * s, out.y);
   out.z = select(m, out.z + splat(ik.z) * s, out.z);
 }
+
+#undef PARASHADE_LANE
 
 }  // namespace
 
