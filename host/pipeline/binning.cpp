@@ -54,10 +54,11 @@ void Binner::begin(const TriangleGeometry* tris, std::size_t n, int width, int h
   const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
   // Chunks are contiguous ranges of triangles; their lists are concatenated in chunk order per tile,
   // so the result is in primitive order whatever the number of threads. About four per thread (a
-  // thread slowed by other work leaves its share to the others), each of at least 1024 triangles
-  // (the per-chunk counters, tiles x 4 bytes, are summed over all chunks).
+  // thread slowed by other work leaves its share to the others), each of at least 2048 triangles
+  // (the per-chunk counters, tiles x 4 bytes, are summed over all chunks; setup runs in these chunks
+  // too, ~100 ns a triangle, and a chunk must be worth waking a thread for).
   const std::size_t chunks =
-      std::max<std::size_t>(1, std::min<std::size_t>(4 * std::size_t(host_threads()), n / 1024));
+      std::max<std::size_t>(1, std::min<std::size_t>(4 * std::size_t(host_threads()), n / 2048));
   chunk_first_.resize(chunks + 1);
   for (std::size_t c = 0; c <= chunks; ++c) chunk_first_[c] = n * c / chunks;
   chunk_cursor_.assign(chunks * tiles, 0);

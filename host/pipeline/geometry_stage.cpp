@@ -89,8 +89,7 @@ struct VertexSource {
 
 // Work of one chunk of input triangles, merged in chunk order so the output order is deterministic.
 struct ChunkOutput {
-  std::vector<glm::uvec3> triangles;
-  std::vector<std::uint32_t> material;
+  std::vector<glm::uvec3> triangles;  // all of one object, so of one material (ChunkJob::object)
   std::vector<glm::vec3> flat_color;
   std::vector<ClipVertex> new_vertices;
   std::vector<Snapped> new_snapped;
@@ -115,12 +114,29 @@ class Assembler {
     const VertexSource& src = sources_[job.object];
     const Mesh& mesh = *obj.mesh;
     out.triangles.reserve(job.count);
-    out.material.reserve(job.count);
+    out.face.reserve(job.count);
     if (needs_.flat) out.flat_color.reserve(job.count);
+    out.stats.triangles_in += job.count;
+    // Plain pointers: the used flags are bytes, and a store through them may alias anything.
+    const glm::uvec3* triangles = mesh.triangles.data();
+    const std::uint8_t* outcode = g_.outcode.data();
+    const glm::ivec2* xy = g_.xy.data();
+    std::uint8_t* used = needs_.color ? used_.data() : nullptr;
     for (std::size_t t = job.first; t < job.first + job.count; ++t) {
-      const glm::uvec3 tri = mesh.triangles[t] + glm::uvec3(vertex_base);
-      ++out.stats.triangles_in;
-      const std::uint8_t o0 = g_.outcode[tri.x], o1 = g_.outcode[tri.y], o2 = g_.outcode[tri.z];
+      glm::uvec3 tri = triangles[t] + glm::uvec3(vertex_base);
+      const std::uint32_t face = std::uint32_t(job.face_first + (t - job.first));
+      const std::uint8_t o0 = outcode[tri.x], o1 = outcode[tri.y], o2 = outcode[tri.z];
+      if ((o0 | o1 | o2) == 0) {  // the common case: inside the guard band, scene vertices only
+        const std::int64_t area2 = area2_of(glm::i64vec2(xy[tri.x]), glm::i64vec2(xy[tri.y]), glm::i64vec2(xy[tri.z]));
+        if (!survives(area2, out)) continue;
+        if (needs_.flat) out.flat_color.push_back(flat_value(obj.material, tri));  // in the scene's vertex order
+        if (area2 < 0) std::swap(tri.y, tri.z);
+        if (used)  // the same value from any thread
+          for (std::uint32_t v : {tri.x, tri.y, tri.z}) __atomic_store_n(&used[v], std::uint8_t(1), __ATOMIC_RELAXED);
+        out.triangles.push_back(tri);
+        out.face.push_back(face);
+        continue;
+      }
       if ((o0 | o1 | o2) & kNonFinite) {  // no meaningful position to clip or draw
         ++out.stats.non_finite;
         continue;
@@ -130,13 +146,9 @@ class Assembler {
         continue;
       }
       FlatValue flat{this, obj.material, tri};
-      if ((o0 | o1 | o2) == 0) {
-        emit(tri, obj.material, flat, out);
-      } else {
-        ++out.stats.clipped;
-        clip_and_emit(tri, std::uint8_t(o0 | o1 | o2), obj.material, flat, src, out);
-      }
-      out.face.resize(out.triangles.size(), std::uint32_t(job.face_first + (t - job.first)));
+      ++out.stats.clipped;
+      clip_and_emit(tri, std::uint8_t(o0 | o1 | o2), flat, src, out);
+      out.face.resize(out.triangles.size(), face);
     }
   }
 
@@ -170,24 +182,36 @@ class Assembler {
     return (v & kNewVertex) ? out.new_snapped[v & ~kNewVertex].xy : g_.xy[v];
   }
 
-  void emit(glm::uvec3 tri, std::uint32_t material, FlatValue& flat, ChunkOutput& out) const {
-    const glm::i64vec2 p0(xy_of(tri.x, out)), p1(xy_of(tri.y, out)), p2(xy_of(tri.z, out));
-    const std::int64_t area2 = (p1.x - p0.x) * (p2.y - p0.y) - (p1.y - p0.y) * (p2.x - p0.x);
+  // Twice the signed screen area; 0 drops the triangle, and with culling so does > 0 (a back face:
+  // counter-clockwise in NDC, i.e. front, is clockwise on the y-down screen, area2 < 0).
+  bool survives(std::int64_t area2, ChunkOutput& out) const {
     if (area2 == 0) {
       ++out.stats.zero_area;
-      return;
+      return false;
     }
-    // Counter-clockwise in NDC (front) is clockwise on the y-down screen: area2 < 0.
     if (area2 > 0 && scene_.cull_backfaces) {
       ++out.stats.culled_backface;
-      return;
+      return false;
     }
+    return true;
+  }
+
+  static std::int64_t area2_of(glm::i64vec2 p0, glm::i64vec2 p1, glm::i64vec2 p2) {
+    return (p1.x - p0.x) * (p2.y - p0.y) - (p1.y - p0.y) * (p2.x - p0.x);
+  }
+
+  void mark_used(std::uint32_t v) const {
+    if (!(v & kNewVertex)) __atomic_store_n(&used_[v], std::uint8_t(1), __ATOMIC_RELAXED);  // same value from any thread
+  }
+
+  void emit(glm::uvec3 tri, FlatValue& flat, ChunkOutput& out) const {
+    const std::int64_t area2 = area2_of(glm::i64vec2(xy_of(tri.x, out)), glm::i64vec2(xy_of(tri.y, out)),
+                                        glm::i64vec2(xy_of(tri.z, out)));
+    if (!survives(area2, out)) return;
     if (area2 < 0) std::swap(tri.y, tri.z);
     if (needs_.color)
-      for (std::uint32_t v : {tri.x, tri.y, tri.z})
-        if (!(v & kNewVertex)) __atomic_store_n(&used_[v], std::uint8_t(1), __ATOMIC_RELAXED);  // same value from any thread
+      for (std::uint32_t v : {tri.x, tri.y, tri.z}) mark_used(v);
     out.triangles.push_back(tri);
-    out.material.push_back(material);
     if (needs_.flat) out.flat_color.push_back(flat.get());
   }
 
@@ -216,7 +240,7 @@ class Assembler {
     return r;
   }
 
-  void clip_and_emit(glm::uvec3 tri, std::uint8_t planes, std::uint32_t material, FlatValue& flat,
+  void clip_and_emit(glm::uvec3 tri, std::uint8_t planes, FlatValue& flat,
                      const VertexSource& src, ChunkOutput& out) const {
     // Sutherland–Hodgman against each plane the triangle reaches beyond; at most 3 + 6 vertices.
     ClipVertex buffer_a[12], buffer_b[12];
@@ -254,7 +278,7 @@ class Assembler {
       out.new_vertices.push_back(poly[i]);
       out.new_snapped.push_back(snap(poly[i].clip, g_.width, g_.height));
     }
-    for (int i = 1; i + 1 < n; ++i) emit({ids[0], ids[i], ids[i + 1]}, material, flat, out);
+    for (int i = 1; i + 1 < n; ++i) emit({ids[0], ids[i], ids[i + 1]}, flat, out);
   }
 
   const Scene& scene_;
@@ -264,6 +288,22 @@ class Assembler {
   const std::vector<VertexSource>& sources_;
   std::vector<std::uint8_t>& used_;  // Gouraud: per scene vertex, 1 when a surviving triangle uses it
 };
+
+// Consecutive vertices of one object: a work item of the vertex stage or of lighting.
+struct ObjectRange {
+  std::size_t object, first, last;
+};
+
+// Every object's vertices cut into ranges by balanced_chunk(its count, min_chunk, max_chunk).
+void object_ranges(const std::vector<VertexSource>& sources, std::size_t min_chunk, std::size_t max_chunk,
+                   std::vector<ObjectRange>& out) {
+  out.clear();
+  for (std::size_t o = 0; o < sources.size(); ++o) {
+    const std::size_t count = sources[o].mesh->positions.size(), chunk = balanced_chunk(count, min_chunk, max_chunk);
+    for (std::size_t first = 0; first < count; first += chunk)
+      out.push_back({o, first, std::min(count, first + chunk)});
+  }
+}
 
 template <typename T>
 void resize_if(std::vector<T>& v, bool keep, std::size_t n) {
@@ -282,6 +322,8 @@ struct GeometryScratch {
   std::vector<ChunkOutput> outputs;  // cleared, not freed, between frames
   std::vector<std::uint8_t> used;
   std::vector<std::size_t> tri_offset, new_offset;
+  std::vector<glm::mat4> model_vp;
+  std::vector<ObjectRange> vertex_ranges, light_ranges;
 };
 
 glm::mat4 view_projection(const Scene& scene) {
@@ -336,33 +378,47 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
     sources[o] = {obj.mesh.get(), obj.model, glm::transpose(glm::inverse(glm::mat3(obj.model))), obj.material,
                   vertex_base[o]};
   }
-  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
-    const VertexSource& src = sources[o];
-    const Mesh& mesh = *src.mesh;
-    const glm::mat4 model_vp = vp * src.model;
-    const std::size_t base = src.base;
-    parallel_for_ranges(mesh.positions.size(), balanced_chunk(mesh.positions.size(), 512, 8192), [&](std::size_t first, std::size_t last) {
-    for (std::size_t i = first; i < last; ++i) {
-      const std::size_t v = base + i;
-      const glm::vec4 clip = model_vp * glm::vec4(mesh.positions[i], 1.0f);
-      g.clip[v] = clip;
-      g.outcode[v] = outcode_of(clip);
-      const Snapped s = snap(clip, g.width, g.height);
-      g.xy[v] = s.xy;
-      g.depth[v] = s.depth;
-      g.inv_w[v] = s.inv_w;
-      if (needs.world) g.world[v] = src.world(i);
-      if (needs.normal) g.normal[v] = src.normal(i);
+  // One parallel_for over every object's vertices (a wake-up of the pool per object costs more than a
+  // small object's work). Ranges of at least 4096 vertices (~40 ns each): a scene of a few thousand
+  // vertices stays on one thread.
+  std::vector<glm::mat4>& model_vp = scratch.model_vp;
+  model_vp.resize(scene.objects.size());
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) model_vp[o] = vp * sources[o].model;
+  object_ranges(sources, 4096, 8192, scratch.vertex_ranges);
+  parallel_for(scratch.vertex_ranges.size(), [&](std::size_t r) {
+    const ObjectRange range = scratch.vertex_ranges[r];
+    const VertexSource& src = sources[range.object];
+    const glm::mat4 m = model_vp[range.object];
+    const glm::vec3* position = src.mesh->positions.data();
+    // Plain pointers: a store through the outcodes' bytes may alias anything, so the vectors' data
+    // pointers would be reloaded from memory after every vertex.
+    glm::vec4* clip_out = g.clip.data() + src.base;
+    std::uint8_t* outcode = g.outcode.data() + src.base;
+    glm::ivec2* xy = g.xy.data() + src.base;
+    float* depth = g.depth.data() + src.base;
+    float* inv_w = g.inv_w.data() + src.base;
+    glm::vec3* world = needs.world ? g.world.data() + src.base : nullptr;
+    glm::vec3* normal = needs.normal ? g.normal.data() + src.base : nullptr;
+    const int width = g.width, height = g.height;
+    for (std::size_t i = range.first; i < range.last; ++i) {
+      const glm::vec4 clip = m * glm::vec4(position[i], 1.0f);
+      clip_out[i] = clip;
+      outcode[i] = outcode_of(clip);
+      const Snapped s = snap(clip, width, height);
+      xy[i] = s.xy;
+      depth[i] = s.depth;
+      inv_w[i] = s.inv_w;
+      if (world) world[i] = src.world(i);
+      if (normal) normal[i] = src.normal(i);
     }
-    });
-  }
+  });
 
   // Primitive assembly in chunks, merged in order.
   std::vector<ChunkJob>& jobs = scratch.jobs;
   jobs.clear();
   std::size_t face_base = 0;
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
-    const std::size_t count = scene.objects[o].mesh->triangles.size(), chunk = balanced_chunk(count, 1024, 16384);
+    const std::size_t count = scene.objects[o].mesh->triangles.size(), chunk = balanced_chunk(count, 4096, 16384);
     for (std::size_t first = 0; first < count; first += chunk)
       jobs.push_back({o, first, std::min(chunk, count - first), face_base + first});
     face_base += count;
@@ -372,7 +428,6 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
   for (std::size_t j = 0; j < jobs.size(); ++j) {
     ChunkOutput& out = outputs[j];
     out.triangles.clear();
-    out.material.clear();
     out.face.clear();
     out.flat_color.clear();
     out.new_vertices.clear();
@@ -383,19 +438,6 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
   used.assign(needs.color ? vertex_count : 0, 0);
   const Assembler assembler(scene, g, needs, lighting, sources, used);
   parallel_for(jobs.size(), [&](std::size_t j) { assembler.run(jobs[j], vertex_base[jobs[j].object], outputs[j]); });
-
-  // Gouraud: light the vertices the surviving triangles use (the others keep a zero colour).
-  if (needs.color) {
-    for (const VertexSource& src : sources) {
-      // Chunks small enough to balance the threads on a mesh of a few 10k vertices (~20 ns each).
-      parallel_for_ranges(src.mesh->positions.size(), balanced_chunk(src.mesh->positions.size(), 256, 2048), [&](std::size_t first, std::size_t last) {
-        for (std::size_t i = first; i < last; ++i) {
-          const std::size_t v = src.base + i;
-          g.color[v] = used[v] ? lighting.shade(src.material, src.world(i), src.normal(i)) : glm::vec3(0.0f);
-        }
-      });
-    }
-  }
 
   std::size_t tri_total = 0, new_total = 0;
   std::vector<std::size_t>& tri_offset = scratch.tri_offset;
@@ -428,7 +470,38 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
   g.face.resize(tri_total);
   g.flat_color.resize(needs.flat ? tri_total : 0);
 
-  parallel_for(jobs.size(), [&](std::size_t j) {
+  // Gouraud: light the vertices the surviving triangles use (the others keep a zero colour), in the same
+  // parallel_for as the merge of the chunks (one wake-up of the pool, not two). Lighting ranges of at
+  // least 2048 vertices (~100 ns for each one lit).
+  if (needs.color)
+    object_ranges(sources, 2048, 2048, scratch.light_ranges);
+  else
+    scratch.light_ranges.clear();
+  const auto light = [&](const ObjectRange& range) {
+    const VertexSource& src = sources[range.object];
+    constexpr int kLanes = VertexLighting::kLanes;  // used vertices lit kLanes at a time
+    std::size_t lane_vertex[kLanes];
+    glm::vec3 p[kLanes], n[kLanes], colour[kLanes];
+    int lanes = 0;
+    for (std::size_t i = range.first; i < range.last; ++i) {
+      const std::size_t v = src.base + i;
+      if (!used[v]) {
+        g.color[v] = glm::vec3(0.0f);
+        continue;
+      }
+      lane_vertex[lanes] = v;
+      p[lanes] = src.world(i);
+      n[lanes] = src.normal(i);
+      if (++lanes < kLanes) continue;
+      lighting.shade_lanes(src.material, p, n, colour);
+      for (int k = 0; k < kLanes; ++k) g.color[lane_vertex[k]] = colour[k];
+      lanes = 0;
+    }
+    for (int k = 0; k < lanes; ++k) g.color[lane_vertex[k]] = lighting.shade(src.material, p[k], n[k]);
+  };
+  parallel_for(scratch.light_ranges.size() + jobs.size(), [&](std::size_t item) {
+    if (item < scratch.light_ranges.size()) return light(scratch.light_ranges[item]);
+    const std::size_t j = item - scratch.light_ranges.size();
     const ChunkOutput& out = outputs[j];
     const std::uint32_t base = std::uint32_t(new_offset[j]);
     for (std::size_t k = 0; k < out.new_vertices.size(); ++k) {
@@ -440,11 +513,12 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
       if (needs.normal) g.normal[v] = out.new_vertices[k].normal;
       if (needs.color) g.color[v] = out.new_vertices[k].color;
     }
+    const std::uint32_t material = scene.objects[jobs[j].object].material;
     const auto remap = [base](std::uint32_t v) { return (v & kNewVertex) ? base + (v & ~kNewVertex) : v; };
     for (std::size_t t = 0; t < out.triangles.size(); ++t) {
       const glm::uvec3 tri = out.triangles[t];
       g.triangles[tri_offset[j] + t] = {remap(tri.x), remap(tri.y), remap(tri.z)};
-      g.material[tri_offset[j] + t] = out.material[t];
+      g.material[tri_offset[j] + t] = material;
       g.face[tri_offset[j] + t] = out.face[t];
       if (needs.flat) g.flat_color[tri_offset[j] + t] = out.flat_color[t];
     }

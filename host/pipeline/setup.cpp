@@ -100,7 +100,7 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
                            FixedPlanes* fixed, const TriangleShading* gouraud) {
   const std::size_t count = g.triangles.size();
   std::atomic<std::uint64_t> without_pixels{0};
-  parallel_for_ranges(count, balanced_chunk(count, 512, 4096), [&](std::size_t first, std::size_t last) {
+  parallel_for_ranges(count, balanced_chunk(count, 2048, 4096), [&](std::size_t first, std::size_t last) {
     without_pixels += setup_triangle_range(g, method, geometry, attributes, fixed, gouraud, first, last);
   });
   return {std::uint64_t(count), without_pixels.load()};

@@ -1,6 +1,7 @@
 #include "parashade/vertex_lighting.hpp"
 
 #include <cmath>
+#include <cstring>
 
 namespace parashade {
 
@@ -42,6 +43,97 @@ glm::vec3 VertexLighting::shade(std::uint32_t material, glm::vec3 p, glm::vec3 n
     if (n_dot_h > 0.0f) out += light.intensity * m.specular * std::pow(n_dot_h, m.shininess);
   }
   return out;
+}
+
+namespace {
+
+// kLanes floats as one vector (GCC/Clang vector extensions: +, -, *, / are the IEEE operations lane
+// by lane, SSE on any x86-64); comparisons give lanes of all ones (true) or zero. Casts between the
+// two types keep the bits.
+#define PARASHADE_LANE inline __attribute__((always_inline))
+typedef float Floats __attribute__((vector_size(4 * VertexLighting::kLanes)));
+typedef int Mask __attribute__((vector_size(4 * VertexLighting::kLanes)));
+
+struct Vec3s {
+  Floats x, y, z;
+};
+
+PARASHADE_LANE Floats splat(float v) {
+  Floats r;
+  for (int k = 0; k < VertexLighting::kLanes; ++k) r[k] = v;
+  return r;
+}
+
+PARASHADE_LANE Floats sqrt_lanes(Floats v) {
+#if defined(__SSE__) && !defined(__clang__)
+  return __builtin_ia32_sqrtps(v);  // correctly rounded, as std::sqrt(float)
+#else
+  for (int k = 0; k < VertexLighting::kLanes; ++k) v[k] = std::sqrt(v[k]);
+  return v;
+#endif
+}
+
+PARASHADE_LANE Floats select(Mask m, Floats yes, Floats no) { return Floats((m & Mask(yes)) | (~m & Mask(no))); }
+// glm::dot of vec3: (x*x' + y*y') + z*z'; glm::length = sqrt(dot(a, a)).
+PARASHADE_LANE Floats dot(const Vec3s& a, const Vec3s& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+PARASHADE_LANE Floats length(const Vec3s& a) { return sqrt_lanes(dot(a, a)); }
+PARASHADE_LANE Vec3s minus(const Vec3s& a, const Vec3s& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+PARASHADE_LANE Vec3s plus(const Vec3s& a, const Vec3s& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+PARASHADE_LANE Vec3s divide(const Vec3s& a, Floats d) { return {a.x / d, a.y / d, a.z / d}; }
+PARASHADE_LANE Vec3s splat3(glm::vec3 v) { return {splat(v.x), splat(v.y), splat(v.z)}; }
+PARASHADE_LANE Vec3s select3(Mask m, const Vec3s& yes, const Vec3s& no) {
+  return {select(m, yes.x, no.x), select(m, yes.y, no.y), select(m, yes.z, no.z)};
+}
+// out + (i * k) * s where m holds (glm: light.intensity * m.diffuse * n_dot_l, added to out).
+PARASHADE_LANE void add_where(Mask m, Vec3s& out, glm::vec3 ik, Floats s) {
+  out.x = select(m, out.x + splat(ik.x) * s, out.x);
+  out.y = select(m, out.y + splat(ik.y) * s, out.y);
+  out.z = select(m, out.z + splat(ik.z) * s, out.z);
+}
+
+#undef PARASHADE_LANE
+
+}  // namespace
+
+// shade() with its branches as lane masks: a lane adds a term exactly when shade() would.
+void VertexLighting::shade_lanes(std::uint32_t material, const glm::vec3* p_in, const glm::vec3* n_in,
+                                 glm::vec3* out_colour) const {
+  const PreparedMaterial& m = materials_[material];
+  Vec3s p, n;
+  for (int k = 0; k < kLanes; ++k) {
+    p.x[k] = p_in[k].x, p.y[k] = p_in[k].y, p.z[k] = p_in[k].z;
+    n.x[k] = n_in[k].x, n.y[k] = n_in[k].y, n.z[k] = n_in[k].z;
+  }
+  const Floats zero = splat(0.0f);
+  Vec3s out = splat3(m.ambient_term);
+  Vec3s v = splat3(view_dir_);
+  if (local_viewer_) {
+    const Vec3s d = minus(splat3(eye_), p);
+    const Floats len = length(d);
+    v = select3(len > zero, divide(d, len), v);
+  }
+  for (const PreparedLight& light : lights_) {
+    Vec3s l = splat3(light.l_or_position);
+    Mask lit = zero == zero;  // all lanes
+    if (!light.directional) {
+      const Vec3s d = minus(l, p);
+      const Floats len = length(d);
+      lit = len != zero;
+      l = divide(d, len);
+    }
+    const Floats n_dot_l = dot(n, l);
+    add_where(lit & (n_dot_l > zero), out, light.intensity * m.diffuse, n_dot_l);
+    const Vec3s h = plus(l, v);
+    const Floats h_len = length(h);
+    lit &= h_len != zero;
+    const Floats n_dot_h = dot(n, h) / h_len;
+    const Mask specular = lit & (n_dot_h > zero);
+    Floats power = zero;
+    for (int k = 0; k < kLanes; ++k)
+      if (specular[k]) power[k] = std::pow(n_dot_h[k], m.shininess);
+    add_where(specular, out, light.intensity * m.specular, power);
+  }
+  for (int k = 0; k < kLanes; ++k) out_colour[k] = {out.x[k], out.y[k], out.z[k]};
 }
 
 }  // namespace parashade

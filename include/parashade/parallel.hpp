@@ -25,10 +25,14 @@ void parallel_for(std::size_t count, const std::function<void(std::size_t)>& bod
 void parallel_rest();
 
 // A range size for parallel_for_ranges: about four ranges per thread (dynamic balance on cores shared
-// with other work), but no fewer than min_chunk items nor more than max_chunk per range.
+// with other work), each of at least min_chunk items (a range is worth a wake-up: fewer than 2 ranges
+// run on the calling thread alone) and at most max_chunk; equal ranges, so none is a small remainder.
 inline std::size_t balanced_chunk(std::size_t count, std::size_t min_chunk, std::size_t max_chunk) {
-  const std::size_t ranges = 4 * std::size_t(host_threads());
-  return std::clamp((count + ranges - 1) / ranges, min_chunk, max_chunk);
+  if (count == 0) return std::max<std::size_t>(1, min_chunk);
+  const std::size_t at_most_min = std::max<std::size_t>(1, count / std::max<std::size_t>(1, min_chunk));
+  const std::size_t at_least_max = (count + max_chunk - 1) / std::max<std::size_t>(1, max_chunk);
+  const std::size_t ranges = std::max(std::min(4 * std::size_t(host_threads()), at_most_min), at_least_max);
+  return (count + ranges - 1) / ranges;
 }
 
 // Calls body(begin, end) on consecutive ranges of at most `chunk` items covering [0, count).

@@ -12,6 +12,7 @@
 #include "parashade/lighting.hpp"
 #include "parashade/parallel.hpp"
 #include "parashade/reference.hpp"
+#include "parashade/vertex_lighting.hpp"
 #include "parashade/shapes.hpp"
 #include "test_support.hpp"
 
@@ -163,6 +164,26 @@ TEST(GeometryStage, NonFiniteAndOutsideTrianglesAreDroppedAndCounted) {
   EXPECT_EQ(g.stats.outside, 1u);
 }
 
+// Flat values come from the scene's vertex order (its face normal), also for a back face the stage
+// reorders to screen winding; every screen triangle keeps its scene face index.
+TEST(GeometryStage, FlatValueUsesTheSceneFaceNormalAndFacesAreKept) {
+  Scene s = ortho_scene(320, 240);
+  s.cull_backfaces = false;
+  const glm::vec3 a(0, 0, 0), b(50, 0, 0), c(0, 50, 0);
+  add_mesh(s, {a, b, c, {-80, -80, 0}}, {{0, 1, 2}, {0, 2, 1}, {3, 3, 3}, {0, 2, 1}});  // front, back, none, back
+  ScreenGeometry g;
+  build_screen_geometry(s, {Method::flat, false}, g);
+  ASSERT_EQ(g.triangles.size(), 3u);
+  EXPECT_EQ(g.face, (std::vector<std::uint32_t>{0, 1, 3}));
+  const VertexLighting lighting(s);
+  const glm::vec3 centroid = (a + b + c) / 3.0f;
+  const glm::vec3 front = lighting.shade(0, centroid, {0, 0, 1}), back = lighting.shade(0, centroid, {0, 0, -1});
+  ASSERT_NE(front, back);
+  EXPECT_EQ(g.flat_color[0], front);
+  EXPECT_EQ(g.flat_color[1], back);
+  EXPECT_EQ(g.flat_color[2], back);
+}
+
 TEST(GeometryStage, OutputDoesNotDependOnTheThreadCount) {
   Scene s = ortho_scene(320, 240);
   s.camera.projection = Projection::perspective;
@@ -186,6 +207,8 @@ TEST(GeometryStage, OutputDoesNotDependOnTheThreadCount) {
   EXPECT_EQ(one.triangles, two.triangles);
   EXPECT_EQ(one.xy, two.xy);
   EXPECT_EQ(one.color, two.color);
+  EXPECT_EQ(one.face, two.face);
+  EXPECT_EQ(one.material, two.material);
 
   // The stage keeps its working buffers across frames: a geometry that held a larger, different frame
   // (more chunks, other clip-made vertices) and then this one gives what a fresh one gives.

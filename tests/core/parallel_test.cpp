@@ -52,9 +52,15 @@ TEST(ParallelFor, BackToBackAfterAPauseAndAfterRest) {
 TEST(ParallelFor, BalancedChunkGivesAboutFourRangesPerThread) {
   const unsigned before = host_threads();
   set_host_threads(2);
-  EXPECT_EQ(balanced_chunk(80000, 512, 8192), 8192u);  // capped
+  EXPECT_EQ(balanced_chunk(80000, 512, 8192), 8000u);  // capped: 10 equal ranges of at most 8192
   EXPECT_EQ(balanced_chunk(16000, 512, 8192), 2000u);  // 8 ranges
-  EXPECT_EQ(balanced_chunk(1000, 512, 8192), 512u);    // at least min_chunk
+  // Every range holds at least min_chunk items: below 2 * min_chunk one range (no wake-up) ...
+  EXPECT_EQ(balanced_chunk(1000, 512, 8192), 1000u);
+  EXPECT_EQ(balanced_chunk(4225, 4096, 8192), 4225u);
+  // ... and fewer than four per thread when the items do not fill them.
+  EXPECT_EQ(balanced_chunk(8192, 4096, 8192), 4096u);
+  EXPECT_EQ(balanced_chunk(12287, 4096, 8192), 6144u);  // 2 ranges, not 3 with a remainder below 4096
+  EXPECT_EQ(balanced_chunk(0, 512, 8192), 512u);
   set_host_threads(before);
 }
 
