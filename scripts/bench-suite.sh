@@ -8,7 +8,7 @@
 #   scripts/bench-suite.sh --phong [OUT_DIR]  the Phong family ([Romanyuk & Romanyuk, combined shading]; [Dembitsky 2025, software/hardware rendering] ch. 2-3) and the claims table only (~5 min)
 #   scripts/bench-suite.sh [--phong] --shard K/N [OUT_DIR]   shard K of N: its share of the steps (below)
 #   mpirun -np N scripts/bench-suite.sh [--phong] [OUT_DIR]  the same, shard = rank (docs/distributed.md)
-#   --dry-run (after --quick/--phong)                        list this shard's steps, run nothing
+#   --dry-run (after --phong, with or without --shard)      list this shard's steps, run nothing
 # Environment: PARASHADE_MESH_DIR (bunny, fandisk; skipped without it), PARASHADE_DEVICE, BUILD (default build).
 set -eu
 cd "$(dirname "$0")/.."
@@ -24,8 +24,8 @@ while :; do
     *) break ;;
   esac
 done
-if [ "$QUICK" = 1 ] && [ "$SHARDS" -gt 1 ]; then
-  echo "bench-suite: --quick is one short run, not dealt across shards (shard $SHARD of $SHARDS)" >&2
+if [ "$QUICK" = 1 ] && { [ "$SHARDS" -gt 1 ] || [ "$BENCH_DRY_RUN" = 1 ]; }; then
+  echo "bench-suite: --quick is one short run, neither dealt across shards nor listed (--shard, --dry-run, mpirun)" >&2
   exit 2
 fi
 OUT="${1:-bench-results}"
