@@ -6,6 +6,9 @@
 #   scripts/bench-suite.sh [-q] [OUT_DIR]          whole suite (sizes 1920x1080, 512x512, 3840x2160; ~1 h here)
 #   scripts/bench-suite.sh [-q] --quick [OUT_DIR]  CI subset: sphere_8k and fullscreen_quad at 512x512 (< 1 min)
 #   scripts/bench-suite.sh [-q] --phong [OUT_DIR]  the Phong family ([Romanyuk & Romanyuk, combined shading]; [Dembitsky 2025, software/hardware rendering] ch. 2-3) and the claims table only (~5 min)
+#   scripts/bench-suite.sh [-q] [--phong] --shard K/N [OUT_DIR]   shard K of N: its share of the steps
+#   mpirun -np N scripts/bench-suite.sh [-q] [--phong] [OUT_DIR]  the same, shard = rank (docs/distributed.md)
+#   --dry-run (after --phong, with or without --shard)            list this shard's steps, run nothing
 # Each step's output goes to OUT_DIR/logs/NN-STEP.log; one line per step says its time ("[i/N] STEP: 12.3 s",
 # with the time left on a terminal); -q prints only failures. A failing step prints its log's end and stops
 # the suite.
@@ -18,6 +21,18 @@ QUIET=0
 if [ "${1:-}" = "-q" ]; then QUIET=1; shift; fi
 if [ "${1:-}" = "--quick" ]; then QUICK=1; shift; fi
 if [ "${1:-}" = "--phong" ]; then PHONG_ONLY=1; shift; fi
+. scripts/bench_shard.sh  # sharding: shard_owns, after_all
+while :; do
+  case "${1:-}" in
+    --shard) set_shard "${2:-}"; shift 2 ;;
+    --dry-run) BENCH_DRY_RUN=1; QUIET=1; shift ;;
+    *) break ;;
+  esac
+done
+if [ "$QUICK" = 1 ] && { [ "$SHARDS" -gt 1 ] || [ "$BENCH_DRY_RUN" = 1 ]; }; then
+  echo "bench-suite: --quick is one short run, neither dealt across shards nor listed (--shard, --dry-run, mpirun)" >&2
+  exit 2
+fi
 OUT="${1:-bench-results}"
 BUILD="${BUILD:-build}"
 case "$BUILD" in /*) ;; *) BUILD="$PWD/$BUILD" ;; esac
@@ -41,13 +56,30 @@ if [ -t 1 ] && [ "$QUIET" = 0 ]; then TERMINAL=1; fi
 say() { if [ "$COUNTING" = 0 ] && [ "$QUIET" = 0 ]; then echo "bench-suite: $*"; fi; }
 warn() { if [ "$COUNTING" = 0 ]; then echo "bench-suite: $*" >&2; fi; }
 
-# step NAME COMMAND...: runs COMMAND with its stdout and stderr in OUT/logs/NN-NAME.log and prints one line
-# with its time; a failure prints the log's last lines and stops the suite.
+# step NAME COMMAND...: a step of this shard's share (every step when unsharded; scripts/bench_shard.sh).
 step() {
-  name=$1
-  shift
+  shard_owns || return 0
+  run_step "" "$@"
+}
+# final_step NAME COMMAND...: a step that reads every shard's results: shard 0 alone, once the others ended.
+final_step() {
+  if [ "$COUNTING" = 0 ]; then after_all; fi  # the other shards leave here
+  [ "$SHARD" -eq 0 ] || return 0
+  run_step final "$@"
+}
+
+# run_step KIND NAME COMMAND...: runs COMMAND with its stdout and stderr in OUT/logs/NN-NAME.log and prints
+# one line with its time; a failure prints the log's last lines and stops the suite. The dry run lists it.
+run_step() {
+  kind=$1
+  name=$2
+  shift 2
   if [ "$COUNTING" = 1 ]; then
     STEPS=$((STEPS + 1))
+    return 0
+  fi
+  if [ "$BENCH_DRY_RUN" = 1 ]; then
+    echo "${kind:-step} $name"
     return 0
   fi
   DONE=$((DONE + 1))
@@ -82,13 +114,18 @@ peer_quick() {
 }
 # Every case, one run per size (the 1920x1080 run holds the targets' ratios), 3 repetitions in random
 # order (a noisy spell on this shared machine then does not fall on one case only); medians.
+# A size whose result file exists is not run again (resume after an interruption; delete it to rerun).
 peer_size() {
+  if [ -s "$OUT/peer-$1.json" ]; then
+    echo "bench-suite: $OUT/peer-$1.json exists: not run again" >&2
+    return 0
+  fi
   "$BUILD/bench/bench_llvmpipe" --sizes="$1" --images="$OUT/images" \
       --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true \
       --benchmark_report_aggregates_only=true --benchmark_min_time=0.3 \
       --benchmark_out="$OUT/peer-$1.json" --benchmark_out_format=json
+  "$PYTHON" scripts/check_bench_json.py "$OUT/peer-$1.json" || echo "bench-suite: check failed: see above" >&2
 }
-check_peer() { "$PYTHON" scripts/check_bench_json.py "$1" || echo "bench-suite: check failed: see above" >&2; }
 # Interpolator count -> modeled and measured speed-up and error (Gouraud on the teapot and the sphere).
 scaling_scene() {
   "$BUILD/parashade" scaling "scenes/$1.json" -q \
@@ -97,6 +134,7 @@ scaling_scene() {
 }
 hw_synthesis() { BUILD="$BUILD" "$PYTHON" scripts/hw_synth.py --out "$OUT/hw" >"$OUT/hw-synthesis.txt"; }
 span_setup() {
+  if [ ! -x "$BUILD/bench/bench_span_setup" ]; then echo "bench-suite: no $BUILD/bench/bench_span_setup: skipped" >&2; return 0; fi
   "$BUILD/bench/bench_span_setup" --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true \
       --benchmark_report_aggregates_only=true --benchmark_min_time=0.1 \
       --benchmark_out="$OUT/span.json" --benchmark_out_format=json
@@ -117,6 +155,7 @@ phong_methods() {
       --frames 5 --json "$OUT/phong-methods.json" >"$OUT/phong-methods.md"
 }
 normalize_bench() {
+  if [ ! -x "$BUILD/bench/bench_normalize" ]; then echo "bench-suite: no $BUILD/bench/bench_normalize: skipped" >&2; return 0; fi
   "$BUILD/bench/bench_normalize" --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true \
       --benchmark_report_aggregates_only=true --benchmark_min_time=0.1 \
       --benchmark_out="$OUT/normalize.json" --benchmark_out_format=json
@@ -139,15 +178,7 @@ suite() {
   fi
 
   if [ "$PHONG_ONLY" = 0 ]; then
-    # A size whose result file exists is not run again (resume after an interruption; delete it to rerun).
-    for size in 1920x1080 512x512 3840x2160; do
-      if [ -s "$OUT/peer-$size.json" ]; then
-        warn "$OUT/peer-$size.json exists: not run again"
-        continue
-      fi
-      step "peer $size" peer_size "$size"
-      step "check peer-$size.json" check_peer "$OUT/peer-$size.json"
-    done
+    for size in 1920x1080 512x512 3840x2160; do step "peer $size" peer_size "$size"; done
     for scene in teapot sphere; do step "scaling $scene" scaling_scene "$scene"; done
     # Fixed-point error of the units against the source's formulas ([Malovanyi 2019, parallel Gouraud] ch. 3).
     step "unit-error" "$BUILD/parashade" unit-error -q --report "$OUT/unit-error.json"
@@ -159,7 +190,7 @@ suite() {
       warn "yosys is not installed: no synthesis of hw/ (scripts/install-deps.sh)"
     fi
     # Host model of whole-triangle shading: constant increment and shift-add division ([Gouraud simplification], [Romanyuk & Obidnyk 2011, faster shading]).
-    if [ -x "$BUILD/bench/bench_span_setup" ]; then step "span setup" span_setup; fi
+    step "span setup" span_setup
   fi
 
   # Phong family ([Romanyuk & Romanyuk, combined shading]; [Dembitsky 2025, software/hardware rendering] ch. 2-3): approximation errors (parashade phong-study), the combined method's and the
@@ -168,25 +199,27 @@ suite() {
   step "phong-study" "$BUILD/parashade" phong-study -q --report "$OUT/phong-study.json"
   step "combined study" combined_study
   step "phong methods" phong_methods
-  step "best method" "$PYTHON" scripts/best_method.py --combined "$OUT/combined-study.json" \
-      --methods "$OUT/phong-methods.json" -o "$OUT/best-method.json"
-  if [ -x "$BUILD/bench/bench_normalize" ]; then step "normalize bench" normalize_bench; fi
+  step "normalize bench" normalize_bench
+  if [ "$PHONG_ONLY" = 0 ]; then
+    step "peak memory" "$PYTHON" scripts/peak_memory.py --binary "$BUILD/parashade" -o "$OUT/memory.json"
+  fi
 
-  if [ "$PHONG_ONLY" = 1 ]; then
-    step "claims" "$PYTHON" scripts/claims.py --results "$OUT" -o "$OUT/report/claims.md"
-    return 0
+  # From here on every result is in: shard 0 alone goes on (the other shards have ended).
+  final_step "best method" "$PYTHON" scripts/best_method.py --combined "$OUT/combined-study.json" \
+      --methods "$OUT/phong-methods.json" -o "$OUT/best-method.json"
+  if [ "$PHONG_ONLY" = 0 ]; then
+    if "$PYTHON" -c "import matplotlib" 2>/dev/null; then
+      final_step "report" report
+    else
+      warn "python3-matplotlib is not installed: no plots (apt-get install python3-matplotlib)"
+    fi
   fi
-  step "peak memory" "$PYTHON" scripts/peak_memory.py --binary "$BUILD/parashade" -o "$OUT/memory.json"
-  if "$PYTHON" -c "import matplotlib" 2>/dev/null; then
-    step "report" report
-  else
-    warn "python3-matplotlib is not installed: no plots (apt-get install python3-matplotlib)"
-  fi
-  step "claims" "$PYTHON" scripts/claims.py --results "$OUT" -o "$OUT/report/claims.md"
+  final_step "claims" "$PYTHON" scripts/claims.py --results "$OUT" -o "$OUT/report/claims.md"
 }
 
 suite
 COUNTING=0
+STEP_INDEX=0  # the real pass deals the steps again, in the same order
 if [ "$QUICK" = 0 ]; then mkdir -p "$OUT/report"; fi
 suite
 say "results in $OUT (logs in $OUT/logs)"

@@ -7,12 +7,18 @@ for a 100-million-triangle scene at 3840x2160.
         scripts/distributed_model.py --build build --scene scenes/bunny.json --size 1920x1080 \\
         --json distributed-model.json --plot docs/distributed-scaling.png
 
+Only warm frames count: each run renders --warmup frames first (program builds, device and scene set-up),
+then --frames timed frames, whose per-rank, per-frame prepare, render, pack and composite times the report
+lists. Runs are interleaved: --rounds rounds, each going through every (mode, N) once in an order turned
+by the round, and each round also times the one-process render (the frame without MPI) for comparison;
+the load average is recorded before every run. Figures are medians over frames, then over rounds.
+
 Prints the Markdown tables docs/distributed.md quotes. Needs mpirun and, for --plot, python3-matplotlib.
 """
 import argparse
 import json
-import math
 import os
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -37,17 +43,41 @@ def composite_model(mode, n_ranks, pixels, a):
     return (N - 1) * a["alpha"] + f * 4 * pixels * a["beta"]
 
 
+def warm_figures(reports):
+    """One run's figures from its rounds: per round and rank, the median over the timed frames of each time;
+    then the median over the rounds. The frame is rank 0's barrier-to-barrier frame."""
+    keys = ("prepare_ms", "render_ms", "pack_ms", "composite_ms", "rank_frame_ms")
+    out = json.loads(json.dumps(reports[0]))
+    out["frame_ms"] = statistics.median(r["frame_ms"] for r in reports)
+    out["frame_ms_rounds"] = [r["frame_ms"] for r in reports]
+    for i, rank in enumerate(out["per_rank"]):
+        for key in keys:
+            rank[key] = statistics.median(statistics.median(f[key] for f in r["per_rank"][i]["frames"])
+                                          for r in reports)
+        rank["peak_rss_mb"] = max(r["per_rank"][i]["peak_rss_mb"] for r in reports)
+    for key in ("render_ms", "prepare_ms"):
+        out["imbalance"][key] = statistics.median(r["imbalance"][key] for r in reports)
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--build", default="build")
     ap.add_argument("--scene", default="scenes/bunny.json")
     ap.add_argument("--size", default="1920x1080")
     ap.add_argument("--frames", type=int, default=5)
+    ap.add_argument("--warmup", type=int, default=1)
+    ap.add_argument("--rounds", type=int, default=3)
     ap.add_argument("--ranks", default="1,2,3,4")
     ap.add_argument("--cores", type=int, default=os.cpu_count())
     ap.add_argument("--json")
     ap.add_argument("--plot")
     args = ap.parse_args()
+    if args.plot:
+        try:
+            import matplotlib  # noqa: F401  (checked before the runs, not after them)
+        except ImportError:
+            sys.exit("--plot needs matplotlib (Debian's python3-matplotlib: run this with /usr/bin/python3)")
     mpirun = ["mpirun", "--oversubscribe"]
     binary = os.path.join(args.build, "parashade")
 
@@ -56,15 +86,38 @@ def main():
     w, h = map(int, args.size.split("x"))
     pixels = w * h
 
-    runs = {}
+    ranks = list(map(int, args.ranks.split(",")))
+    # The one-process frames to compare with N = 1: sort-first's frame is the plain frame; sort-last's is
+    # a planned frame (the units' depth pass leaves the keys), so also the one-process planned frame.
+    cases = [(m, n) for m in ("sort-last", "sort-first") for n in ranks] + [("one-process", 1),
+                                                                             ("one-process-planned", 1)]
+    samples = {c: [] for c in cases}  # per case, one report per round
+    loads = []
+    common = ["--size", args.size, "--no-error", "-q", "--no-tuned", "--frames", str(args.frames),
+              "--warmup", str(args.warmup)]
     with tempfile.TemporaryDirectory() as tmp:
-        for mode in ("sort-last", "sort-first"):
-            for n in map(int, args.ranks.split(",")):
+        for rnd in range(args.rounds):
+            k = rnd % len(cases)
+            order = cases[k:] + cases[:k]  # interleaved: each round starts elsewhere, so a noisy spell
+            if rnd % 2:                    # does not fall on one N only
+                order.reverse()
+            for mode, n in order:
                 rep = os.path.join(tmp, "r.json")
-                sh(mpirun + ["-np", str(n), binary, "render", args.scene, "-o", os.path.join(tmp, "i.png"),
-                             "--size", args.size, "--no-error", "-q", "--no-tuned", "--frames", str(args.frames),
-                             "--warmup", "1", "--distribute", mode, "--report", rep])
-                runs[(mode, n)] = json.load(open(rep))
+                load = open("/proc/loadavg").read().split()[0]
+                if mode.startswith("one-process"):
+                    planned = ["--cu", str(args.cores)] if mode == "one-process-planned" else []
+                    sh([binary, "render", args.scene, "-o", os.path.join(tmp, "i.png"), "--report", rep] + common +
+                       planned)
+                else:
+                    sh(mpirun + ["-np", str(n), binary, "render", args.scene, "-o", os.path.join(tmp, "i.png"),
+                                 "--distribute", mode, "--report", rep] + common)
+                samples[(mode, n)].append(json.load(open(rep)))
+                loads.append((rnd, mode, n, float(load)))
+                print("round %d %s N=%d: load %s, frame %.1f ms" % (rnd, mode, n, load,
+                      samples[(mode, n)][-1]["frame_ms"]), file=sys.stderr, flush=True)
+    one_process = statistics.median(r["frame_ms"] for r in samples[("one-process", 1)])
+    one_planned = statistics.median(r["frame_ms"] for r in samples[("one-process-planned", 1)])
+    runs = {c: warm_figures(samples[c]) for c in cases if not c[0].startswith("one-process")}
 
     # Model of a rank's compute on this host, in core-ms (a rank's wall ms x its share of the C cores:
     # C/N for N ranks on C cores, whether they split the cores or time-share them):
@@ -108,6 +161,12 @@ def main():
                          max(p["records"] for p in r["per_rank"]), max(p["peak_rss_mb"] for p in r["per_rank"])))
             out["runs"]["%s/%d" % (mode, n)] = r
 
+    print("one-process render (no MPI): %.1f ms a frame, planned (--cu %d) %.1f ms (medians over rounds)" %
+          (one_process, args.cores, one_planned))
+    print("load average (1 min) before each run: %s" % ", ".join("%.1f" % l[3] for l in loads))
+    out["one_process_frame_ms"] = one_process
+    out["one_process_planned_frame_ms"] = one_planned
+    out["loads"] = loads
     print("ping-pong (np 2, one host): alpha %.2f us, beta %.3f ns/byte (%.2f GB/s), gamma %.2f ns/pixel" %
           (a["alpha"] * 1e6, a["beta"] * 1e9, 1 / a["beta"] / 1e9, a["gamma"] * 1e9))
     for mode, m in out["model"].items():
@@ -156,6 +215,9 @@ def main():
             ax1.plot([r[1] for r in rr], [r[8] for r in rr], mk + ":", label=mode + " composite measured")
             ax1.plot([r[1] for r in rr], [r[9] for r in rr], "x:", label=mode + " composite α–β")
             ax1.plot([r[1] for r in rr], [r[3] for r in rr], mk + "--", label=mode + " model")
+        ax1.axhline(one_process, color="grey", lw=0.8, label="one process, no MPI")
+        ax1.axhline(one_planned, color="grey", lw=0.8, ls="--", label="one process, planned frame")
+        ax1.set_yscale("log")
         ax1.set_xlabel("ranks (one 2-core host)")
         ax1.set_ylabel("frame ms")
         ax1.set_title("measured vs model, " + os.path.basename(args.scene) + " " + args.size)

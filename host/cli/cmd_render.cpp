@@ -49,7 +49,7 @@ struct RenderArgs {
   PlanArgs plan;
   std::string tune_cache;
   std::string reference_image, error_map, error_reference = "ideal";  // the pictures of the error
-  std::string distribute, rank_partition;  // --distribute: MPI ranks (docs/distributed.md)
+  std::string distribute, rank_partition, read_scene;  // --distribute: MPI ranks (docs/distributed.md)
   std::string device_origin = "--device";  // or PARASHADE_DEVICE (device_option.hpp)
   bool no_tuned = false, explicit_config = false, keep_going = false;  // explicit: --tile, --work-items, --cu or --partition given
 };
@@ -156,7 +156,6 @@ int run_distributed(const RenderArgs& a, RenderOptions options, const std::optio
 int run_distributed_checked(const RenderArgs& a, RenderOptions options, const std::optional<std::pair<int, int>>& size) {
   DistributedRender job;
   job.mode = parse_distribute(a.distribute);
-  if (a.float_output) throw UsageError("--float does not combine with --distribute yet (8-bit images only)");
   if (a.keep_going) throw UsageError("--keep-going does not combine with --distribute: a failing rank stops every rank");
   if (is_device_list(a.device) || is_sub_device_selector(a.device))
     throw UsageError("--distribute: each rank opens one device; '" + a.device + "' names several");
@@ -167,6 +166,11 @@ int run_distributed_checked(const RenderArgs& a, RenderOptions options, const st
     if (job.rank_partition == Partition::tiles)
       throw UsageError("--rank-partition tiles: sort-last ranks take shares of the triangles, not screen tiles "
                        "(round-robin, lpt or dynamic; --distribute sort-first takes bands of tiles)");
+  }
+  if (!a.read_scene.empty()) {
+    if (a.read_scene != "every-rank" && a.read_scene != "rank-0")
+      throw UsageError("unknown --read-scene '" + a.read_scene + "' (valid: every-rank, rank-0)");
+    job.scatter_scene = a.read_scene == "rank-0";
   }
   check_config_options(options, distribute_device_mode(job.mode));
   if (!options.units && options.unit_path() && !a.quiet)
@@ -250,6 +254,7 @@ int run_render(const RenderArgs& a) {
   check_picture_options(a);
   if (!a.distribute.empty()) return run_distributed(a, options, size);
   if (!a.rank_partition.empty()) throw UsageError("--rank-partition needs --distribute sort-last");
+  if (!a.read_scene.empty()) throw UsageError("--read-scene needs --distribute (how MPI ranks get the scene)");
   // --cu with sub:NAME:N: the units' depth pass spread over the sub-devices; without --cu a device list
   // or sub-devices take bands of the frame (docs/planner.md).
   const bool units_on_sub_devices = options.plan && is_sub_device_selector(a.device);
@@ -493,6 +498,9 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("--rank-partition", a->rank_partition,
                   "--distribute sort-last: the planner's strategy for triangles to ranks: lpt (default), round-robin, "
                   "dynamic (batches of --batch)");
+  cmd->add_option("--read-scene", a->read_scene,
+                  "--distribute: every-rank (default: each rank reads the scene file) or rank-0 (rank 0 reads it and "
+                  "scatters each sort-last rank its share of the triangles, or broadcasts the scene to sort-first ranks)");
   cmd->add_flag("--keep-going", a->keep_going,
                 "With a device list (bands): drop a failing device (named) and go on with the others");
   add_size_option(*cmd, a->size);

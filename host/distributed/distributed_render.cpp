@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include "mpi_session.hpp"
+#include "scene_bytes.hpp"
 #include "parashade/device.hpp"
 #include "parashade/distributed.hpp"
 #include "parashade/errors.hpp"
@@ -26,19 +27,35 @@ namespace distributed {
 namespace {
 
 // One pixel as the ranks composite it: the least key (depth, scene face) wins; its colour and rank go
-// with it. 16 bytes.
+// with it. 16 bytes; with --float the pixel's unclamped RGB follows (3 floats and 4 bytes of padding: 32
+// bytes a pixel), so the float image is the winner's too.
 struct KeyPixel {
   std::uint64_t key;
   std::uint32_t rgba;
   std::uint32_t rank;
 };
 static_assert(sizeof(KeyPixel) == 16, "KeyPixel is sent as 16 bytes");
+constexpr int kFloatPixelBytes = 32;
 
-void min_key(void* in, void* inout, int* len, MPI_Datatype*) {
-  const KeyPixel* a = static_cast<const KeyPixel*>(in);
-  KeyPixel* b = static_cast<KeyPixel*>(inout);
-  for (int i = 0; i < *len; ++i)
-    if (a[i].key < b[i].key || (a[i].key == b[i].key && a[i].rank < b[i].rank)) b[i] = a[i];
+// The composite's operator on pixels of the datatype's size (16 or 32 bytes): the least key wins, equal
+// keys (no rank covers the pixel) go to the lowest rank.
+void min_key(void* in, void* inout, int* len, MPI_Datatype* type) {
+  int bytes = 0;
+  MPI_Type_size(*type, &bytes);
+  const char* a = static_cast<const char*>(in);
+  char* b = static_cast<char*>(inout);
+  for (int i = 0; i < *len; ++i, a += bytes, b += bytes) {
+    KeyPixel x, y;
+    std::memcpy(&x, a, sizeof x);
+    std::memcpy(&y, b, sizeof y);
+    if (x.key < y.key || (x.key == y.key && x.rank < y.rank)) std::memcpy(b, a, std::size_t(bytes));
+  }
+}
+
+KeyPixel key_pixel(const std::vector<char>& buf, std::size_t p, int bytes) {
+  KeyPixel k;
+  std::memcpy(&k, buf.data() + p * std::size_t(bytes), sizeof k);
+  return k;
 }
 
 // What each rank measured in one frame (sent to rank 0 as doubles).
@@ -164,6 +181,42 @@ std::vector<std::pair<int, int>> bands(int tile_rows, const std::vector<double>&
   return out;
 }
 
+// One timed frame of one rank: what the model of docs/distributed.md is validated against.
+nlohmann::json frame_json(const RankFigures& f) {
+  return {{"prepare_ms", f.prepare_ms}, {"render_ms", f.render_ms}, {"pack_ms", f.pack_ms},
+          {"composite_ms", f.composite_ms}, {"rank_frame_ms", f.frame_ms}};
+}
+
+void check_scatter_size(const std::vector<std::vector<char>>& parts) {
+  std::size_t total = 0;
+  for (const auto& p : parts) total += p.size();
+  if (total > std::size_t(INT32_MAX))
+    throw InputError("the scene's shares are " + std::to_string(total >> 20) +
+                     " MB, more than one MPI_Scatterv sends (2 GB): use --read-scene every-rank");
+}
+
+// Rank 0's bytes to every rank with MPI_Scatterv (each rank gets its part of `parts`, empty elsewhere;
+// check_scatter_size has passed on rank 0).
+std::vector<char> scatter_parts(MpiSession& mpi, const std::vector<std::vector<char>>& parts) {
+  std::vector<int> counts(mpi.rank == 0 ? mpi.size : 0), displs(counts.size());
+  std::vector<char> all;
+  if (mpi.rank == 0) {
+    std::size_t total = 0;
+    for (int r = 0; r < mpi.size; ++r) {
+      counts[r] = int(parts[r].size());
+      displs[r] = int(total);
+      total += parts[r].size();
+    }
+    all.reserve(total);
+    for (const auto& p : parts) all.insert(all.end(), p.begin(), p.end());
+  }
+  int mine = 0;
+  MPI_Scatter(counts.data(), 1, MPI_INT, &mine, 1, MPI_INT, 0, mpi.comm);
+  std::vector<char> out(static_cast<std::size_t>(mine));
+  MPI_Scatterv(all.data(), counts.data(), displs.data(), MPI_CHAR, out.data(), mine, MPI_CHAR, 0, mpi.comm);
+  return out;
+}
+
 nlohmann::json figures_json(const RankFigures& f, int rank, Distribute mode) {
   nlohmann::json j = {{"rank", rank},
                       {"records", f.records},
@@ -188,16 +241,16 @@ nlohmann::json figures_json(const RankFigures& f, int rank, Distribute mode) {
 
 int run(MpiSession& mpi, const DistributedRender& job) {
   const int rank = mpi.rank, n = mpi.size;
+  // Every rank reads the scene file, or (--read-scene rank-0) only rank 0, which sends the others their
+  // shares below.
   Scene scene;
   mpi.step([&] {
     if (rank == 0 && job.check_destinations) job.check_destinations();
-    scene = job.load_scene();
+    if (rank == 0 || !job.scatter_scene) scene = job.load_scene();
   });
   std::unique_ptr<Device> device;
   mpi.step([&] { device = open_device(job.device); });
 
-  const int W = scene.width, H = scene.height;
-  const std::size_t pixels = std::size_t(W) * H;
   const bool sort_last = job.mode == Distribute::sort_last;
   if (n > 65535 && sort_last) throw UsageError("sort-last takes at most 65535 ranks");
 
@@ -208,7 +261,42 @@ int run(MpiSession& mpi, const DistributedRender& job) {
   Scene share;
   std::unique_ptr<Scene> full;  // rank 0's whole scene for the error figures
   std::uint64_t faces = scene.triangle_count();
-  if (sort_last) {
+  if (sort_last && job.scatter_scene) {
+    // Rank 0 plans, cuts every rank's share and scatters them (MPI_Scatterv); the others never hold more.
+    std::vector<std::vector<char>> parts;
+    mpi.step([&] {
+      if (rank != 0) return;
+      owner = assign_faces(scene, job, n, &plan_ms);
+      for (int r = 0; r < n; ++r) parts.push_back(scene_to_bytes(share_of(scene, owner, r, global_face), global_face));
+      check_scatter_size(parts);
+    });
+    const std::vector<char> bytes = scatter_parts(mpi, parts);
+    parts = {};
+    mpi.step([&] {
+      share = scene_from_bytes(bytes, global_face);
+      if (rank == 0 && !job.no_error) full = std::make_unique<Scene>(std::move(scene));
+      scene = Scene{};
+      owner = {};
+    });
+  } else if (job.scatter_scene) {
+    // sort-first: every rank needs the whole scene; rank 0 broadcasts it.
+    std::vector<char> bytes;
+    std::uint64_t size = 0;
+    mpi.step([&] {
+      if (rank != 0) return;
+      bytes = scene_to_bytes(scene, {});
+      size = bytes.size();
+    });
+    MPI_Bcast(&size, 1, MPI_UINT64_T, 0, mpi.comm);
+    bytes.resize(size);
+    for (std::uint64_t first = 0; first < size; first += std::uint64_t(1) << 30)
+      MPI_Bcast(bytes.data() + first, int(std::min<std::uint64_t>(size - first, std::uint64_t(1) << 30)), MPI_CHAR, 0,
+                mpi.comm);
+    mpi.step([&] {
+      std::vector<std::uint32_t> none;
+      if (rank != 0) scene = scene_from_bytes(bytes, none);
+    });
+  } else if (sort_last) {
     mpi.step([&] {
       if (rank == 0) owner = assign_faces(scene, job, n, &plan_ms);
     });
@@ -226,13 +314,19 @@ int run(MpiSession& mpi, const DistributedRender& job) {
     });
   }
 
+  const Scene& drawn = sort_last ? share : scene;  // what this rank renders
+  const int W = drawn.width, H = drawn.height;
+  const std::size_t pixels = std::size_t(W) * H;
+  const bool float_output = job.options.float_output;
+
+  const int pixel_bytes = float_output ? kFloatPixelBytes : int(sizeof(KeyPixel));
   MPI_Datatype pixel_type;
-  MPI_Type_contiguous(int(sizeof(KeyPixel)), MPI_BYTE, &pixel_type);
+  MPI_Type_contiguous(pixel_bytes, MPI_BYTE, &pixel_type);
   MPI_Type_commit(&pixel_type);
   MPI_Op min_op;
   MPI_Op_create(&min_key, 1, &min_op);
   const std::size_t block = (pixels + n - 1) / n;
-  std::vector<KeyPixel> send, mine(block), all;
+  std::vector<char> send, mine(sort_last ? block * pixel_bytes : 0), all;  // pixels of pixel_bytes each
 
   RenderOptions options = job.options;
   if (sort_last && !options.plan) options.plan = PlanOptions{};  // the depth keys: a planned frame
@@ -274,7 +368,7 @@ int run(MpiSession& mpi, const DistributedRender& job) {
     std::vector<std::uint64_t> keys;
     mpi.step([&] {
       if (!renderer) return;
-      frame = &renderer->render(sort_last ? share : scene);
+      frame = &renderer->render(drawn);
       if (sort_last) keys = renderer->plan_keys(share);
     });
     if (frame) {
@@ -290,19 +384,23 @@ int run(MpiSession& mpi, const DistributedRender& job) {
     double t_comp = now_ms();
     if (sort_last) {
       // This rank's keys with the scene face in place of its own record index, its colours, its rank.
-      send.assign(block * n, KeyPixel{PLAN_NO_KEY, 0, std::uint32_t(rank)});
+      send.assign(block * n * pixel_bytes, 0);
       const std::vector<std::uint32_t>& face = renderer->geometry().face;
       const std::uint8_t* rgba = frame->image.rgba.data();
+      const float* rgb = float_output ? frame->image.rgb_float.data() : nullptr;
       std::size_t covered = 0;
-      for (std::size_t p = 0; p < pixels; ++p) {
-        std::uint64_t k = keys[p];
-        if (k != PLAN_NO_KEY) {
-          k = (k & 0xFFFFFFFF00000000ull) | global_face[face[std::uint32_t(k)]];
-          ++covered;
+      for (std::size_t p = 0; p < block * n; ++p) {
+        KeyPixel px{PLAN_NO_KEY, 0, std::uint32_t(rank)};
+        char* out = send.data() + p * pixel_bytes;
+        if (p < pixels) {
+          if (keys[p] != PLAN_NO_KEY) {
+            px.key = (keys[p] & 0xFFFFFFFF00000000ull) | global_face[face[std::uint32_t(keys[p])]];
+            ++covered;
+          }
+          std::memcpy(&px.rgba, rgba + 4 * p, 4);
+          if (rgb) std::memcpy(out + sizeof px, rgb + 3 * p, 3 * sizeof(float));
         }
-        std::uint32_t c;
-        std::memcpy(&c, rgba + 4 * p, 4);
-        send[p] = {k, c, std::uint32_t(rank)};
+        std::memcpy(out, &px, sizeof px);
       }
       fig.faces = double(global_face.size());
       fig.pixels = double(covered);
@@ -312,10 +410,10 @@ int run(MpiSession& mpi, const DistributedRender& job) {
       MPI_Barrier(mpi.comm);
       t_comp = now_ms();
       MPI_Reduce_scatter_block(send.data(), mine.data(), int(block), pixel_type, min_op, mpi.comm);
-      if (rank == 0) all.resize(block * n);
+      if (rank == 0) all.resize(block * n * pixel_bytes);
       MPI_Gather(mine.data(), int(block), pixel_type, all.data(), int(block), pixel_type, 0, mpi.comm);
       // At least what leaves the rank: the other ranks' blocks of its keys, and its block to rank 0.
-      fig.bytes_sent = double(sizeof(KeyPixel)) * block * ((n - 1) + (rank == 0 ? 0 : 1));
+      fig.bytes_sent = double(pixel_bytes) * block * ((n - 1) + (rank == 0 ? 0 : 1));
     } else {
       const std::size_t pitch = std::size_t(W) * 4;
       const int y0 = std::min(H, band.first * options.tile_size);
@@ -332,6 +430,14 @@ int run(MpiSession& mpi, const DistributedRender& job) {
       const std::uint8_t* src = frame ? frame->image.rgba.data() + mine_first : nullptr;
       MPI_Gatherv(src, mine_bytes, MPI_BYTE, image.rgba.data(), counts.data(), displs.data(), MPI_BYTE, 0, mpi.comm);
       fig.bytes_sent = rank == 0 ? 0 : mine_bytes;
+      if (float_output) {  // the band's unclamped RGB too: 3 floats a pixel where rgba has 4 bytes
+        for (int r = 0; r < n; ++r) counts[r] *= 3, displs[r] *= 3;
+        if (rank == 0) image.rgb_float.assign(pixels * 3, 0.0f);
+        const char* fsrc = frame ? reinterpret_cast<const char*>(frame->image.rgb_float.data()) + 3 * std::size_t(mine_first) : nullptr;
+        MPI_Gatherv(fsrc, 3 * mine_bytes, MPI_BYTE, image.rgb_float.data(), counts.data(), displs.data(), MPI_BYTE, 0,
+                    mpi.comm);
+        fig.bytes_sent += rank == 0 ? 0 : 3.0 * mine_bytes;
+      }
       // The next frame's bands: rows per ms of the shading kernel (the host stages are the whole frame's).
       const double my_speed = frame && frame->timings.kernel_ms > 0 ? band.second / frame->timings.kernel_ms : 0;
       std::vector<double> got(n);
@@ -346,8 +452,10 @@ int run(MpiSession& mpi, const DistributedRender& job) {
     MPI_Gather(&fig, kFigures, MPI_DOUBLE, gathered.data(), kFigures, MPI_DOUBLE, 0, mpi.comm);
     if (sort_last && rank == 0) {
       for (auto& g : gathered) g.won_pixels = 0;
-      for (std::size_t p = 0; p < pixels; ++p)
-        if (all[p].key != PLAN_NO_KEY) gathered[all[p].rank].won_pixels += 1;
+      for (std::size_t p = 0; p < pixels; ++p) {
+        const KeyPixel k = key_pixel(all, p, pixel_bytes);
+        if (k.key != PLAN_NO_KEY) gathered[k.rank].won_pixels += 1;
+      }
     }
     if (i >= job.warmup && rank == 0) {
       frames.push_back(gathered);
@@ -359,7 +467,12 @@ int run(MpiSession& mpi, const DistributedRender& job) {
 
   if (sort_last && rank == 0) {
     image.rgba.resize(pixels * 4);
-    for (std::size_t p = 0; p < pixels; ++p) std::memcpy(&image.rgba[4 * p], &all[p].rgba, 4);
+    if (float_output) image.rgb_float.resize(pixels * 3);
+    for (std::size_t p = 0; p < pixels; ++p) {
+      const KeyPixel k = key_pixel(all, p, pixel_bytes);
+      std::memcpy(&image.rgba[4 * p], &k.rgba, 4);
+      if (float_output) std::memcpy(&image.rgb_float[3 * p], all.data() + p * pixel_bytes + sizeof k, 3 * sizeof(float));
+    }
   }
   double peak = peak_rss_mb();
   std::vector<double> peaks(rank == 0 ? n : 0);
@@ -396,6 +509,8 @@ int run(MpiSession& mpi, const DistributedRender& job) {
       rankframe[r] = m.frame_ms;
       nlohmann::json j = figures_json(m, r, job.mode);
       j["peak_rss_mb"] = peaks[r];
+      j["frames"] = nlohmann::json::array();
+      for (const auto& f : frames) j["frames"].push_back(frame_json(f[r]));
       per_rank.push_back(j);
     }
     auto imbalance = [&](const std::vector<double>& v) {
@@ -404,7 +519,7 @@ int run(MpiSession& mpi, const DistributedRender& job) {
     };
     const double frame_median = median(frame_ms);
     nlohmann::json report = {
-        {"scene", sort_last ? share.name : scene.name},
+        {"scene", drawn.name},
         {"scene_file", job.scene_file},
         {"image", job.output},
         {"distribute", distribute_name(job.mode)},
@@ -417,6 +532,9 @@ int run(MpiSession& mpi, const DistributedRender& job) {
         {"tile_size", options.tile_size},
         {"faces", faces},
         {"frame_ms", frame_median},
+        {"frame_ms_samples", frame_ms},
+        {"read_scene", job.scatter_scene ? "rank-0" : "every-rank"},
+        {"float_output", float_output},
         {"frame_ms_note", "median of " + std::to_string(job.frames) + " frames after " + std::to_string(job.warmup) +
                               " warm-up frame(s), rank 0's clock from a barrier before the frame to one after the "
                               "composite; a loaded shared 2-core machine: compare ratios within one run"},

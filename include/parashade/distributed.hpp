@@ -42,7 +42,10 @@ struct DistributedRender {
   std::string device, output, report, scene_file;
   int frames = 1, warmup = 0;
   bool quiet = false, no_error = false;
-  std::function<Scene()> load_scene;                 // every rank reads the scene
+  // false: every rank reads the scene file; true (--read-scene rank-0): rank 0 reads it and scatters the
+  // sort-last shares (MPI_Scatterv) or broadcasts the whole scene to sort-first ranks
+  bool scatter_scene = false;
+  std::function<Scene()> load_scene;                 // the ranks that read the scene call this
   std::function<void()> check_destinations;          // rank 0, before the work
   // rank 0, unless no_error: the error figures of the composited image against the full scene
   std::function<nlohmann::json(const Scene&, const RenderedImage&, std::vector<std::string>& lines)> error_figures;
