@@ -282,9 +282,12 @@ TEST_P(AnyDevice, RendersAsOnPoCL) {
   ASSERT_TRUE(tested.run.exited() && tested.run.exit_code == 0) << tested.run;
   // Oclgrind's diagnostics: an invalid access, a data race, an API error, a kernel warning.
   EXPECT_EQ(tested.diagnostics, "") << "Oclgrind reported:\n" << tested.diagnostics;
-  if (is_oclgrind(device)) EXPECT_EQ(tested.run.err, "") << "stderr of a quiet render on Oclgrind:" << tested.run;
   const Render reference = render_on(reference_device(), path, dir_.path(), "reference");
   ASSERT_TRUE(reference.run.exited() && reference.run.exit_code == 0) << reference.run;
+  // A quiet render prints only the host's warnings (register wraps, vanishing triangles), the same on
+  // both devices; anything more on Oclgrind is Oclgrind's.
+  if (is_oclgrind(device))
+    EXPECT_EQ(tested.run.err, reference.run.err) << "stderr of a quiet render on Oclgrind:" << tested.run;
   const std::string tested_name = field(tested.report, "/device/name").get<std::string>();
   const std::string reference_name = field(reference.report, "/device/name").get<std::string>();
   ASSERT_NE(tested_name, reference_name) << "the same device twice: is the second implementation registered?";

@@ -73,6 +73,11 @@ def check(cond, what):
         print("FAIL (%s): %s" % (load(), what), flush=True)
 
 
+def without_header(report):
+    """The report without the header every report carries (docs/reports.md): when, how and where it ran."""
+    return {k: v for k, v in report.items() if k not in ("created_utc", "command_line", "host", "parashade")}
+
+
 def same_bytes(a, b):
     with open(a, "rb") as fa, open(b, "rb") as fb:
         return fa.read() == fb.read()
@@ -233,10 +238,10 @@ def main():
             # one-process report up to the timing fields (and the device's compute units: each rank gets its
             # share of the cores).
             timing = {"frame_ms", "frame_ms_min", "frame_ms_samples", "measured_speedup", "kernel_ms",
-                      "kernel_ms_min", "kernel_ms_samples", "kernel_speedup"}
+                      "kernel_ms_min", "kernel_ms_samples", "kernel_speedup", "timing"}
 
             def untimed(path):
-                r = json.load(open(path))
+                r = without_header(json.load(open(path)))
                 r["device"].pop("compute_units")
                 r["rows"] = [{k: v for k, v in row.items() if k not in timing} for row in r["rows"]]
                 return r
@@ -263,10 +268,10 @@ def main():
             # tune --mpi deals its candidates across the ranks; rank 0's merged report must equal the
             # one-process report up to the timing fields (and what depends on them: the best, the
             # confirmation; and the compute units, as for scaling).
-            timing = {"frame_ms", "frame_ms_samples", "compile_ms", "verify_ms", "timestamp"}
+            timing = {"frame_ms", "frame_ms_samples", "timing", "compile_ms", "verify_ms", "timestamp"}
 
             def untimed(path):
-                r = json.load(open(path))
+                r = without_header(json.load(open(path)))
                 r["device"].pop("compute_units")
                 r.pop("best")
                 r.pop("confirmation")
