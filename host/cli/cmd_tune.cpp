@@ -169,10 +169,7 @@ int run_tune(const TuneArgs& a) {
   std::unique_ptr<RankGroup> group;
   if (a.mpi) group = RankGroup::join();
   const int rank = group ? group->rank() : 0, ranks = group ? group->size() : 1;
-  const auto step = [&](const std::function<void()>& f) {
-    if (group) group->step(f);
-    else f();
-  };
+  const auto step = [&](const std::function<void()>& f) { step_in(group.get(), f); };
   Scene scene;
   std::unique_ptr<Device> device;
   std::unique_ptr<TuneCache> cache;

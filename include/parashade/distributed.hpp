@@ -72,6 +72,12 @@ class RankGroup {
   virtual std::vector<std::string> gather(const std::string& mine) = 0;
 };
 
+// group->step(f) in a sharded run, plain f() without one (a sweep run without --mpi has no group).
+inline void step_in(RankGroup* group, const std::function<void()>& f) {
+  if (group) group->step(f);
+  else f();
+}
+
 // What every rank throws after a failed step (rank 0 has printed why); main exits with `code`.
 struct StoppedRanks : Error {
   explicit StoppedRanks(int code) : Error(ExitCode(code), "") {}
