@@ -39,7 +39,7 @@ Command add_combinations_command(CLI::App& app) {
   auto quiet = std::make_shared<bool>(false);
   add_report_option(*cmd, *report, "the axes and every refused pattern with its reason");
   add_quiet_flag(*cmd, *quiet);  // nothing to silence: combinations prints results only
-  return {cmd, [report]() {
+  return {cmd, [report, quiet]() {  // both: CLI11 writes the options after this function returns
             if (!report->empty()) {
               check_report_destination(*report);
               write_report(*report, combinations_json(), "combinations");
