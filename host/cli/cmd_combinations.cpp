@@ -35,14 +35,18 @@ Command add_combinations_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "combinations", "List which methods, units, arithmetics, coverage rules, plans and device modes combine, and why "
                       "the others are refused");
-  auto report = std::make_shared<std::string>();
-  auto quiet = std::make_shared<bool>(false);
-  add_report_option(*cmd, *report, "the axes and every refused pattern with its reason");
-  add_quiet_flag(*cmd, *quiet);  // nothing to silence: combinations prints results only
-  return {cmd, [report, quiet]() {  // both: CLI11 writes the options after this function returns
-            if (!report->empty()) {
-              check_report_destination(*report);
-              write_report(*report, combinations_json(), "combinations");
+  // Kept alive by the command's callback: CLI11 writes the options when it parses, after this returns.
+  struct Args {
+    std::string report;
+    bool quiet = false;  // nothing to silence: combinations prints results only
+  };
+  auto a = std::make_shared<Args>();
+  add_report_option(*cmd, a->report, "the axes and every refused pattern with its reason");
+  add_quiet_flag(*cmd, a->quiet);
+  return {cmd, [a]() {
+            if (!a->report.empty()) {
+              check_report_destination(a->report);
+              write_report(a->report, combinations_json(), "combinations");
             }
             std::fputs(describe_combinations().c_str(), stdout);
             std::puts("\nOn the command line: method --method, unit --units, arith --arith, coverage --coverage, "
