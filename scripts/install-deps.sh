@@ -6,6 +6,7 @@
 # openmpi-bin, libopenmpi-dev: render --distribute and the mpi test label (docs/distributed.md).
 # python3-jsonschema: the schema tests check every report kind and scene against schemas/ (docs/reports.md).
 # python3-matplotlib: scripts/report.py's plots (bench-suite.sh skips them without it).
+# time: GNU time, the peak memory of scripts/peak_memory.py (the PeakMemory test, bench-suite.sh).
 # Runs as root or through sudo; safe to run again.
 set -eu
 SUDO=""
@@ -19,5 +20,5 @@ $SUDO apt-get install -y -q --no-install-recommends \
     nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev \
     libegl-dev libgl-dev libgl1-mesa-dri python3 python3-jsonschema python3-matplotlib \
     clang libclang-rt-dev \
-    openmpi-bin libopenmpi-dev verilator yosys \
+    openmpi-bin libopenmpi-dev verilator yosys time \
     ca-certificates

@@ -23,6 +23,14 @@ double event_ms(const cl::Event& e) {
   return double(end - start) * 1e-6;
 }
 
+// A streamed frame's band after the first: its setup, binning with the bins' upload, and counts.
+void add_band(const PreparedFrame& band, double upload_ms, FrameTimings& t, FrameStats& s) {
+  t.setup_ms += band.timings.setup_ms;
+  t.binning_ms += band.timings.binning_ms + upload_ms;
+  s.triangles_without_pixels += band.stats.triangles_without_pixels;
+  s.bin_entries += band.stats.bin_entries;
+}
+
 }  // namespace
 
 Renderer::Renderer(Device& device, RenderOptions options, std::vector<Device*> unit_devices)
@@ -107,9 +115,14 @@ std::uint32_t* Renderer::tile_list(std::size_t entries) {
 }
 
 const PreparedFrame& Renderer::prepare(const Scene& scene, double* upload_ms) {
+  pipeline_.begin_frame(scene, config_, SIZE_MAX);
+  return prepare_band(scene, 0, upload_ms);
+}
+
+const PreparedFrame& Renderer::prepare_band(const Scene& scene, int band, double* upload_ms) {
   cl::CommandQueue& q = device_.queue();
   if (config_.dda_coverage) q.finish();  // the previous frame's row table may still be in flight
-  const PreparedFrame& f = pipeline_.prepare_frame(scene, config_, *this);
+  const PreparedFrame& f = pipeline_.prepare_band(scene, config_, *this, band);
   const auto t0 = Clock::now();
   if (mapped_.leaves) q.enqueueUnmapMemObject(leaves_, mapped_.leaves);
   if (mapped_.fixed) q.enqueueUnmapMemObject(fixed_, mapped_.fixed);
@@ -136,7 +149,7 @@ const PreparedFrame& Renderer::prepare(const Scene& scene, double* upload_ms) {
 TileKernelArgs Renderer::tile_args(const cl::Buffer& tile_start, const cl::Buffer& tile_list, cl_float4 viewer,
                                    cl_float4 background, const Scene& scene, const PreparedFrame& f) const {
   return {&tris_,  &attrs_,     &tile_start,  &tile_list,    &lights_,  &materials_,   viewer,
-          background, cl_int(f.tiles_x), cl_int(f.tiles()), cl_int(scene.width), cl_int(scene.height),
+          background, cl_int(f.tiles_x), cl_int(f.end_tile), cl_int(scene.width), cl_int(scene.height),
           &out_rgba_, &out_float_, &fixed_, &tile_counters_, &leaves_, &dda_first_, &dda_rows_};
 }
 
@@ -170,10 +183,15 @@ const Frame& Renderer::render(const Scene& scene) {
     release_frame();  // the previous frame's image stays mapped until now
     const auto frame_start = Clock::now();
     double upload_ms = 0;
-    const PreparedFrame& f = prepare(scene, &upload_ms);
+    // A large frame streams: band after band, its records are set up, binned and shaded (the next band's
+    // map waits for the kernel that reads the records it overwrites).
+    const int bands = pipeline_.begin_frame(scene, config_, options_.band_record_bytes);
+    const PreparedFrame* band = &prepare_band(scene, 0, &upload_ms);
+    const PreparedFrame& f = *band;
     t = f.timings;
     t.binning_ms += upload_ms;  // the bins' upload belongs to binning
     frame.stats = f.stats;
+    frame.stats.bands = bands;
     cl::CommandQueue& q = device_.queue();
     const std::size_t pixels = std::size_t(scene.width) * scene.height;
 
@@ -229,8 +247,23 @@ const Frame& Renderer::render(const Scene& scene) {
     // kernel wrote it there already): one wait for both. The frame stays mapped until the next render.
     auto t0 = Clock::now();
     cl::Event done, mapped;
-    q.enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(std::size_t(work_items(frame.stats.tiles))),
-                           cl::NDRange(1), nullptr, &done);
+    std::vector<cl::Event> band_done;  // the bands before the last
+    double band_launch_ms = 0;
+    for (int b = 0;; ++b) {
+      // Tiles [first_tile, end_tile): the kernel walks from its global id (offset by first_tile) to num_tiles.
+      const int tiles = band->end_tile - band->first_tile;
+      q.enqueueNDRangeKernel(kernel, band->first_tile ? cl::NDRange(std::size_t(band->first_tile)) : cl::NullRange,
+                             cl::NDRange(std::size_t(work_items(std::max(1, tiles)))), cl::NDRange(1), nullptr,
+                             &done);
+      if (b + 1 == bands) break;
+      band_done.push_back(done);
+      done.wait();  // the next band's map would wait for it too; this keeps the wait out of its setup time
+      band_launch_ms += ms_since(t0);
+      band = &prepare_band(scene, b + 1, &upload_ms);
+      add_band(*band, upload_ms, t, frame.stats);
+      set_tile_kernel_args(kernel, tile_args(tile_start_, tile_tris_, viewer4, background, scene, *band));
+      t0 = Clock::now();
+    }
     void* rgba = q.enqueueMapBuffer(out_rgba_, CL_FALSE, CL_MAP_READ, 0, pixels * 4, nullptr, &mapped);
     const float* planar = nullptr;
     cl::Event float_mapped;
@@ -259,8 +292,9 @@ const Frame& Renderer::render(const Scene& scene) {
       }
       q.enqueueUnmapMemObject(tile_counters_, const_cast<cl_ulong*>(tile_counters));
     }
-    t.launch_ms = ms_since(t0);
+    t.launch_ms = band_launch_ms + ms_since(t0);
     t.kernel_ms = event_ms(done);
+    for (const cl::Event& e : band_done) t.kernel_ms += event_ms(e);
     if (f.plan) unit_pass_times(unit_pass, t);
     t0 = Clock::now();
     if (rgba != rgba_host_)

@@ -44,6 +44,7 @@ nlohmann::json to_json(const FrameStats& s) {
           {"triangles_without_pixels", s.triangles_without_pixels},
           {"bin_entries", s.bin_entries},
           {"tiles", s.tiles},
+          {"bands", s.bands},
           {"parity_dropped", s.parity_dropped}, {"sierpinski_whole", s.sierpinski_whole},
           {"highlight_test", {{"triangles", s.highlight.triangles},
                               {"without_highlight", s.highlight.without_highlight},

@@ -213,6 +213,17 @@ int run_distributed_checked(const RenderArgs& a, RenderOptions options, const st
   return run_distributed_render(job);
 }
 
+// The scene's meshes as the memory budget counts them (bench/README.md "Peak memory"): positions and
+// normals (2 x 12 bytes per vertex) and index triples (12 bytes per triangle).
+nlohmann::json mesh_json(const Scene& scene) {
+  std::uint64_t vertices = 0, triangles = 0;
+  for (const Object& o : scene.objects) {
+    vertices += o.mesh->positions.size();
+    triangles += o.mesh->triangles.size();
+  }
+  return {{"vertices", vertices}, {"triangles", triangles}, {"bytes", 24 * vertices + 12 * triangles}};
+}
+
 int run_render(const RenderArgs& a) {
   const Method method = parse_method(a.method);
   RenderOptions options;
@@ -374,6 +385,7 @@ int run_render(const RenderArgs& a) {
       {"work_items", renderer.work_items(frame.stats.tiles)},
       {"triangles", {{"in", frame.stats.geometry.triangles_in},
                      {"after_culling", frame.stats.geometry.triangles_out}}},
+      {"mesh", mesh_json(scene)},
       {"frame_ms", med.total_ms},
       {"frame_ms_note", "median of " + std::to_string(a.frames) + " frames after " + std::to_string(a.warmup) +
                             " warm-up frame(s); whole frame: geometry, setup, binning, kernel, read-back"},

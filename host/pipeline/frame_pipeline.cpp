@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdint>
 
 #include "parashade/combined.hpp"
 #include "parashade/geometry_stage.hpp"
@@ -37,36 +38,165 @@ const PreparedFrame& FramePipeline::prepare_frame(const Scene& scene, const Fram
 }
 
 const PreparedFrame& FramePipeline::prepare_frame(const Scene& scene, const FrameConfig& config, FrameStorage& storage) {
+  begin_frame(scene, config, SIZE_MAX);
+  return prepare_band(scene, config, storage, 0);
+}
+
+int FramePipeline::begin_frame(const Scene& scene, const FrameConfig& config, std::size_t record_bytes) {
   check_frame_config(config);
   check_resolution(scene.width, scene.height, "scene '" + scene.name + "'");
-  frame_ = PreparedFrame{};
-  FrameTimings& t = frame_.timings;
-  FrameStats& s = frame_.stats;
-
   auto t0 = Clock::now();
   build_screen_geometry(scene, {config.method, false, config.chooses_per_triangle()}, geometry_);
   // The extra-triangulation unit needs its midpoints on pixel corners: vertex parity normalization.
-  const bool split = config.splits_triangles();
-  if (split) s.parity_dropped = snap_sierpinski_vertices(geometry_, config.unit());
-  t.geometry_ms = ms_since(t0);
+  parity_dropped_ = config.splits_triangles() ? snap_sierpinski_vertices(geometry_, config.unit()) : 0;
+  geometry_ms_ = ms_since(t0);
+  band_rows_.clear();
+  banding_ms_ = 0;
+  banding_empty_ = 0;
+  const bool streams = !config.unit_path() && !config.plan && config.band_rows < 0 && config.method != Method::combined;
+  const std::size_t per_record = sizeof(TriangleGeometry) + attribute_floats(config.method) * sizeof(float);
+  if (!streams || geometry_.triangles.size() <= record_bytes / per_record) return 1;
+  t0 = Clock::now();
+  plan_bands(config, std::max<std::size_t>(1, record_bytes / per_record));
+  banding_ms_ = ms_since(t0);
+  return int(band_rows_.size()) - 1;
+}
+
+namespace {
+constexpr std::uint32_t kNoRows = 0xffffffffu;
+}  // namespace
+
+// Bands of consecutive tile rows, each overlapped by at most max_records triangles unless one row alone
+// is; then each band's triangles in primitive order. Two passes over the triangles, on all threads.
+void FramePipeline::plan_bands(const FrameConfig& config, std::size_t max_records) {
+  const ScreenGeometry& g = geometry_;
+  const std::size_t n = g.triangles.size();
+  const int tile = config.tile_size, rows = (g.height + tile - 1) / tile;
+  int tile_shift = 0;
+  while ((1 << tile_shift) < tile) ++tile_shift;  // tile sizes are powers of two
+  const std::size_t chunk = balanced_chunk(n, 8192, 65536), ranges = (n + chunk - 1) / chunk;
+  triangle_rows_.resize(n);
+  // Pass 1: each triangle's tile rows (its pixel-centre box as setup computes it, centre_box, here in
+  // 32 bits: sub-pixel coordinates stay within the guard band), and per range how many triangles
+  // start and end in each row.
+  std::vector<std::uint32_t> starts(ranges * std::size_t(rows), 0), ends(ranges * std::size_t(rows), 0);
+  std::vector<std::uint64_t> empty(ranges, 0);
+  parallel_for(ranges, [&](std::size_t r) {
+    std::uint32_t* start = starts.data() + r * std::size_t(rows);
+    std::uint32_t* end_row = ends.data() + r * std::size_t(rows);
+    constexpr int half = kSubpixel / 2;
+    for (std::size_t t = r * chunk, end = std::min(n, t + chunk); t < end; ++t) {
+      const glm::uvec3 tri = g.triangles[t];
+      const glm::ivec2 a = g.xy[tri.x], b = g.xy[tri.y], c = g.xy[tri.z];
+      // floor((v - half) / kSubpixel) by an arithmetic shift, rounded up for the first centre.
+      const int x0 = std::max(0, (std::min({a.x, b.x, c.x}) - half + kSubpixel - 1) >> kSubpixelBits);
+      const int y0 = std::max(0, (std::min({a.y, b.y, c.y}) - half + kSubpixel - 1) >> kSubpixelBits);
+      const int x1 = std::min(g.width - 1, (std::max({a.x, b.x, c.x}) - half) >> kSubpixelBits);
+      const int y1 = std::min(g.height - 1, (std::max({a.y, b.y, c.y}) - half) >> kSubpixelBits);
+      if (x0 > x1 || y0 > y1) {
+        triangle_rows_[t] = kNoRows;
+        ++empty[r];
+        continue;
+      }
+      const std::uint32_t first = std::uint32_t(y0 >> tile_shift), last = std::uint32_t(y1 >> tile_shift);
+      triangle_rows_[t] = first << 16 | last;
+      ++start[first];
+      ++end_row[last];
+    }
+  });
+  for (std::uint64_t e : empty) banding_empty_ += e;
+  // The bands, greedily, from the triangles overlapping each row (started by it, not ended before it).
+  std::vector<int> band_of_row(rows);
+  band_rows_.assign(1, 0);
+  std::size_t in_band = 0, open = 0;
+  for (int row = 0; row < rows; ++row) {
+    std::size_t started = 0, ended = 0;
+    for (std::size_t r = 0; r < ranges; ++r) {
+      started += starts[r * std::size_t(rows) + std::size_t(row)];
+      ended += ends[r * std::size_t(rows) + std::size_t(row)];
+    }
+    if (row > band_rows_.back() && in_band + started > max_records) {  // a new band takes the open ones too
+      band_rows_.push_back(row);
+      in_band = open;
+    }
+    in_band += started;
+    open += started;
+    open -= ended;
+    band_of_row[row] = int(band_rows_.size()) - 1;
+  }
+  band_rows_.push_back(rows);
+  const std::size_t bands = band_rows_.size() - 1;
+  // Where each range's triangles go in each band: a band holds the triangles whose first row's band is
+  // not after it and whose last row's band is not before it.
+  std::vector<std::uint32_t> cursor(ranges * bands);
+  band_start_list_.assign(bands + 1, 0);
+  std::uint32_t at = 0;
+  band_records_ = 0;
+  std::vector<std::uint32_t> open_in(ranges, 0);  // per range: triangles started in earlier bands still open
+  for (std::size_t b = 0; b < bands; ++b) {
+    band_start_list_[b] = at;
+    for (std::size_t r = 0; r < ranges; ++r) {
+      std::uint32_t started = 0, ended = 0;
+      for (int row = band_rows_[b]; row < band_rows_[b + 1]; ++row) {
+        started += starts[r * std::size_t(rows) + std::size_t(row)];
+        ended += ends[r * std::size_t(rows) + std::size_t(row)];
+      }
+      cursor[r * bands + b] = at;
+      at += open_in[r] + started;
+      open_in[r] += started - ended;
+    }
+    band_records_ = std::max<std::size_t>(band_records_, at - band_start_list_[b]);
+  }
+  band_start_list_[bands] = at;
+  // Pass 2: the lists, each range's triangles after the previous ranges' (primitive order).
+  band_list_.resize(at);
+  parallel_for(ranges, [&](std::size_t r) {
+    std::uint32_t* next = cursor.data() + r * bands;
+    for (std::size_t t = r * chunk, end = std::min(n, t + chunk); t < end; ++t) {
+      const std::uint32_t v = triangle_rows_[t];
+      if (v == kNoRows) continue;
+      for (int b = band_of_row[v >> 16], last = band_of_row[v & 0xffffu]; b <= last; ++b)
+        band_list_[next[b]++] = std::uint32_t(t);
+    }
+  });
+}
+
+const PreparedFrame& FramePipeline::prepare_band(const Scene& scene, const FrameConfig& config, FrameStorage& storage,
+                                                 int band) {
+  const bool streamed = !band_rows_.empty();
+  frame_ = PreparedFrame{};
+  FrameTimings& t = frame_.timings;
+  FrameStats& s = frame_.stats;
+  if (band == 0) {
+    t.geometry_ms = geometry_ms_;
+    t.binning_ms = banding_ms_;
+    s.parity_dropped = parity_dropped_;
+  }
   s.geometry = geometry_.stats;
   frame_.geometry = &geometry_;
 
-  t0 = Clock::now();
-  const std::size_t triangles = geometry_.triangles.size();
-  frame_.records = split ? triangles << (2 * config.unit().depth) : triangles;  // sub-triangles when split
-  frame_.arrays = storage.records(frame_.records, attribute_floats(config.method), config.arith.fixed, split);
-  setup(scene, config, frame_.arrays);
+  auto t0 = Clock::now();
+  const std::uint32_t* order = streamed ? band_list_.data() + band_start_list_[std::size_t(band)] : nullptr;
+  const std::size_t triangles =
+      streamed ? band_start_list_[std::size_t(band) + 1] - band_start_list_[std::size_t(band)] : geometry_.triangles.size();
+  frame_.records = config.splits_triangles() ? triangles << (2 * config.unit().depth) : triangles;  // sub-triangles when split
+  frame_.arrays = storage.records(streamed ? band_records_ : frame_.records, attribute_floats(config.method),
+                                  config.arith.fixed, config.splits_triangles());
+  setup(scene, config, frame_.arrays, order);
+  if (streamed && band == 0) s.triangles_without_pixels += banding_empty_;
   t.setup_ms = ms_since(t0);
 
   t0 = Clock::now();
   bin(scene, config, storage);
-  t.binning_ms = ms_since(t0);
+  t.binning_ms += ms_since(t0);
+  frame_.first_tile = streamed ? band_rows_[std::size_t(band)] * frame_.tiles_x : 0;
+  frame_.end_tile = streamed ? band_rows_[std::size_t(band) + 1] * frame_.tiles_x : frame_.tiles();
   parallel_rest();  // the device's kernel comes next, on the same cores
   return frame_;
 }
 
-void FramePipeline::setup(const Scene& scene, const FrameConfig& config, const FrameRecords& out) {
+void FramePipeline::setup(const Scene& scene, const FrameConfig& config, const FrameRecords& out,
+                          const std::uint32_t* order) {
   FrameTimings& t = frame_.timings;
   FrameStats& s = frame_.stats;
   const Method method = config.method;
@@ -95,7 +225,7 @@ void FramePipeline::setup(const Scene& scene, const FrameConfig& config, const F
   counted_ = !config.dda_coverage;  // DDA coverage changes the boxes after setup
   if (counted_) {
     // Binning's count pass runs on each range of records right after its setup, while they are in cache.
-    const std::size_t n = geometry_.triangles.size();
+    const std::size_t n = frame_.records;
     binner_.begin(out.triangles, n, scene.width, scene.height, config.tile_size);
     std::atomic<std::uint64_t> empty{0};
     parallel_for(binner_.chunks(), [&](std::size_t c) {
@@ -103,7 +233,7 @@ void FramePipeline::setup(const Scene& scene, const FrameConfig& config, const F
       std::uint64_t e = 0;
       for (std::size_t first = binner_.chunk_first(c), end = binner_.chunk_first(c + 1); first < end; first += kRange) {
         const std::size_t last = std::min(end, first + kRange);
-        e += setup_triangle_range(geometry_, method, out.triangles, out.attributes, out.fixed, gouraud, first, last);
+        e += setup_triangle_range(geometry_, method, out.triangles, out.attributes, out.fixed, gouraud, first, last, order);
         binner_.count_range(c, first, last);
       }
       empty += e;

@@ -108,16 +108,17 @@ SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeome
 
 std::uint64_t setup_triangle_range(const ScreenGeometry& g, Method method, TriangleGeometry* geometry,
                                    float* attributes, FixedPlanes* fixed, const TriangleShading* gouraud,
-                                   std::size_t first, std::size_t last) {
+                                   std::size_t first, std::size_t last, const std::uint32_t* order) {
   const std::size_t stride = attribute_floats(method);
   const bool has_position = !g.world.empty();
   std::uint64_t empty = 0;
-  for (std::size_t t = first; t < last; ++t) {
+  for (std::size_t rec = first; rec < last; ++rec) {
+    const std::size_t t = order ? order[rec] : rec;  // the screen triangle of this record
     const glm::uvec3 tri = g.triangles[t];
     const std::uint32_t vid[3] = {tri.x, tri.y, tri.z};
     const glm::i64vec2 p[3] = {glm::i64vec2(g.xy[tri.x]), glm::i64vec2(g.xy[tri.y]), glm::i64vec2(g.xy[tri.z])};
-    TriangleGeometry& r = geometry[t];
-    float* attr = attributes + std::size_t(t) * stride;
+    TriangleGeometry& r = geometry[rec];
+    float* attr = attributes + rec * stride;
 
     const std::int64_t half = kSubpixel / 2;
     const std::int64_t xmin = std::min({p[0].x, p[1].x, p[2].x}), xmax = std::max({p[0].x, p[1].x, p[2].x});
@@ -127,7 +128,7 @@ std::uint64_t setup_triangle_range(const ScreenGeometry& g, Method method, Trian
       r = TriangleGeometry{};
       r.x0 = 1;  // empty box
       r.x1 = 0;
-      if (fixed) fixed[t] = FixedPlanes{};
+      if (fixed) fixed[rec] = FixedPlanes{};
       ++empty;
       continue;
     }
@@ -184,9 +185,9 @@ std::uint64_t setup_triangle_range(const ScreenGeometry& g, Method method, Trian
         attr[9] = attr[10] = attr[11] = 0.0f;
         if (fixed) {
           for (int k = 0; k < 3; ++k) {
-            fixed[t].ref[k] = to_plane_register(ch[k].ref);
-            fixed[t].ddx[k] = to_plane_register(ch[k].ddx);
-            fixed[t].ddy[k] = to_plane_register(ch[k].ddy);
+            fixed[rec].ref[k] = to_plane_register(ch[k].ref);
+            fixed[rec].ddx[k] = to_plane_register(ch[k].ddx);
+            fixed[rec].ddy[k] = to_plane_register(ch[k].ddy);
           }
         }
         break;
@@ -207,9 +208,9 @@ std::uint64_t setup_triangle_range(const ScreenGeometry& g, Method method, Trian
         store(attr, 9, q[0], q[1], q[2]);
         if (fixed) {  // the normal's components for a unit's registers (fixed_point.h)
           for (int k = 0; k < 3; ++k) {
-            fixed[t].ref[k] = to_plane_register(NORMAL_REGISTER_LEVELS * n[k].ref);
-            fixed[t].ddx[k] = to_plane_register(NORMAL_REGISTER_LEVELS * n[k].ddx);
-            fixed[t].ddy[k] = to_plane_register(NORMAL_REGISTER_LEVELS * n[k].ddy);
+            fixed[rec].ref[k] = to_plane_register(NORMAL_REGISTER_LEVELS * n[k].ref);
+            fixed[rec].ddx[k] = to_plane_register(NORMAL_REGISTER_LEVELS * n[k].ddx);
+            fixed[rec].ddy[k] = to_plane_register(NORMAL_REGISTER_LEVELS * n[k].ddy);
           }
         }
         attr[PHONG_MATERIAL_SLOT] = float(g.material[t]);

@@ -51,6 +51,8 @@ struct PreparedFrame {
   const std::uint32_t* tile_start = nullptr;  // tiles + 1 entries
   const std::uint32_t* tile_list = nullptr;
   int tiles_x = 0, tiles_y = 0, tile_size = 16;
+  // The tiles [first_tile, end_tile) to shade: every tile, or a streamed band's (FramePipeline::begin_frame).
+  int first_tile = 0, end_tile = 0;
   const DdaRowTable* dda = nullptr;  // dda coverage: the spans' row table
   const Plan* plan = nullptr;        // with a plan
   FrameTimings timings;              // the host stages'
@@ -70,6 +72,18 @@ class FramePipeline {
   // The screen geometry of the last prepared frame.
   const ScreenGeometry& geometry() const { return geometry_; }
 
+  // A frame in bands of tile rows, so that only one band's records exist at a time (peak memory,
+  // bench/README.md). begin_frame runs the vertex stage and returns the number of bands: 1 when the
+  // frame's records take at most `record_bytes` or the configuration does not stream (a plan, a unit,
+  // the combined method, a split frame's band), else bands whose records take at most that much (or one
+  // tile row each). prepare_band(b) then sets up and bins band b's triangles, in primitive order,
+  // into `storage` (every band gets room for the largest band's records, so the buffers do not grow
+  // from band to band); its tiles are PreparedFrame::first_tile .. end_tile. Triangles whose box holds
+  // no pixel centre get no record when the frame streams. The geometry stage's time and stats come
+  // with band 0; the other stats are the band's own.
+  int begin_frame(const Scene& scene, const FrameConfig& config, std::size_t record_bytes);
+  const PreparedFrame& prepare_band(const Scene& scene, const FrameConfig& config, FrameStorage& storage, int band);
+
  private:
   class HostStorage : public FrameStorage {
    public:
@@ -83,7 +97,8 @@ class FramePipeline {
     std::vector<SierpinskiLeaf> leaves_;
     std::vector<std::uint32_t> list_;
   };
-  void setup(const Scene& scene, const FrameConfig& config, const FrameRecords& out);
+  void setup(const Scene& scene, const FrameConfig& config, const FrameRecords& out, const std::uint32_t* order);
+  void plan_bands(const FrameConfig& config, std::size_t max_records);
   void bin(const Scene& scene, const FrameConfig& config, FrameStorage& storage);
 
   HostStorage host_;
@@ -94,6 +109,14 @@ class FramePipeline {
   bool counted_ = false;  // setup ran binning's count pass (Binner::begin, count_range) on this frame's records
   std::vector<std::uint32_t> band_start_;  // tile_start with the tiles outside the band emptied
   DdaRowTable dda_;
+  // begin_frame: the vertex stage's time and dropped triangles, and the bands of a streamed frame.
+  double geometry_ms_ = 0, banding_ms_ = 0;
+  std::uint64_t parity_dropped_ = 0, banding_empty_ = 0;
+  std::vector<int> band_rows_;                // band b: tile rows [band_rows_[b], band_rows_[b + 1])
+  std::vector<std::uint32_t> band_start_list_;  // band b's triangles: band_list_[start[b] .. start[b + 1])
+  std::vector<std::uint32_t> band_list_;
+  std::vector<std::uint32_t> triangle_rows_;  // per screen triangle: first tile row << 16 | last; kNoRows: no pixel
+  std::size_t band_records_ = 0;              // the largest band's triangles
   Plan plan_;
   // sierpinski: setup's whole-triangle records before the split (kept to reuse their memory)
   std::vector<TriangleGeometry> whole_;

@@ -46,6 +46,7 @@ struct FrameStats {
   std::uint64_t triangles_without_pixels = 0;
   std::uint64_t bin_entries = 0;
   int tiles = 0;
+  int bands = 1;  // bands of tile rows the frame streamed in (FramePipeline::begin_frame); 1: whole
   ModeledClocks clocks;  // on the unit path only (RenderOptions::unit_path)
   // Per-span normalization: span setups (per span and tile), those that fell back to the exact normal,
   // and a sequential method's unit steps (the recurrence: pixels stepped, including those before a tile).

@@ -28,6 +28,10 @@ struct RenderOptions : FrameConfig {
   // The kernel's pixel layout where the frame allows a choice (docs/pipeline.md): 4x4 stamps (true) or
   // 1x16 row segments. The image is the same either way.
   bool stamps = true;
+  // A frame whose triangle records would take more bytes than this is prepared and shaded in bands of
+  // tile rows (FramePipeline::begin_frame), which bounds the frame's peak memory (bench/README.md).
+  std::size_t band_record_bytes = kBandRecordBytes;
+  static constexpr std::size_t kBandRecordBytes = std::size_t(16) << 20;
 };
 
 struct Frame {
@@ -67,6 +71,8 @@ class Renderer : private FrameStorage {
   // The host stages into the mapped buffers, then their unmaps and the bins' and row table's uploads
   // (these last take `upload_ms`).
   const PreparedFrame& prepare(const Scene& scene, double* upload_ms = nullptr);
+  // The same for band `band` of a frame begun with pipeline_.begin_frame.
+  const PreparedFrame& prepare_band(const Scene& scene, int band, double* upload_ms);
   void release_frame();  // unmaps the last frame's image
   // The arguments every pass of render_tiles shares (the frame's buffers), with these tile lists.
   TileKernelArgs tile_args(const cl::Buffer& tile_start, const cl::Buffer& tile_list, cl_float4 viewer,

@@ -32,11 +32,12 @@ struct SetupStats {
 SetupStats setup_triangles(const ScreenGeometry& g, Method method, TriangleGeometry* geometry, float* attributes,
                            FixedPlanes* fixed = nullptr, const TriangleShading* gouraud = nullptr);
 
-// setup_triangles() for the screen triangles [first, last) only, on the calling thread; returns how
-// many of them have no pixel centre.
+// setup_triangles() for the records [first, last) only, on the calling thread; returns how many of them
+// have no pixel centre. Record k is screen triangle k, or order[k] when `order` is given (a streamed
+// band's triangles, frame_pipeline.hpp).
 std::uint64_t setup_triangle_range(const ScreenGeometry& g, Method method, TriangleGeometry* geometry,
                                    float* attributes, FixedPlanes* fixed, const TriangleShading* gouraud,
-                                   std::size_t first, std::size_t last);
+                                   std::size_t first, std::size_t last, const std::uint32_t* order = nullptr);
 
 // Copies a Gouraud record's depth plane, float attribute planes and (when both are given) fixed planes,
 // re-anchored from `from`'s box corner to pixel (x0, y0); the planes themselves are unchanged. `to`'s

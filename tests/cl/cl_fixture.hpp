@@ -10,6 +10,7 @@
 #include "parashade/device.hpp"
 #include "parashade/renderer.hpp"
 #include "parashade/scene.hpp"
+#include "parashade/shapes.hpp"
 #include "test_support.hpp"
 
 namespace parashade::testing_support {
@@ -71,6 +72,18 @@ inline void add_object(Scene& s, std::shared_ptr<const Mesh> mesh, glm::mat4 mod
   o.mesh = std::move(mesh);
   o.model = model;
   s.objects.push_back(o);
+}
+
+// Three small-triangle spheres (48x24) overlapping in depth in a 301x203 frame: triangles of different
+// objects compete per pixel, so a walk that changes their order within a tile changes the image.
+inline Scene overlapping_spheres_scene() {
+  Scene s = pixel_scene(301, 203);
+  for (int k = 0; k < 3; ++k) {
+    auto mesh = std::make_shared<Mesh>(make_sphere(48, 24));
+    for (auto& p : mesh->positions) p = p * glm::vec3(90.0f, 90.0f, 4.0f) + glm::vec3(40.0f * float(k) - 40.0f, 10.0f * float(k), -2.0f * float(k));
+    add_object(s, mesh);
+  }
+  return s;
 }
 
 }  // namespace parashade::testing_support

@@ -67,12 +67,7 @@ TEST(StampLayout, SameImageAsRowSegmentsOnTheHardScenes) {
 
 // Many small triangles overlapping in depth, so stamps of different triangles compete per pixel.
 TEST(StampLayout, SameImageAsRowSegmentsOnOverlappingSmallTriangles) {
-  Scene s = pixel_scene(301, 203);
-  for (int k = 0; k < 3; ++k) {
-    auto mesh = std::make_shared<Mesh>(make_sphere(48, 24));
-    for (auto& p : mesh->positions) p = p * glm::vec3(90.0f, 90.0f, 4.0f) + glm::vec3(40.0f * float(k) - 40.0f, 10.0f * float(k), -2.0f * float(k));
-    add_object(s, mesh);
-  }
+  const Scene s = overlapping_spheres_scene();
   expect_same_image(s, "overlapping spheres", {16, 64});
 }
 

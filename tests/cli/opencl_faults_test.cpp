@@ -37,12 +37,14 @@ TEST_F(CliOpenClFaults, PlatformWithoutDevicesNamesThePackageToInstall) {
 
 // A mesh whose triangle records need more than the device can allocate in one buffer: PoCL limited to
 // 1 GB (POCL_MEMORY_LIMIT=1: at most 256 MiB per buffer) and a sphere of 8.4 M triangles (about 0.7 GB
-// of records). The message gives the size asked for and the device's limit; nothing is written.
+// of records). The message gives the size asked for and the device's limit; nothing is written. The
+// combined method takes the whole frame's records at once (Gouraud and Phong would stream them in bands
+// of at most 16 MiB, FramePipeline::begin_frame, and render).
 TEST_F(CliOpenClFaults, BufferBeyondTheDeviceLimitNamesTheSize) {
   const ScopedEnv limit("POCL_MEMORY_LIMIT", "1");
   const auto scene = input("huge.json", R"({"resolution": [64, 48], "camera": {"position": [0, 0, 4], "target": [0, 0, 0]},
     "objects": [{"shape": {"type": "sphere", "slices": 2048, "stacks": 2049}}]})");
-  const RunResult r = run_parashade(render_args(scene), {}, std::chrono::seconds(300));
+  const RunResult r = run_parashade(render_args(scene, {"--method", "combined:2"}), {}, std::chrono::seconds(300));
   EXPECT_TRUE(fails_with(r, kDeviceFailure, {"a buffer of", "bytes exceeds the device's largest allocation (268435456 bytes)"}));
   EXPECT_TRUE(nothing_written());
 }
