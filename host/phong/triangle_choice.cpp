@@ -568,9 +568,12 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
           // L or H moves along a segment: the old limit assumed them constant; the second-order bound replaces it.
           const glm::dvec3 w0(g.world[idx.x]), w1(g.world[idx.y]), w2(g.world[idx.z]);
           const glm::dvec3 dpdx = ((w1 - w0) * e2.y - (w2 - w0) * e1.y) * (1.0 / det);
+          // The kernel's normal plane is made of the vertex normals as they are (clip-made ones unnormalized).
+          const glm::dvec3 n0(g.normal[idx.x]), n1(g.normal[idx.y]), n2(g.normal[idx.z]);
+          const double kernel_change = glm::length(((n1 - n0) * e2.y - (n2 - n0) * e1.y) * (1.0 / det));
           const MovingLimit m = moving_psi_limit(
               s, g, t, terms, mask, shading_budget - c.negligible_specular * double(lights - std::size_t(__builtin_popcount(mask))),
-              &diffuse_levels[mat * lights], &specular_levels[mat * lights], change, dpdx);
+              &diffuse_levels[mat * lights], &specular_levels[mat * lights], kernel_change, dpdx);
           o.psi_limit = float(m.psi);
           n_terminator = n_terminator - std::uint64_t(crosses_any) + std::uint64_t(m.terminator);
           bounded = m.psi > 0.0;
