@@ -231,7 +231,7 @@ struct MovingLimit {
 };
 MovingLimit moving_psi_limit(const Scene& s, const ScreenGeometry& g, std::size_t t, const TriangleTerms& terms,
                              unsigned mask, double budget, const double* diffuse_levels, const double* specular_levels,
-                             double normal_rate, const glm::dvec3& position_rate) {
+                             double curvature, double slope, double normal_rate, const glm::dvec3& position_rate) {
   MovingLimit out;
   const glm::uvec3 idx = g.triangles[t];
   if (g.world.size() != g.normal.size() || !(budget > 0.0)) return out;
@@ -259,7 +259,6 @@ MovingLimit moving_psi_limit(const Scene& s, const ScreenGeometry& g, std::size_
     view_distance = dist - reach;
   }
   const std::size_t lights = s.lights.size();
-  const double n = s.materials[g.material[t]].shininess;
   struct Term {
     SegmentRates per_psi, fixed;  // rates per unit of psi, and the part that does not shrink with psi
     double diffuse_levels, specular_levels, distance;
@@ -294,7 +293,7 @@ MovingLimit moving_psi_limit(const Scene& s, const ScreenGeometry& g, std::size_
     k.distance = terms.light[i].distance;
     k.specular = (mask >> i) & 1u;
   }
-  // The bound at psi (every rate scaled, plus the fixed part of flat rows).
+  // The bound at psi (every rate scaled, plus the fixed part of flat rows): a quadratic in psi.
   const auto scaled = [](const SegmentRates& a, const SegmentRates& b, double psi) {
     SegmentRates r;
     r.normal = a.normal * psi + b.normal;
@@ -309,27 +308,29 @@ MovingLimit moving_psi_limit(const Scene& s, const ScreenGeometry& g, std::size_
       const Term& k = term[i];
       const SegmentRates r = scaled(k.per_psi, k.fixed, psi);
       const bool cross = k.state == 2 || crossing_every_lit;
-      if (k.state != 1 || cross) e += k.diffuse_levels * moving_term_bound(r, 1.0, false, cross);
-      if (k.specular) e += k.specular_levels * moving_term_bound(r, n, true, false);
+      if (k.state != 1 || cross) e += k.diffuse_levels * moving_term_bound_uncapped(r, 1.0, 1.0, false, cross);
+      if (k.specular) e += k.specular_levels * moving_term_bound_uncapped(r, curvature, slope, true, false);
     }
     return e;
   };
-  // The largest psi in [0, 1] with error_at(psi) <= budget (the bound grows with psi).
+  // The largest psi in [0, 1] with error_at(psi) <= budget: the quadratic's coefficients from three values
+  // (rounding is covered by the margin on the result), then its positive root.
   const auto solve = [&](bool crossing_every_lit) {
-    if (error_at(0.0, crossing_every_lit) > budget) return 0.0;
-    if (error_at(1.0, crossing_every_lit) <= budget) return 1.0;
-    double lo = 0.0, hi = 1.0;
-    for (int it = 0; it < 40; ++it) {
-      const double mid = 0.5 * (lo + hi);
-      (error_at(mid, crossing_every_lit) <= budget ? lo : hi) = mid;
-    }
-    return lo;
+    const double e0 = error_at(0.0, crossing_every_lit), e1 = error_at(0.5, crossing_every_lit),
+                 e2 = error_at(1.0, crossing_every_lit);
+    if (!(e0 <= budget) || !std::isfinite(e2)) return 0.0;
+    if (e2 <= budget) return 1.0;
+    const double quad = std::max(0.0, 2.0 * (e2 - 2.0 * e1 + e0)), lin = std::max(0.0, e2 - e0 - quad);
+    const double room = budget - e0;
+    const double psi = 2.0 * room / (lin + std::sqrt(lin * lin + 4.0 * quad * room));
+    return std::min(1.0, psi * (1.0 - 1e-6));
   };
   // Without the kink term the lit and dark lights' terminators must stay out of the segments' reach:
   // along one segment N.L changes by at most the rate sum normal + light (per segment), and the
   // extrapolated end is within one segment of a pixel of the triangle. Either psi is kept that small, or
   // the kink term is added: whichever allows the longer segments.
-  double kink_free = solve(false);
+  const double unlimited = solve(false);
+  double kink_free = unlimited;
   for (std::size_t i = 0; i < lights; ++i) {
     const Term& k = term[i];
     out.terminator = out.terminator || k.state == 2;
@@ -337,7 +338,8 @@ MovingLimit moving_psi_limit(const Scene& s, const ScreenGeometry& g, std::size_
     const double room = k.distance - 1e-4 - k.fixed.light, per = k.per_psi.normal + k.per_psi.light;
     kink_free = room > 0.0 ? std::min(kink_free, room / per) : 0.0;
   }
-  const double with_kink = solve(true);
+  // The kink terms only add: they can allow more only where the terminators' reach cut kink_free.
+  const double with_kink = kink_free < unlimited ? solve(true) : 0.0;
   out.terminator = out.terminator || with_kink > kink_free;
   const double psi = std::max(kink_free, with_kink);
   out.psi = psi * (1.0 - 1e-4);  // float rounding of the kernel's |D| and min|N'|
@@ -573,7 +575,8 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
           const double kernel_change = glm::length(((n1 - n0) * e2.y - (n2 - n0) * e1.y) * (1.0 / det));
           const MovingLimit m = moving_psi_limit(
               s, g, t, terms, mask, shading_budget - c.negligible_specular * double(lights - std::size_t(__builtin_popcount(mask))),
-              &diffuse_levels[mat * lights], &specular_levels[mat * lights], kernel_change, dpdx);
+              &diffuse_levels[mat * lights], &specular_levels[mat * lights], tables->curvature[mat], tables->slope[mat],
+              kernel_change, dpdx);
           o.psi_limit = float(m.psi);
           n_terminator = n_terminator - std::uint64_t(crosses_any) + std::uint64_t(m.terminator);
           bounded = m.psi > 0.0;

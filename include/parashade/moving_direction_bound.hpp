@@ -28,5 +28,9 @@ double curvature_factor(double n);
 // term's clamp may lie inside (adds the kink's first-order W / 4). A specular term with n < 2 has no
 // bounded g'' at its clamp: 1 (no bound; the caller shades such triangles by Phong per pixel).
 double moving_term_bound(const SegmentRates& r, double n, bool specular, bool crosses_zero);
+// The same without the cap at 1, with the specular exponent given by curvature_factor(n) and
+// term_slope_bound(n) (computed once per material by callers that evaluate it per triangle). Affine rates
+// make it a quadratic in their parameter: the per-triangle choice solves for the segment limit directly.
+double moving_term_bound_uncapped(const SegmentRates& r, double curvature, double slope, bool specular, bool crosses_zero);
 
 }  // namespace parashade
