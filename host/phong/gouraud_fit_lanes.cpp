@@ -52,6 +52,23 @@ inline vf half_sine_of_sum(vf sa, vf ca, vf sb, vf cb) {
   return (c > s) & (cb >= 0.0f) ? vmin(u, splat(float(kChordTableEnd))) : splat(float(kChordTableEnd));
 }
 
+// Gouraud's error of the specular term (in units of the term) where H moves over the triangle, from the
+// lanes' chords (docs/triangle-choice.md §2): (1/6)(w^2 P(n) + a S(n)) with the turning rates of N (the
+// normals' chord over min|N'|), of L and V (a chord 2r/d gives a longest edge over the nearest distance
+// <= 2r / (d - r) = 2 chord / (2 - chord)) and of H (over |L + V| >= half_min). Rounded up; 1 without a bound.
+inline vf moving_specular(vf c_n, vf min_normal, vf light_chord, vf view_chord, vf half_min, vf curvature, vf slope) {
+  const vf rate_n = c_n / vmax(min_normal, splat(1e-30f));
+  const vf rate_l = 2.0f * light_chord / vmax(2.0f - light_chord, splat(1e-30f));
+  const vf rate_v = 2.0f * view_chord / vmax(2.0f - view_chord, splat(1e-30f));
+  const vf moving = rate_l + rate_v, inv_half = 1.0f / vmax(half_min, splat(1e-30f));
+  const vf rate_h = moving * inv_half;
+  const vf accel_h = (2.2360680f * (rate_l * rate_l + rate_v * rate_v) + 2.0f * rate_h * moving) * inv_half;
+  const vf w = rate_n + rate_h, a = 2.0f * rate_n * rate_n + accel_h;
+  const vf bound = (w * w * curvature + a * slope) * (1.0f / 6.0f) * 1.0001f + 1e-6f;
+  const vi ok = (min_normal > 0.0f) & (half_min > 0.0f) & (light_chord < 2.0f) & (view_chord < 2.0f) & (curvature > 0.0f);
+  return ok ? vmin(bound, splat(1.0f)) : splat(1.0f);
+}
+
 }  // namespace
 
 // Cloned for AVX2 as frame_lanes (light_bounds_lanes.cpp).
@@ -68,12 +85,19 @@ __attribute__((target_clones("avx2", "default"))) void gouraud_fit_lanes(const F
       specular_chord[j] = &k.specular_chord[material[at + j]];
       diffuse_chord[j] = k.diffuse_chord;
     }
+    const auto per_material = [&](const double* table) {
+      vf r;
+      for (int j = 0; j < kWidth; ++j) r[j] = float(table[material[at + j]]) * 1.0001f;
+      return r;
+    };
     const auto per_light = [&](const double* table, std::size_t i) {
       vf r;
       for (int j = 0; j < kWidth; ++j) r[j] = float(table[material[at + j] * lights + i]);
       return r;
     };
     const vi usable = load(f.usable, at) > 0.0f;
+    const vf curvature = per_material(k.curvature), slope = per_material(k.slope);
+    const vf c_n = vsqrt0(2.0f - 2.0f * load(f.cos_spread, at)), min_normal = load(f.min_normal, at);
     // Half-angle sine and cosine of the normals' spread a (cos a = cos_spread).
     const vf cos_spread = vmax(vmin(load(f.cos_spread, at), splat(1.0f)), splat(-1.0f));
     const vf sa = vsqrt0(0.5f - 0.5f * cos_spread), ca = vsqrt0(0.5f + 0.5f * cos_spread);
@@ -93,7 +117,11 @@ __attribute__((target_clones("avx2", "default"))) void gouraud_fit_lanes(const F
       // H spreads by b = 2 asin(sin_h_radius): b / 2 has sine sin_h_radius.
       const vf sb = vmin(load(light[i].sin_h_radius, at), splat(1.0f));
       const vf chord = levels * lookup(specular_chord, half_sine_of_sum(sa, ca, sb, vsqrt0(1.0f - sb * sb)));
-      const vf term = expected + peak <= k.budget ? peak : vmin(peak, chord);
+      // The chord bound takes H constant over the triangle; where H moves (a point light, a local viewer:
+      // sin_h_radius > 0) the second-order bound of docs/triangle-choice.md §2 instead.
+      const vf moving = levels * moving_specular(c_n, min_normal, load(light[i].chord, at), load(f.view_chord, at),
+                                                 load(light[i].half_min, at), curvature, slope);
+      const vf term = expected + peak <= k.budget ? peak : vmin(peak, sb > 0.0f ? moving : chord);
       expected += on[i] ? term : splat(0.0f);
     }
     // Diffuse terms: the lit bound, or the chord bound where the terminator may cross.
@@ -101,7 +129,8 @@ __attribute__((target_clones("avx2", "default"))) void gouraud_fit_lanes(const F
       // L spreads by b = 4 asin(chord / 2): b / 2 = 2 asin(chord / 2).
       const vf c = vmin(load(light[i].chord, at), splat(2.0f));
       const vf sb = c * vsqrt0(1.0f - 0.25f * c * c), cb = 1.0f - 0.5f * c * c;
-      const vf crossing = lookup(diffuse_chord, half_sine_of_sum(sa, ca, sb, cb));
+      // Across the terminator the chord bound takes L constant; a point light's L moves: no bound but 1.
+      const vf crossing = c > 0.0f ? splat(1.0f) : lookup(diffuse_chord, half_sine_of_sum(sa, ca, sb, cb));
       expected += per_light(k.diffuse_levels, i) * (load(light[i].state, at) == 2.0f ? crossing : load(light[i].diffuse, at));
     }
     const vi fits = usable & (expected * (1.0f + 1e-5f) <= k.budget);

@@ -127,6 +127,7 @@ LightBounds light_bounds(const TriangleFrame& f, const Light& l, double enough) 
   const double inv_sum = 1.0 / sum_len, ratio = (b.light_chord + f.view_chord) * inv_sum;
   if (!(ratio < 1.0)) return b;
   b.sin_h_radius = ratio;
+  b.half_min = sum_len - (b.light_chord + f.view_chord);
   const glm::dvec3 hc = sum * inv_sum;
   // Cheap first: the normals' cone against H's cone.
   b.max_n_dot_h = max_cosine_between_cones(f, hc, ratio);

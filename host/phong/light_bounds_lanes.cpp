@@ -161,6 +161,8 @@ void light_lanes_of(const FrameLanes& f, const glm::vec3 dir, const glm::vec3 po
     const vf ratio = h_ok ? (chord + load(f.view_chord, at)) * hinv * 1.00001f : splat(1.0f);
     const vi h_bounded = usable & (ratio < 1.0f);
     store(out.sin_h_radius, at, h_bounded ? ratio : splat(1.0f));
+    // |L + V| >= |c_L + c_V| - chord_L - chord_V, rounded down.
+    store(out.half_min, at, h_bounded ? vmax(splat(0.0f), hl * (1.0f - ratio) * 0.9999f - 1e-6f) : splat(0.0f));
     store(out.max_n_dot_h, at, h_bounded ? cone_gap(ch, sh, hx * hinv, hy * hinv, hz * hinv, ncx, ncy, ncz, vmin(ratio, splat(1.0f)))
                                      : splat(1.0f));
     // The terminator: N'.D' = sum b_i b_j n_i.d_j is positive (negative) where every pair is; float

@@ -13,6 +13,7 @@
 #include "parashade/highlight.hpp"
 #include "parashade/light_bounds.hpp"
 #include "parashade/light_bounds_lanes.hpp"
+#include "parashade/moving_direction_bound.hpp"
 #include "parashade/parallel.hpp"
 #include "parashade/kernels/triangle_record.h"
 
@@ -145,7 +146,7 @@ DiffuseBound diffuse_bound(const TriangleFrame& f, double normal_chord, double m
 // What the bound rule needs of one triangle and each light, from either the scalar double reference
 // (light_bounds.cpp and diffuse_bound above) or the float lanes (light_bounds_lanes.cpp).
 struct LightTerms {
-  double max_n_dot_h = 1.0, sin_h_radius = 1.0, chord = 2.0;
+  double max_n_dot_h = 1.0, sin_h_radius = 1.0, chord = 2.0, half_min = 0.0;
   int state = 2;  // 0 lit, 1 dark, 2 the terminator may cross
   double diffuse = 1.0, distance = 0.0;
   double h_spread() const { return sin_h_radius < 1.0 ? 2.0 * std::asin(sin_h_radius) : M_PI; }
@@ -154,7 +155,7 @@ struct LightTerms {
 struct TriangleTerms {
   bool usable = false;
   glm::dvec3 n[3];
-  double cos_spread = 1.0, min_normal = 0.0;
+  double cos_spread = 1.0, min_normal = 0.0, view_chord = 0.0;
   LightTerms light[24];
 };
 
@@ -162,6 +163,7 @@ void reference_terms(const Scene& s, const TriangleFrame& f, TriangleTerms& out)
   out.usable = f.usable;
   for (int k = 0; k < 3; ++k) out.n[k] = f.n[k];
   out.cos_spread = f.cos_normal_spread;
+  out.view_chord = f.view_chord;
   out.min_normal = f.usable ? distance_to_origin(f.n[0], f.n[1], f.n[2]) : 0.0;
   const double normal_chord = std::sqrt(std::max(0.0, 2.0 - 2.0 * f.cos_normal_spread));
   for (std::size_t i = 0; i < s.lights.size(); ++i) {
@@ -171,6 +173,7 @@ void reference_terms(const Scene& s, const TriangleFrame& f, TriangleTerms& out)
     l.max_n_dot_h = b.max_n_dot_h;
     l.sin_h_radius = b.sin_h_radius;
     l.chord = b.light_chord;
+    l.half_min = b.half_min;
     l.state = !f.usable || d.state == DiffuseBound::crosses ? 2 : d.state == DiffuseBound::dark ? 1 : 0;
     l.diffuse = d.levels_unit;
     l.distance = d.distance;
@@ -182,16 +185,165 @@ void lane_terms(std::size_t lights, const FrameLanes& f, const LightLanes* light
   for (int k = 0; k < 3; ++k) out.n[k] = glm::dvec3(f.n[k][0][j], f.n[k][1][j], f.n[k][2][j]);
   out.cos_spread = f.cos_spread[j];
   out.min_normal = f.min_normal[j];
+  out.view_chord = f.view_chord[j];
   for (std::size_t i = 0; i < lights; ++i) {
     const LightLanes& b = light[i];
     LightTerms& l = out.light[i];
     l.max_n_dot_h = b.max_n_dot_h[j];
     l.sin_h_radius = b.sin_h_radius[j];
     l.chord = b.chord[j];
+    l.half_min = b.half_min[j];
     l.state = int(b.state[j]);
     l.diffuse = b.diffuse[j];
     l.distance = b.terminator_distance[j];
   }
+}
+
+// Gouraud's error of one specular term where H moves over the triangle (docs/triangle-choice.md §2): at a
+// point b, Gouraud - Phong = sum_i b_i (g(x_i) - g(b) - g'(b).(x_i - b)), each at most half the largest g''
+// along the line from b to vertex i, whose rates are moving_term_bound's with the change |x_i - b|;
+// sum_i b_i |x_i - b|^2 <= (longest edge)^2 / 3, so the error is at most (1/6)(w^2 P(n) + a S(n)) with the
+// rates of a change as long as the longest edge: the normals' chord over min|N'|, and 2r / (d - r) for L
+// and V (r the triangle's radius, d the distance from its centroid). 1 where no bound applies.
+double gouraud_moving_specular(const TriangleTerms& terms, const LightTerms& l, double curvature, double slope) {
+  if (!(curvature > 0.0) || !(terms.min_normal > 0.0) || !(l.half_min > 0.0) || !(l.chord < 2.0) || !(terms.view_chord < 2.0))
+    return 1.0;
+  const double c_n = std::sqrt(std::max(0.0, 2.0 - 2.0 * terms.cos_spread));
+  const double rate_n = c_n / terms.min_normal;
+  const double rate_l = 2.0 * l.chord / (2.0 - l.chord), rate_v = 2.0 * terms.view_chord / (2.0 - terms.view_chord);
+  const double rate_h = (rate_l + rate_v) / l.half_min;
+  const double accel_h = (std::sqrt(5.0) * (rate_l * rate_l + rate_v * rate_v) + 2.0 * rate_h * (rate_l + rate_v)) / l.half_min;
+  const double w = rate_n + rate_h, a = 2.0 * rate_n * rate_n + accel_h;
+  return std::min(1.0, (w * w * curvature + a * slope) / 6.0);
+}
+
+// combined:auto with a point light or a local viewer (L or H moves along a segment, docs/combined.md §2b):
+// the largest psi for which moving_term_bound, summed over the lights' terms, fits `budget` levels for any
+// K the kernel takes with it. The kernel's K keeps |dN'/dx| 2^K <= psi min|N'| (so the normal turns at most
+// psi per segment) and 2^K <= 64, and min|N'| <= |N'(xl)| <= 1, so a segment moves the shaded point by at
+// most |dp/dx| psi / |dN'/dx|: every rate is psi times a rate per unit of psi, and the bound is
+// psi^2 quad + psi lin (lin: the kink of a diffuse term whose terminator the segments may reach).
+// The points reach up to 64 pixels past the triangle (the extrapolated last segment): distances to the
+// light and the eye are taken from there. 0 when no psi fits (no bound: Phong per pixel).
+struct MovingLimit {
+  double psi = 0.0;
+  bool terminator = false;  // a light's terminator is within the segments' reach
+};
+MovingLimit moving_psi_limit(const Scene& s, const ScreenGeometry& g, std::size_t t, const TriangleTerms& terms,
+                             unsigned mask, double budget, const double* diffuse_levels, const double* specular_levels,
+                             double curvature, double slope, double normal_rate, const glm::dvec3& position_rate) {
+  MovingLimit out;
+  const glm::uvec3 idx = g.triangles[t];
+  if (g.world.size() != g.normal.size() || !(budget > 0.0)) return out;
+  const glm::dvec3 w[3] = {glm::dvec3(g.world[idx.x]), glm::dvec3(g.world[idx.y]), glm::dvec3(g.world[idx.z])};
+  const glm::dvec3 centroid = (w[0] + w[1] + w[2]) / 3.0;
+  double radius = 0.0;
+  for (const glm::dvec3& p : w) radius = std::max(radius, glm::length(p - centroid));
+  const double step = glm::length(position_rate);  // world distance per pixel along a row
+  const double reach = (radius + double(1 << kCombinedMaxK) * step) * (1.0 + 1e-6) + 1e-9;
+  // World distance a segment spans per unit of psi (the normal plane constant along rows: any K, so 64 px).
+  const bool flat_rows = !(normal_rate > 1e-9);
+  const double per_psi = flat_rows ? 0.0 : step / normal_rate;
+  const double fixed_move = flat_rows ? double(1 << kCombinedMaxK) * step : 0.0;
+  const bool distant_viewer = !(s.local_viewer && s.camera.projection == Projection::perspective);
+  glm::dvec3 view_centre;
+  double view_chord = 0.0, view_distance = INFINITY;
+  if (distant_viewer) {
+    view_centre = glm::normalize(glm::dvec3(s.camera.position - s.camera.target));
+  } else {
+    const glm::dvec3 d = glm::dvec3(s.camera.position) - centroid;
+    const double dist = glm::length(d);
+    if (!(dist > 2.0 * reach)) return out;
+    view_centre = d / dist;
+    view_chord = 2.0 * reach / dist;
+    view_distance = dist - reach;
+  }
+  const std::size_t lights = s.lights.size();
+  struct Term {
+    SegmentRates per_psi, fixed;  // rates per unit of psi, and the part that does not shrink with psi
+    double diffuse_levels, specular_levels, distance;
+    int state;
+    bool specular;
+  };
+  Term term[24];
+  for (std::size_t i = 0; i < lights; ++i) {
+    const Light& l = s.lights[i];
+    glm::dvec3 light_centre;
+    double light_chord = 0.0, light_distance = INFINITY;
+    if (l.type == LightType::directional) {
+      light_centre = -glm::normalize(glm::dvec3(l.direction));
+    } else {
+      const glm::dvec3 d = glm::dvec3(l.position) - centroid;
+      const double dist = glm::length(d);
+      if (!(dist > 2.0 * reach)) return out;
+      light_centre = d / dist;
+      light_chord = 2.0 * reach / dist;
+      light_distance = dist - reach;
+    }
+    Term& k = term[i];
+    k.per_psi.normal = 1.0;
+    k.per_psi.light = per_psi / light_distance;
+    k.per_psi.view = per_psi / view_distance;
+    k.fixed.light = fixed_move / light_distance;
+    k.fixed.view = fixed_move / view_distance;
+    k.per_psi.half_min = k.fixed.half_min = glm::length(light_centre + view_centre) - light_chord - view_chord;
+    k.diffuse_levels = diffuse_levels[i];
+    k.specular_levels = specular_levels[i];
+    k.state = terms.light[i].state;
+    k.distance = terms.light[i].distance;
+    k.specular = (mask >> i) & 1u;
+  }
+  // The bound at psi (every rate scaled, plus the fixed part of flat rows): a quadratic in psi.
+  const auto scaled = [](const SegmentRates& a, const SegmentRates& b, double psi) {
+    SegmentRates r;
+    r.normal = a.normal * psi + b.normal;
+    r.light = a.light * psi + b.light;
+    r.view = a.view * psi + b.view;
+    r.half_min = a.half_min;
+    return r;
+  };
+  const auto error_at = [&](double psi, bool crossing_every_lit) {
+    double e = 0.0;
+    for (std::size_t i = 0; i < lights; ++i) {
+      const Term& k = term[i];
+      const SegmentRates r = scaled(k.per_psi, k.fixed, psi);
+      const bool cross = k.state == 2 || crossing_every_lit;
+      if (k.state != 1 || cross) e += k.diffuse_levels * moving_term_bound_uncapped(r, 1.0, 1.0, false, cross);
+      if (k.specular) e += k.specular_levels * moving_term_bound_uncapped(r, curvature, slope, true, false);
+    }
+    return e;
+  };
+  // The largest psi in [0, 1] with error_at(psi) <= budget: the quadratic's coefficients from three values
+  // (rounding is covered by the margin on the result), then its positive root.
+  const auto solve = [&](bool crossing_every_lit) {
+    const double e0 = error_at(0.0, crossing_every_lit), e1 = error_at(0.5, crossing_every_lit),
+                 e2 = error_at(1.0, crossing_every_lit);
+    if (!(e0 <= budget) || !std::isfinite(e2)) return 0.0;
+    if (e2 <= budget) return 1.0;
+    const double quad = std::max(0.0, 2.0 * (e2 - 2.0 * e1 + e0)), lin = std::max(0.0, e2 - e0 - quad);
+    const double room = budget - e0;
+    const double psi = 2.0 * room / (lin + std::sqrt(lin * lin + 4.0 * quad * room));
+    return std::min(1.0, psi * (1.0 - 1e-6));
+  };
+  // Without the kink term the lit and dark lights' terminators must stay out of the segments' reach:
+  // along one segment N.L changes by at most the rate sum normal + light (per segment), and the
+  // extrapolated end is within one segment of a pixel of the triangle. Either psi is kept that small, or
+  // the kink term is added: whichever allows the longer segments.
+  const double unlimited = solve(false);
+  double kink_free = unlimited;
+  for (std::size_t i = 0; i < lights; ++i) {
+    const Term& k = term[i];
+    out.terminator = out.terminator || k.state == 2;
+    if (k.state == 2) continue;
+    const double room = k.distance - 1e-4 - k.fixed.light, per = k.per_psi.normal + k.per_psi.light;
+    kink_free = room > 0.0 ? std::min(kink_free, room / per) : 0.0;
+  }
+  // The kink terms only add: they can allow more only where the terminators' reach cut kink_free.
+  const double with_kink = kink_free < unlimited ? solve(true) : 0.0;
+  out.terminator = out.terminator || with_kink > kink_free;
+  const double psi = std::max(kink_free, with_kink);
+  out.psi = psi * (1.0 - 1e-4);  // float rounding of the kernel's |D| and min|N'|
+  return out;
 }
 
 // Everything the choice needs of the materials and lights, not of the geometry: built once and reused
@@ -206,6 +358,8 @@ struct ChoiceTables {
   std::vector<IncreasingTable> power, specular_chord;
   // The same for the lanes (gouraud_fit_lanes.hpp): the chord bound by u = sin(phi / 2).
   std::vector<LaneTable> power_lanes, specular_chord_lanes;
+  // Per material: curvature_factor and term_slope_bound of its n (0, 0 for n < 2: no moving-H bound).
+  std::vector<double> curvature, slope;
 };
 
 std::shared_ptr<const ChoiceTables> choice_tables(const Scene& s, const CombinedConfig& c, double shading_budget) {
@@ -243,6 +397,11 @@ std::shared_ptr<const ChoiceTables> choice_tables(const Scene& s, const Combined
       t->diffuse_levels.push_back(d);
       t->specular_levels.push_back(sp);
     }
+  for (const Material& m : s.materials) {
+    const bool smooth = m.shininess >= 2.0f;
+    t->curvature.push_back(smooth ? curvature_factor(m.shininess) : 0.0);
+    t->slope.push_back(smooth ? term_slope_bound(m.shininess) : 0.0);
+  }
   t->power.resize(s.materials.size());
   t->specular_chord.resize(s.materials.size());
   if (bound)
@@ -283,6 +442,9 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
   std::atomic<std::uint64_t> gouraud{0}, segments{0}, without{0}, terminator{0}, skipped{0};
   std::atomic<std::uint64_t> largest_bits{0};  // largest expected error among Gouraud triangles (double bits)
   const bool lanes = bound && arithmetic == ChoiceArithmetic::float_lanes;
+  // combined:auto's segments under a point light or a local viewer: L or H moves along them.
+  bool moving = bound && c.automatic && !(s.camera.projection != Projection::perspective || !s.local_viewer) && !s.lights.empty();
+  for (const Light& l : s.lights) moving = moving || (bound && c.automatic && l.type != LightType::directional);
   static const LaneTable diffuse_chord_lanes =
       make_lane_table(kChordTableEnd, [](double u) { return gouraud_term_bound(2.0 * std::asin(u), 1.0, true); });
   GouraudFitConstants fit_constants;
@@ -293,6 +455,8 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
   fit_constants.power = tables->power_lanes.data();
   fit_constants.specular_chord = tables->specular_chord_lanes.data();
   fit_constants.diffuse_chord = &diffuse_chord_lanes;
+  fit_constants.curvature = tables->curvature.data();
+  fit_constants.slope = tables->slope.data();
   fit_constants.negligible_specular = float(c.negligible_specular);
   fit_constants.budget = float(shading_budget);
   parallel_for_ranges(count, 1024, [&](std::size_t first, std::size_t last) {
@@ -359,16 +523,20 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
           if (!(mask & (1u << i))) continue;
           // Both images lie in [0, peak]: the chord bound only when the peak alone does not fit.
           const double peak = specular_levels[mat * lights + i] * power[mat].at(terms.light[i].max_n_dot_h);
+          // The chord bound takes H constant; where it moves (sin_h_radius > 0) the second-order bound.
+          const double levels = specular_levels[mat * lights + i];
           expected += expected + peak <= shading_budget
                           ? peak
-                          : std::min(peak, specular_levels[mat * lights + i] *
-                                               chord_bound(specular_chord[mat], normal_spread() + terms.light[i].h_spread()));
+                          : std::min(peak, terms.light[i].sin_h_radius > 0.0
+                                               ? levels * gouraud_moving_specular(terms, terms.light[i], tables->curvature[mat],
+                                                                                  tables->slope[mat])
+                                               : levels * chord_bound(specular_chord[mat], normal_spread() + terms.light[i].h_spread()));
           fits = expected <= shading_budget;
         }
         for (std::size_t i = 0; i < lights && fits; ++i) {
           const LightTerms& l = terms.light[i];
           expected += diffuse_levels[mat * lights + i] *
-                      (l.state == 2 ? chord_bound(diffuse_chord, normal_spread() + l.l_spread()) : l.diffuse);
+                      (l.state != 2 ? l.diffuse : l.chord > 0.0 ? 1.0 : chord_bound(diffuse_chord, normal_spread() + l.l_spread()));
           fits = expected <= shading_budget;
         }
       }
@@ -396,10 +564,28 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
         const glm::dvec2 e1 = p[1] - p[0], e2 = p[2] - p[0];
         const double det = e1.x * e2.y - e2.x * e1.y;
         const glm::dvec3 ddx = ((terms.n[1] - terms.n[0]) * e2.y - (terms.n[2] - terms.n[0]) * e1.y) * (1.0 / det);
-        const double allowed = double(o.psi_limit) * terms.min_normal, change = glm::length(ddx);
+        const double change = glm::length(ddx);
+        bool bounded = true;
+        if (moving) {
+          // L or H moves along a segment: the old limit assumed them constant; the second-order bound replaces it.
+          const glm::dvec3 w0(g.world[idx.x]), w1(g.world[idx.y]), w2(g.world[idx.z]);
+          const glm::dvec3 dpdx = ((w1 - w0) * e2.y - (w2 - w0) * e1.y) * (1.0 / det);
+          // The kernel's normal plane is made of the vertex normals as they are (clip-made ones unnormalized).
+          const glm::dvec3 n0(g.normal[idx.x]), n1(g.normal[idx.y]), n2(g.normal[idx.z]);
+          const double kernel_change = glm::length(((n1 - n0) * e2.y - (n2 - n0) * e1.y) * (1.0 / det));
+          const MovingLimit m = moving_psi_limit(
+              s, g, t, terms, mask, shading_budget - c.negligible_specular * double(lights - std::size_t(__builtin_popcount(mask))),
+              &diffuse_levels[mat * lights], &specular_levels[mat * lights], tables->curvature[mat], tables->slope[mat],
+              kernel_change, dpdx);
+          o.psi_limit = float(m.psi);
+          n_terminator = n_terminator - std::uint64_t(crosses_any) + std::uint64_t(m.terminator);
+          bounded = m.psi > 0.0;
+        }
+        const double allowed = double(o.psi_limit) * terms.min_normal;
         int k = 0;
         while (k < kCombinedMaxK && change * double(2 << k) <= allowed) ++k;
-        o.method = k >= c.walk_min_k && width + 1.0 >= double(2 << k) ? TriangleMethod::segments : TriangleMethod::phong;
+        o.method = bounded && k >= c.walk_min_k && width + 1.0 >= double(2 << k) ? TriangleMethod::segments
+                                                                                 : TriangleMethod::phong;
       } else {
         o.method = TriangleMethod::phong;
       }

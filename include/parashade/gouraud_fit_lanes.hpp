@@ -30,6 +30,10 @@ struct GouraudFitConstants {
   const LaneTable* power = nullptr;           // per material: x^n on [0, 1]
   const LaneTable* specular_chord = nullptr;  // per material: the specular chord bound by u on [0, kChordTableEnd]
   const LaneTable* diffuse_chord = nullptr;   // the diffuse chord bound (n = 1, crossing zero) by u
+  // Per material: curvature_factor(n) and term_slope_bound(n) (moving_direction_bound.hpp), for the
+  // specular term where H moves over the triangle (0 curvature: n < 2, no bound).
+  const double* curvature = nullptr;
+  const double* slope = nullptr;
   float negligible_specular = 0.0f;           // what a dropped specular term may still add, in levels
   float budget = 0.0f;                        // the shading budget in levels
 };

@@ -43,6 +43,7 @@ struct LightBounds {
   double light_chord = 2.0;
   double light_distance = 0.0;  // point light: from the centroid (0 for a directional light)
   double sin_h_radius = 1.0;
+  double half_min = 0.0;        // |L + V| >= this over the triangle (0: no bound)
   double l_spread() const;  // largest angle between two L over the triangle
   double h_spread() const;  // largest angle between two H over the triangle
 };

@@ -35,6 +35,7 @@ struct LightLanes {
   float chord[kLanes];          // |L(p) - L at the centroid| <= chord
   float max_n_dot_h[kLanes];
   float sin_h_radius[kLanes];   // H within asin(this) of one direction (1: no bound)
+  float half_min[kLanes];       // |L + V| >= this over the triangle (0: no bound)
   float state[kLanes];          // 0 lit everywhere, 1 dark everywhere, 2 the terminator may cross
   float diffuse[kLanes];        // lit: bound on |Gouraud - Phong| of the diffuse term (0 dark, 1 crosses)
   float terminator_distance[kLanes];  // lit or dark: N.L stays at least this far from 0

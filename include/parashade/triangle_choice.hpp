@@ -50,8 +50,9 @@ struct TriangleChoiceStats {
 // Expected worst-case |Gouraud - Phong| of one term max(0, cos)^n over a triangle whose shaded normals
 // (and the term's direction, L or H) span at most phi radians: the edge's chord error plus the span's
 // (whose ends are unnormalized interpolations, length >= cos(phi/2)). `crosses_zero`: the clamped
-// term's zero (the terminator for n = 1) may lie inside. Exact for a directional light and a distant
-// viewer; with varying L or H, phi includes their spread and the figure is an estimate.
+// term's zero (the terminator for n = 1) may lie inside. A bound for a directional light and a distant
+// viewer, where the choice uses it; where L or H moves the choice bounds the term by
+// moving_direction_bound.hpp instead (docs/triangle-choice.md §2).
 double gouraud_term_bound(double phi, double n, bool crosses_zero);
 
 // Chooses for every screen triangle of g. `shading_budget` is the budget in levels for the shading

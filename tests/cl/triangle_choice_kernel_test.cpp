@@ -130,10 +130,10 @@ TEST(TriangleChoiceKernel, TheWholeMixStaysWithinTheBudget) {
   expect_mix_within_budget(scene, true);
 }
 
-// A point light and a local viewer: the segments' bound assumes L and H constant along a segment, so this
-// is the expectation rather than a guarantee; it failed (0.78 levels at a shading budget of 0.5) until the
-// kink-free segment limit required the terminator to stay out of the segments' reach (the extrapolated
-// last segment leaves the triangle).
+// A point light and a local viewer: L and H move along a segment, bounded since 2026-12-02 by the
+// second-order limit (docs/combined.md §2b; random placements in moving_light_budget_test.cpp). It failed
+// (0.78 levels at a shading budget of 0.5) until the kink-free segment limit required the terminator to
+// stay out of the segments' reach (the extrapolated last segment leaves the triangle).
 TEST(TriangleChoiceKernel, TheWholeMixStaysWithinTheBudgetWithAPointLight) {
   expect_mix_within_budget(load_scene(source_dir() / "scenes" / "sphere.json"), false);  // 1920x1080, where it failed
 }
