@@ -24,7 +24,7 @@ KernelVariant kernel_variant(const Scene& s, const RenderOptions& o) {
   v.num_lights = int(s.lights.size());
   for (std::size_t i = 0; i < s.lights.size(); ++i)
     if (s.lights[i].type == LightType::point) v.point_lights |= 1u << i;
-  v.local_viewer = s.local_viewer && s.camera.projection == Projection::perspective;
+  v.local_viewer = s.viewer_is_local();
   v.need_position = v.local_viewer || v.point_lights != 0;
   v.float_output = o.float_output;
   v.specular = o.specular;

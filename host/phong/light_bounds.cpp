@@ -64,7 +64,7 @@ double LightBounds::h_spread() const { return sin_h_radius < 1.0 ? 2.0 * std::as
 
 TriangleFrame triangle_frame(const Scene& s, const ScreenGeometry& g, std::size_t t) {
   TriangleFrame f;
-  const bool distant_viewer = !(s.local_viewer && s.camera.projection == Projection::perspective);
+  const bool distant_viewer = !s.viewer_is_local();
   const glm::uvec3 idx = g.triangles[t];
   const std::uint32_t vid[3] = {idx.x, idx.y, idx.z};
   f.usable = distant_viewer || g.world.size() == g.normal.size();

@@ -38,7 +38,7 @@ __attribute__((always_inline)) inline float segment_distance2(float ax, float ay
 // Cloned for AVX2 (picked at load time where the CPU has it): three-operand vector instructions spare the
 // register copies of SSE2, ~1.2x on the whole choice (bench_triangle_choice).
 __attribute__((target_clones("avx2", "default"))) void frame_lanes(const Scene& s, const ScreenGeometry& g, std::size_t first, int count, FrameLanes& f) {
-  const bool distant_viewer = !(s.local_viewer && s.camera.projection == Projection::perspective);
+  const bool distant_viewer = !s.viewer_is_local();
   const bool have_world = g.world.size() == g.normal.size();
   f.count = count;
   for (int j = 0; j < kLanes; ++j) {  // gather (lanes past count repeat the first triangle)

@@ -8,7 +8,7 @@ namespace parashade {
 VertexLighting::VertexLighting(const Scene& scene)
     : eye_(scene.camera.position),
       view_dir_(glm::normalize(scene.camera.position - scene.camera.target)),
-      local_viewer_(scene.local_viewer && scene.camera.projection == Projection::perspective) {
+      local_viewer_(scene.viewer_is_local()) {
   for (const Light& l : scene.lights) {
     const bool directional = l.type == LightType::directional;
     lights_.push_back({directional, directional ? -glm::normalize(l.direction) : l.position, 255.0f * l.color});

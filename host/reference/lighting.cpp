@@ -6,7 +6,7 @@ namespace parashade {
 
 glm::dvec3 view_vector(const Scene& scene, glm::dvec3 p) {
   const Camera& c = scene.camera;
-  if (scene.local_viewer && c.projection == Projection::perspective) {
+  if (scene.viewer_is_local()) {
     const glm::dvec3 v = glm::dvec3(c.position) - p;
     const double len = glm::length(v);
     if (len > 0.0) return v / len;

@@ -68,6 +68,9 @@ struct Scene {
   std::vector<std::string> warnings;  // what loading accepted but the user should hear (mesh_load_warning)
 
   std::size_t triangle_count() const;
+  // V varies with the point: a local viewer, and only under a perspective camera (an orthographic one
+  // looks along one direction).
+  bool viewer_is_local() const { return local_viewer && camera.projection == Projection::perspective; }
 };
 
 // Largest resolution the 12-bit screen addresses of the sources allow (kernels/constants.h).
