@@ -19,6 +19,10 @@
 
 namespace parashade {
 
+// The lights' masks travel as floats in the records: exact up to 24 bits, so at most 24 lights (the
+// per-triangle arrays below are sized by it).
+constexpr std::size_t kChoiceMaxLights = 24;
+
 double gouraud_term_bound(double phi, double n, bool crosses_zero) {
   if (!(phi > 0.0)) return 0.0;
   if (!(phi < 0.5 * M_PI)) return 1.0;
@@ -156,7 +160,7 @@ struct TriangleTerms {
   bool usable = false;
   glm::dvec3 n[3];
   double cos_spread = 1.0, min_normal = 0.0, view_chord = 0.0;
-  LightTerms light[24];
+  LightTerms light[kChoiceMaxLights];
 };
 
 void reference_terms(const Scene& s, const TriangleFrame& f, TriangleTerms& out) {
@@ -245,7 +249,7 @@ MovingLimit moving_psi_limit(const Scene& s, const ScreenGeometry& g, std::size_
   const bool flat_rows = !(normal_rate > 1e-9);
   const double per_psi = flat_rows ? 0.0 : step / normal_rate;
   const double fixed_move = flat_rows ? double(1 << kCombinedMaxK) * step : 0.0;
-  const bool distant_viewer = !(s.local_viewer && s.camera.projection == Projection::perspective);
+  const bool distant_viewer = !s.viewer_is_local();
   glm::dvec3 view_centre;
   double view_chord = 0.0, view_distance = INFINITY;
   if (distant_viewer) {
@@ -265,7 +269,7 @@ MovingLimit moving_psi_limit(const Scene& s, const ScreenGeometry& g, std::size_
     int state;
     bool specular;
   };
-  Term term[24];
+  Term term[kChoiceMaxLights];
   for (std::size_t i = 0; i < lights; ++i) {
     const Light& l = s.lights[i];
     glm::dvec3 light_centre;
@@ -423,8 +427,8 @@ std::shared_ptr<const ChoiceTables> choice_tables(const Scene& s, const Combined
 TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry& g, const CombinedConfig& c,
                                             double shading_budget, std::vector<TriangleShading>& out,
                                             ChoiceArithmetic arithmetic) {
-  // The masks travel as floats in the records: exact up to 24 bits.
-  if (s.lights.size() > 24) throw InputError("the per-triangle choice handles at most 24 lights");
+  if (s.lights.size() > kChoiceMaxLights)
+    throw InputError("the per-triangle choice handles at most " + std::to_string(kChoiceMaxLights) + " lights");
   const std::size_t count = g.triangles.size();
   out.resize(count);
   const bool bound = c.rule == TriangleRule::bound;
@@ -443,8 +447,9 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
   std::atomic<std::uint64_t> largest_bits{0};  // largest expected error among Gouraud triangles (double bits)
   const bool lanes = bound && arithmetic == ChoiceArithmetic::float_lanes;
   // combined:auto's segments under a point light or a local viewer: L or H moves along them.
-  bool moving = bound && c.automatic && !(s.camera.projection != Projection::perspective || !s.local_viewer) && !s.lights.empty();
-  for (const Light& l : s.lights) moving = moving || (bound && c.automatic && l.type != LightType::directional);
+  const bool point_light = std::any_of(s.lights.begin(), s.lights.end(),
+                                       [](const Light& l) { return l.type != LightType::directional; });
+  const bool moving = bound && c.automatic && ((s.viewer_is_local() && !s.lights.empty()) || point_light);
   static const LaneTable diffuse_chord_lanes =
       make_lane_table(kChordTableEnd, [](double u) { return gouraud_term_bound(2.0 * std::asin(u), 1.0, true); });
   GouraudFitConstants fit_constants;
@@ -463,7 +468,7 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
     std::uint64_t n_gouraud = 0, n_segments = 0, n_without = 0, n_terminator = 0, n_skipped = 0;
     double largest = 0.0;
     FrameLanes frame;
-    LightLanes light[24];
+    LightLanes light[kChoiceMaxLights];
     GouraudFitLanes fit;
     TriangleTerms terms;
     for (std::size_t t = first; t < last; ++t) {

@@ -76,23 +76,18 @@ void FramePipeline::plan_bands(const FrameConfig& config, std::size_t max_record
   while ((1 << tile_shift) < tile) ++tile_shift;  // tile sizes are powers of two
   const std::size_t chunk = balanced_chunk(n, 8192, 65536), ranges = (n + chunk - 1) / chunk;
   triangle_rows_.resize(n);
-  // Pass 1: each triangle's tile rows (its pixel-centre box as setup computes it, centre_box, here in
-  // 32 bits: sub-pixel coordinates stay within the guard band), and per range how many triangles
-  // start and end in each row.
+  // Pass 1: each triangle's tile rows (its pixel-centre box, centre_box, as setup computes it), and per
+  // range how many triangles start and end in each row.
   std::vector<std::uint32_t> starts(ranges * std::size_t(rows), 0), ends(ranges * std::size_t(rows), 0);
   std::vector<std::uint64_t> empty(ranges, 0);
   parallel_for(ranges, [&](std::size_t r) {
     std::uint32_t* start = starts.data() + r * std::size_t(rows);
     std::uint32_t* end_row = ends.data() + r * std::size_t(rows);
-    constexpr int half = kSubpixel / 2;
     for (std::size_t t = r * chunk, end = std::min(n, t + chunk); t < end; ++t) {
       const glm::uvec3 tri = g.triangles[t];
       const glm::ivec2 a = g.xy[tri.x], b = g.xy[tri.y], c = g.xy[tri.z];
-      // floor((v - half) / kSubpixel) by an arithmetic shift, rounded up for the first centre.
-      const int x0 = std::max(0, (std::min({a.x, b.x, c.x}) - half + kSubpixel - 1) >> kSubpixelBits);
-      const int y0 = std::max(0, (std::min({a.y, b.y, c.y}) - half + kSubpixel - 1) >> kSubpixelBits);
-      const int x1 = std::min(g.width - 1, (std::max({a.x, b.x, c.x}) - half) >> kSubpixelBits);
-      const int y1 = std::min(g.height - 1, (std::max({a.y, b.y, c.y}) - half) >> kSubpixelBits);
+      const auto [x0, y0, x1, y1] = centre_box(std::min({a.x, b.x, c.x}), std::max({a.x, b.x, c.x}),
+                                               std::min({a.y, b.y, c.y}), std::max({a.y, b.y, c.y}), g.width, g.height);
       if (x0 > x1 || y0 > y1) {
         triangle_rows_[t] = kNoRows;
         ++empty[r];
