@@ -72,7 +72,14 @@ def main():
     ap.add_argument("--cores", type=int, default=os.cpu_count())
     ap.add_argument("--json")
     ap.add_argument("--plot")
+    ap.add_argument("--replot", metavar="JSON", help="only draw --plot from a --json file of an earlier run")
     args = ap.parse_args()
+    if args.replot:
+        if not args.plot:
+            sys.exit("--replot needs --plot FILE")
+        with open(args.replot) as f:
+            plot(json.load(f), args.plot)
+        return
     if args.plot:
         try:
             import matplotlib  # noqa: F401  (checked before the runs, not after them)
@@ -201,37 +208,52 @@ def main():
         print("| %d | %.0f | %.0f | %.0f | %.0f | %s |" % pred[-1])
     out["prediction"]["table"] = pred
 
+    out["table"] = rows
+    out["title"] = os.path.basename(args.scene) + " " + args.size
     if args.json:
         with open(args.json, "w") as f:
             json.dump(out, f, indent=1)
     if args.plot:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4))
-        for mode, mk in (("sort-last", "o"), ("sort-first", "s")):
-            rr = [r for r in rows if r[0] == mode]
-            ax1.plot([r[1] for r in rr], [r[2] for r in rr], mk + "-", label=mode + " measured")
-            ax1.plot([r[1] for r in rr], [r[8] for r in rr], mk + ":", label=mode + " composite measured")
-            ax1.plot([r[1] for r in rr], [r[9] for r in rr], "x:", label=mode + " composite α–β")
-            ax1.plot([r[1] for r in rr], [r[3] for r in rr], mk + "--", label=mode + " model")
-        ax1.axhline(one_process, color="grey", lw=0.8, label="one process, no MPI")
-        ax1.axhline(one_planned, color="grey", lw=0.8, ls="--", label="one process, planned frame")
-        ax1.set_yscale("log")
-        ax1.set_xlabel("ranks (one 2-core host)")
-        ax1.set_ylabel("frame ms")
-        ax1.set_title("measured vs model, " + os.path.basename(args.scene) + " " + args.size)
-        ax1.legend(fontsize=8)
-        ax2.loglog([p[0] for p in pred], [p[1] for p in pred], "o-", label="sort-last")
-        ax2.loglog([p[0] for p in pred], [p[2] for p in pred], "o:", label="sort-last composite")
-        ax2.loglog([p[0] for p in pred], [p[3] for p in pred], "s-", label="sort-first")
-        ax2.loglog([p[0] for p in pred], [p[4] for p in pred], "s:", label="sort-first composite")
-        ax2.set_xlabel("ranks")
-        ax2.set_ylabel("predicted frame ms")
-        ax2.set_title("prediction: 100M triangles, 3840x2160")
-        ax2.legend(fontsize=8)
-        fig.tight_layout()
-        fig.savefig(args.plot, dpi=100)
+        plot(out, args.plot)
+
+
+def plot(out, path):
+    """Measured against the model (left) and the prediction (right) from the figures main() computed (or a
+    --json file of them: --replot). Zeros (no composite at N = 1) are left out of the log axes."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    positive = lambda v: v if v > 0 else float("nan")  # noqa: E731
+    rows, pred = out["table"], out["prediction"]["table"]
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(13, 4.2))
+    for mode, mk, colour in (("sort-last", "o", "tab:blue"), ("sort-first", "s", "tab:orange")):
+        rr = [r for r in rows if r[0] == mode]
+        ns = [r[1] for r in rr]
+        ax1.plot(ns, [r[2] for r in rr], mk + "-", color=colour, label=mode + " frame, measured")
+        ax1.plot(ns, [r[3] for r in rr], mk + "--", color=colour, alpha=0.6, label=mode + " frame, model")
+        ax1.plot(ns, [positive(r[8]) for r in rr], mk + ":", color=colour, mfc="none",
+                 label=mode + " composite, measured")
+        ax1.plot(ns, [positive(r[9]) for r in rr], "x:", color=colour, label=mode + " composite, α–β model")
+    ax1.axhline(out["one_process_frame_ms"], color="grey", lw=0.8, label="one process, no MPI")
+    ax1.axhline(out["one_process_planned_frame_ms"], color="grey", lw=0.8, ls="--", label="one process, planned frame")
+    ax1.set_yscale("log")
+    ax1.set_xticks(sorted({r[1] for r in rows}))
+    ax1.set_xlabel("ranks (one 2-core host)")
+    ax1.set_ylabel("ms")
+    ax1.set_title("measured vs model, " + out.get("title", ""))
+    ax1.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    ranks = [q[0] for q in pred]
+    ax2.loglog(ranks, [q[1] for q in pred], "o-", color="tab:blue", label="sort-last frame")
+    ax2.loglog(ranks, [positive(q[2]) for q in pred], "o:", color="tab:blue", mfc="none", label="sort-last composite")
+    ax2.loglog(ranks, [q[3] for q in pred], "s-", color="tab:orange", label="sort-first frame")
+    ax2.loglog(ranks, [positive(q[4]) for q in pred], "s:", color="tab:orange", mfc="none",
+               label="sort-first composite")
+    ax2.set_xlabel("ranks")
+    ax2.set_ylabel("predicted ms")
+    ax2.set_title("prediction: 100M triangles, 3840x2160")
+    ax2.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
 
 
 main()
