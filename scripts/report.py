@@ -25,6 +25,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.image as mpimg  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.colors  # noqa: E402
 import matplotlib.ticker as ticker  # noqa: E402
 import numpy as np  # noqa: E402
 
@@ -187,6 +188,14 @@ def load_rgb(path):
     return img[..., :3].astype(np.float64)
 
 
+def block_max(a, k):
+    """a shrunk k times in each direction, each pixel the largest of its k x k block (edges padded)."""
+    h, w = a.shape
+    padded = np.zeros(((h + k - 1) // k * k, (w + k - 1) // k * k), dtype=a.dtype)
+    padded[:h, :w] = a
+    return padded.reshape(padded.shape[0] // k, k, padded.shape[1] // k, k).max(axis=(1, 3))
+
+
 def strip_plot(images, scene, size, out_dir):
     exact_path = os.path.join(images, f"{scene}_{size}_exact.png")
     if not os.path.exists(exact_path):
@@ -202,17 +211,21 @@ def strip_plot(images, scene, size, out_dir):
     # the maps compare with each other and the worst pixel keeps its true value. Viridis, as
     # `parashade render --error-map` and `compare --diff` draw it.
     vmax = max(1.0, max(float(d.max()) for d in diffs))
+    # A thumbnail drops most pixels: each map is shrunk by the largest error of each block, so an error of
+    # one pixel still shows; the scale is a power law (gamma 0.4), so 1 level shows beside 124.
+    norm = matplotlib.colors.PowerNorm(gamma=0.4, vmin=0, vmax=vmax)
     fig, axes = plt.subplots(2, len(cols) + 1, figsize=(5.2 * (len(cols) + 1), 6.6))
     axes[0][0].imshow(exact.astype(np.uint8))
     axes[0][0].set_title("exact Phong (reference)", fontsize=10)
     axes[1][0].axis("off")
     axes[1][0].text(0.0, 0.5, f"error maps:\n|image - exact|, max over RGB,\nin 8-bit levels; one colour scale\n"
-                    f"0..{vmax:.0f} levels (the largest error)", fontsize=10, va="center")
+                    f"0..{vmax:.0f} levels (the largest error),\npower law 0.4; each thumbnail pixel\n"
+                    f"the largest error of its block", fontsize=10, va="center")
     im = None
     for k, ((p, m, path), diff) in enumerate(zip(cols, diffs), start=1):
         axes[0][k].imshow(load_rgb(path).astype(np.uint8))
         axes[0][k].set_title(f"{p} {m}", fontsize=10)
-        im = axes[1][k].imshow(diff, cmap="viridis", vmin=0, vmax=vmax, interpolation="nearest")
+        im = axes[1][k].imshow(block_max(diff, 4), cmap="viridis", norm=norm, interpolation="nearest")
         axes[1][k].set_title(f"error: max {diff.max():.0f}, mean {diff.mean():.2f} levels", fontsize=9)
     for row in axes:
         for ax in row:
