@@ -46,13 +46,13 @@ def composite_model(mode, n_ranks, pixels, a):
 def warm_figures(reports):
     """One run's figures from its rounds: per round and rank, the median over the timed frames of each time;
     then the median over the rounds. The frame is rank 0's barrier-to-barrier frame."""
-    keys = ("prepare_ms", "render_ms", "pack_ms", "composite_ms", "rank_frame_ms")
+    keys = ("prepare_ms", "render_ms", "pack_ms", "composite_ms", "gather_ms", "rank_frame_ms")
     out = json.loads(json.dumps(reports[0]))
     out["frame_ms"] = statistics.median(r["frame_ms"] for r in reports)
     out["frame_ms_rounds"] = [r["frame_ms"] for r in reports]
     for i, rank in enumerate(out["per_rank"]):
         for key in keys:
-            rank[key] = statistics.median(statistics.median(f[key] for f in r["per_rank"][i]["frames"])
+            rank[key] = statistics.median(statistics.median(f.get(key, 0.0) for f in r["per_rank"][i]["frames"])
                                           for r in reports)
         rank["peak_rss_mb"] = max(r["per_rank"][i]["peak_rss_mb"] for r in reports)
     for key in ("render_ms", "prepare_ms"):
@@ -94,6 +94,9 @@ def main():
     pixels = w * h
 
     ranks = list(map(int, args.ranks.split(",")))
+    # The sort-last composite taken apart at each N, on the frame's buffer sizes (parashade_mpi_composite_probe).
+    probe = [json.loads(sh(mpirun + ["-np", str(n), os.path.join(args.build, "parashade_mpi_composite_probe"),
+                                     "--pixels", str(pixels)])) for n in ranks]
     # The one-process frames to compare with N = 1: sort-first's frame is the plain frame; sort-last's is
     # a planned frame (the units' depth pass leaves the keys), so also the one-process planned frame.
     cases = [(m, n) for m in ("sort-last", "sort-first") for n in ranks] + [("one-process", 1),
@@ -133,8 +136,8 @@ def main():
     # p, a and s fitted over every N (median; least squares in 1/N). Composite: alpha-beta-gamma from the
     # ping-pong, nothing fitted, compared with the measured composite; pack (sort-last, local) from N = 1.
     C = args.cores
-    out = {"alpha_beta": a, "ping_pong": pp, "pixels": pixels, "cores": C, "runs": {}, "model": {},
-           "prediction": {}}
+    out = {"alpha_beta": a, "ping_pong": pp, "composite_probe": probe, "pixels": pixels, "cores": C, "runs": {},
+           "model": {}, "prediction": {}}
     rows = []
     for mode in ("sort-last", "sort-first"):
         ns = sorted(n for (m, n) in runs if m == mode)
@@ -187,6 +190,23 @@ def main():
     print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for r in rows:
         print("| %s | %d | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.2f | %.2f | %.2f | %d | %d | %.0f |" % r)
+    print()
+    print("The sort-last composite taken apart (parashade_mpi_composite_probe, %d pixels of 16 bytes, random keys; "
+          "slowest rank, median ms):" % pixels)
+    print()
+    print("| N | in the frame: composite / of which gather | MPI_Alltoall | MPI_Reduce_local on N-1 blocks | both "
+          "(the frame's reduce-scatter) | MPI_Reduce_scatter_block, same operator | MPI_Gather | copy of the send "
+          "buffer | model (α–β–γ) |")
+    print("|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for q in probe:
+        n = q["ranks"]
+        r = runs.get(("sort-last", n))
+        frame = ("%.2f / %.2f" % (max(p["composite_ms"] for p in r["per_rank"]),
+                                  max(p.get("gather_ms", 0.0) for p in r["per_rank"]))) if r else "-"
+        print("| %d | %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |" % (
+            n, frame, q["alltoall_ms"], q["reduce_local_ms"], q["alltoall_reduce_local_ms"],
+            q["reduce_scatter_block_ms"], q["gather_ms"], q["copy_send_buffer_ms"],
+            composite_model("sort-last", n, pixels, a) * 1e3))
 
     # Prediction: 100M triangles at 3840x2160, one rank per node of this VM's kind (C cores), the
     # per-record and per-pixel costs above, the ping-pong's alpha, beta, gamma.

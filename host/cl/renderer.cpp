@@ -53,6 +53,19 @@ Renderer::Renderer(Device& device, RenderOptions options, std::vector<Device*> u
   }
 }
 
+void Renderer::set_band(int first, int rows) {
+  if (first < 0 || rows < -1)
+    throw UsageError("a band is tile rows [first, first + rows) with first >= 0 and rows >= 0, or rows -1 for the "
+                     "whole frame (got first " + std::to_string(first) + ", rows " + std::to_string(rows) + ")");
+  FrameConfig moved = config_;
+  moved.band_first = first;
+  moved.band_rows = rows;
+  check_frame_config(moved, unit_devices_.empty() ? DeviceMode::one : DeviceMode::unit_sub_devices);
+  config_ = moved;
+  options_.band_first = first;
+  options_.band_rows = rows;
+}
+
 cl::Buffer& Renderer::ensure(cl::Buffer& buffer, std::size_t& capacity, std::size_t bytes, cl_mem_flags flags) {
   bytes = std::max<std::size_t>(bytes, 64);
   if (bytes > capacity) {

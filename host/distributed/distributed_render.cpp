@@ -8,6 +8,7 @@
 #include <memory>
 #include <numeric>
 
+#include "key_pixel.hpp"
 #include "mpi_session.hpp"
 #include "scene_bytes.hpp"
 #include "parashade/device.hpp"
@@ -26,32 +27,6 @@ namespace parashade {
 namespace distributed {
 namespace {
 
-// One pixel as the ranks composite it: the least key (depth, scene face) wins; its colour and rank go
-// with it. 16 bytes; with --float the pixel's unclamped RGB follows (3 floats and 4 bytes of padding: 32
-// bytes a pixel), so the float image is the winner's too.
-struct KeyPixel {
-  std::uint64_t key;
-  std::uint32_t rgba;
-  std::uint32_t rank;
-};
-static_assert(sizeof(KeyPixel) == 16, "KeyPixel is sent as 16 bytes");
-constexpr int kFloatPixelBytes = 32;
-
-// The composite's operator on pixels of the datatype's size (16 or 32 bytes): the least key wins, equal
-// keys (no rank covers the pixel) go to the lowest rank.
-void min_key(void* in, void* inout, int* len, MPI_Datatype* type) {
-  int bytes = 0;
-  MPI_Type_size(*type, &bytes);
-  const char* a = static_cast<const char*>(in);
-  char* b = static_cast<char*>(inout);
-  for (int i = 0; i < *len; ++i, a += bytes, b += bytes) {
-    KeyPixel x, y;
-    std::memcpy(&x, a, sizeof x);
-    std::memcpy(&y, b, sizeof y);
-    if (x.key < y.key || (x.key == y.key && x.rank < y.rank)) std::memcpy(b, a, std::size_t(bytes));
-  }
-}
-
 KeyPixel key_pixel(const std::vector<char>& buf, std::size_t p, int bytes) {
   KeyPixel k;
   std::memcpy(&k, buf.data() + p * std::size_t(bytes), sizeof k);
@@ -64,6 +39,7 @@ struct RankFigures {
   double prepare_ms = 0, render_ms = 0, frame_ms = 0, composite_ms = 0, bytes_sent = 0;
   double band_first = 0, band_rows = 0, record_bytes = 0;
   double pack_ms = 0;  // sort-last: keys and colours into the composite's buffer (local, per pixel)
+  double gather_ms = 0;  // the composite's gather to rank 0 (sort-last: after the reduce-scatter)
 };
 constexpr int kFigures = sizeof(RankFigures) / sizeof(double);
 
@@ -184,7 +160,7 @@ std::vector<std::pair<int, int>> bands(int tile_rows, const std::vector<double>&
 // One timed frame of one rank: what the model of docs/distributed.md is validated against.
 nlohmann::json frame_json(const RankFigures& f) {
   return {{"prepare_ms", f.prepare_ms}, {"render_ms", f.render_ms}, {"pack_ms", f.pack_ms},
-          {"composite_ms", f.composite_ms}, {"rank_frame_ms", f.frame_ms}};
+          {"composite_ms", f.composite_ms}, {"gather_ms", f.gather_ms}, {"rank_frame_ms", f.frame_ms}};
 }
 
 void check_scatter_size(const std::vector<std::vector<char>>& parts) {
@@ -226,6 +202,7 @@ nlohmann::json figures_json(const RankFigures& f, int rank, Distribute mode) {
                       {"render_ms", f.render_ms},
                       {"rank_frame_ms", f.frame_ms},
                       {"composite_ms", f.composite_ms},
+                      {"gather_ms", f.gather_ms},
                       {"pack_ms", f.pack_ms},
                       {"bytes_sent", f.bytes_sent}};
   if (mode == Distribute::sort_last) {
@@ -324,9 +301,11 @@ int run(MpiSession& mpi, const DistributedRender& job) {
   MPI_Type_contiguous(pixel_bytes, MPI_BYTE, &pixel_type);
   MPI_Type_commit(&pixel_type);
   MPI_Op min_op;
-  MPI_Op_create(&min_key, 1, &min_op);
+  MPI_Op_create(min_key_for(pixel_bytes), 1, &min_op);
   const std::size_t block = (pixels + n - 1) / n;
-  std::vector<char> send, mine(sort_last ? block * pixel_bytes : 0), all;  // pixels of pixel_bytes each
+  // Pixels of pixel_bytes each: what a rank sends (every block), what it receives (every rank's copy of
+  // its block), and rank 0's composited frame.
+  std::vector<char> send, received(sort_last ? block * n * pixel_bytes : 0), all;
 
   RenderOptions options = job.options;
   if (sort_last && !options.plan) options.plan = PlanOptions{};  // the depth keys: a planned frame
@@ -352,15 +331,21 @@ int run(MpiSession& mpi, const DistributedRender& job) {
       const std::vector<std::pair<int, int>> all_bands = bands(tile_rows, speed);
       fig.band_first = all_bands[rank].first;
       fig.band_rows = all_bands[rank].second;
-      // A step on every rank every frame (a step is collective), a new renderer where the band moved.
+      // A step on every rank every frame (a step is collective); where the band moved, the renderer moves
+      // it (a new renderer would allocate and map its buffers again: ~4 ms a frame here).
       mpi.step([&] {
         if (renderer && all_bands[rank] == band) return;
         band = all_bands[rank];
-        renderer.reset();
-        RenderOptions o = options;
-        o.band_first = band.first;
-        o.band_rows = band.second;
-        if (band.second > 0) renderer = std::make_unique<Renderer>(*device, o);
+        if (band.second == 0) {
+          renderer.reset();
+        } else if (renderer) {
+          renderer->set_band(band.first, band.second);
+        } else {
+          RenderOptions o = options;
+          o.band_first = band.first;
+          o.band_rows = band.second;
+          renderer = std::make_unique<Renderer>(*device, o);
+        }
       });
     } else if (!renderer) {
       mpi.step([&] { renderer = std::make_unique<Renderer>(*device, options); });
@@ -409,9 +394,20 @@ int run(MpiSession& mpi, const DistributedRender& job) {
       // imbalance, not compositing).
       MPI_Barrier(mpi.comm);
       t_comp = now_ms();
-      MPI_Reduce_scatter_block(send.data(), mine.data(), int(block), pixel_type, min_op, mpi.comm);
+      // A reduce-scatter as MPI_Alltoall (each rank gets every rank's copy of its block) and the operator
+      // applied locally with MPI_Reduce_local: the bytes of a ring reduce-scatter, and 3-4x faster here than
+      // Open MPI's MPI_Reduce_scatter_block with a user-defined operator (parashade_mpi_composite_probe,
+      // docs/distributed.md). The operator is a minimum over (key, rank), so the order does not matter.
+      MPI_Alltoall(send.data(), int(block), pixel_type, received.data(), int(block), pixel_type, mpi.comm);
+      char* mine = received.data() + std::size_t(rank) * block * pixel_bytes;
+      for (int r = 0; r < n; ++r)
+        if (r != rank)
+          MPI_Reduce_local(received.data() + std::size_t(r) * block * pixel_bytes, mine, int(block), pixel_type,
+                           min_op);
       if (rank == 0) all.resize(block * n * pixel_bytes);
-      MPI_Gather(mine.data(), int(block), pixel_type, all.data(), int(block), pixel_type, 0, mpi.comm);
+      const double t_gather = now_ms();
+      MPI_Gather(mine, int(block), pixel_type, all.data(), int(block), pixel_type, 0, mpi.comm);
+      fig.gather_ms = now_ms() - t_gather;
       // At least what leaves the rank: the other ranks' blocks of its keys, and its block to rank 0.
       fig.bytes_sent = double(pixel_bytes) * block * ((n - 1) + (rank == 0 ? 0 : 1));
     } else {
@@ -446,6 +442,7 @@ int run(MpiSession& mpi, const DistributedRender& job) {
         if (got[r] > 0) speed[r] = got[r];
     }
     fig.composite_ms = now_ms() - t_comp;
+    if (!sort_last) fig.gather_ms = fig.composite_ms;  // sort-first's composite is its gather
     MPI_Barrier(mpi.comm);
     const double whole = now_ms() - t_frame;
     std::vector<RankFigures> gathered(rank == 0 ? n : 0);
@@ -498,7 +495,7 @@ int run(MpiSession& mpi, const DistributedRender& job) {
            {&RankFigures::faces, &RankFigures::records, &RankFigures::pixels, &RankFigures::won_pixels,
             &RankFigures::modeled_clocks, &RankFigures::prepare_ms, &RankFigures::render_ms, &RankFigures::frame_ms,
             &RankFigures::composite_ms, &RankFigures::bytes_sent, &RankFigures::band_first, &RankFigures::band_rows,
-            &RankFigures::record_bytes, &RankFigures::pack_ms})
+            &RankFigures::record_bytes, &RankFigures::pack_ms, &RankFigures::gather_ms})
         m.*field = med(r, field);
       if (!sort_last) {  // the last frame's band
         m.band_first = frames.back()[r].band_first;
@@ -546,7 +543,7 @@ int run(MpiSession& mpi, const DistributedRender& job) {
     if (sort_last) {
       report["rank_partition"] = partition_name(job.rank_partition);
       report["planning_ms"] = plan_ms;
-      report["composite"] = "MPI_Reduce_scatter_block (min of (depth, scene face) keys) + MPI_Gather to rank 0";
+      report["composite"] = "MPI_Alltoall + MPI_Reduce_local (min of (depth, scene face) keys) + MPI_Gather to rank 0";
       std::vector<double> clocks(n);
       for (int r = 0; r < n; ++r) clocks[r] = per_rank[r]["modeled_clocks"].get<double>();
       report["imbalance"]["modeled_clocks"] = imbalance(clocks);

@@ -4,8 +4,8 @@
 //
 // sort-last: the planner's strategies assign the scene's faces to ranks by modeled cost; each rank
 // prepares (prepare_frame) and renders only its share as a planned frame, whose depth keys (depth,
-// scene face) and colours are composited with MPI_Reduce_scatter_block (a min-key operator) and
-// MPI_Gather to rank 0. sort-first: bands of tile rows sized by the ranks' measured speed, gathered
+// scene face) and colours are composited by MPI_Alltoall + MPI_Reduce_local (a min-key operator: a
+// reduce-scatter) and MPI_Gather to rank 0. sort-first: bands of tile rows sized by the ranks' measured speed, gathered
 // with MPI_Gatherv. Either way the image is the one-process render's, byte for byte.
 #include <functional>
 #include <memory>

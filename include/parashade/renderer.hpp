@@ -58,6 +58,9 @@ class Renderer : private FrameStorage {
   // The screen geometry of the last render() or coverage_counts().
   const ScreenGeometry& geometry() const { return pipeline_.geometry(); }
   const RenderOptions& options() const { return options_; }
+  // Shade only tile rows [first, first + rows) from the next render() on (the rest is background), as if
+  // constructed with band_first / band_rows: a moved band keeps the programs, buffers and mapped memory.
+  void set_band(int first, int rows);
   // Work-items the kernel runs with for a frame of `tiles` tiles.
   int work_items(int tiles) const;
   // A planned frame's depth keys after render() (kernels/plan_key.h: per pixel, row-major, the least

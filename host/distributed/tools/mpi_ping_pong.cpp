@@ -9,21 +9,10 @@
 #include <cstdio>
 #include <vector>
 
-namespace {
+#include "../key_pixel.hpp"
 
-struct KeyPixel {
-  std::uint64_t key;
-  std::uint32_t rgba, rank;
-};
-
-void min_key(void* in, void* inout, int* len, MPI_Datatype*) {
-  const KeyPixel* a = static_cast<const KeyPixel*>(in);
-  KeyPixel* b = static_cast<KeyPixel*>(inout);
-  for (int i = 0; i < *len; ++i)
-    if (a[i].key < b[i].key || (a[i].key == b[i].key && a[i].rank < b[i].rank)) b[i] = a[i];
-}
-
-}  // namespace
+using parashade::distributed::KeyPixel;
+using parashade::distributed::min_key_for;
 
 int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);
@@ -78,7 +67,7 @@ int main(int argc, char** argv) {
   std::vector<double> g;
   for (int r = 0; r < 7; ++r) {
     const double t0 = MPI_Wtime();
-    min_key(a.data(), b.data(), &len, &type);
+    min_key_for(16)(a.data(), b.data(), &len, &type);
     g.push_back((MPI_Wtime() - t0) / pixels);
   }
   std::sort(g.begin(), g.end());
