@@ -294,15 +294,22 @@ def throughput_table(rows):
 
 
 def memory_table(memory, rows, baseline):
-    lines = ["| scene | size | peak RSS MiB (whole `parashade render`) | above the OpenCL runtime's MiB | budget MiB |",
-             "|---|---|---|---|---|"]
+    lines = ["| scene | size | method | peak RSS MiB (whole `parashade render`) | above the OpenCL runtime's MiB | "
+             "budget MiB | within |",
+             "|---|---|---|---|---|---|---|"]
     for m in memory:
         size = f"{m['width']}x{m['height']}"
-        b = find(rows, peer="parashade", scene=m["scene"], size=size, method="gouraud")
+        method = m.get("method", "gouraud")
         over = m.get("over_baseline_mib")
-        lines.append(f"| {m['scene']} | {size} | {m['peak_rss_mib']:.1f} | {over:.1f} | "
-                     f"{b['memory_budget_mib']:.1f} |" if b and over is not None else
-                     f"| {m['scene']} | {size} | {m['peak_rss_mib']:.1f} | - | - |")
+        budget = m.get("budget_mib")
+        if budget is None:  # older memory files: the budget from the benchmark row
+            b = find(rows, peer="parashade", scene=m["scene"], size=size, method="gouraud")
+            budget = b["memory_budget_mib"] if b else None
+        if over is None or budget is None:
+            lines.append(f"| {m['scene']} | {size} | {method} | {m['peak_rss_mib']:.1f} | - | - | - |")
+            continue
+        lines.append(f"| {m['scene']} | {size} | {method} | {m['peak_rss_mib']:.1f} | {over:.1f} | {budget:.1f} | "
+                     f"{'yes' if over <= budget else '**no**'} |")
     return "\n".join(lines) + (f"\n\nThe OpenCL runtime alone (`parashade devices`): {baseline:.1f} MiB. "
                                 "Budget = 2 x (RGBA8 + 32-bit depth frame + mesh) + 64 MiB." if baseline else "")
 
@@ -340,7 +347,7 @@ def main():
                "## Pixel throughput (large triangles) and triangle throughput (small triangles)", "",
                throughput_table(rows), ""]
     if res["memory"]:
-        md += ["## Peak memory (Gouraud)", "", memory_table(res["memory"], rows, res.get("memory_baseline")), ""]
+        md += ["## Peak memory", "", memory_table(res["memory"], rows, res.get("memory_baseline")), ""]
     sizes = sorted({r["size"] for r in rows if r["peer"] == "llvmpipe"}, key=lambda s: int(s.split("x")[0]))
     scenes = sorted({r["scene"] for r in rows if r["peer"] == "llvmpipe"})
     plots = []
