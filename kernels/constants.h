@@ -21,11 +21,13 @@
 
 /* Screen tile edge in pixels: 16, 32 or 64 (--tile), the powers of two from TILE_MIN to TILE_MAX. A tile
  * row is whole VEC-pixel segments (TILE_MIN = VEC); a work-item keeps the tile's depth and colour
- * (4 * TILE^2 floats) in private memory. The kernels get the size as -D TILE. Default 16: 16-px tiles
- * beat 64-px ones with many triangles, since every row of a tile tests every triangle binned to it. */
+ * (4 * TILE^2 floats) in private memory. The kernels get the size as -D TILE. Default 32: against 16 a
+ * triangle is binned to fewer tiles, so fewer tiles repeat its per-triangle work (Gouraud frames 1.03-1.32x
+ * faster on every test scene, Phong 0.95-1.14x; bench/README.md run J); 64-px tiles lose with many
+ * triangles, since every row of a tile tests every triangle binned to it. */
 #define TILE_MIN VEC
 #define TILE_MAX 64
-#define TILE_DEFAULT 16
+#define TILE_DEFAULT 32
 
 /* Work-items of the frame kernel per compute unit by default (--work-items 0): PoCL pays a fixed cost per
  * work-group, so a few work-items walk interleaved tiles instead of one work-group per tile; 16 per

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "cli_fixture.hpp"
+#include "parashade/kernels/constants.h"
 
 namespace parashade {
 namespace {
@@ -40,7 +41,7 @@ TEST_F(SplitDevices, TwoDevicesGiveTheSingleDeviceImage) {
     ASSERT_EQ(field(rep, "/devices").size(), 2u) << list;
     int rows = 0;
     for (const auto& d : rep["devices"]) rows += d["tile_rows"].get<int>();
-    EXPECT_EQ(rows, (150 + 15) / 16) << "the bands cover every tile row once";
+    EXPECT_EQ(rows, (150 + TILE_DEFAULT - 1) / TILE_DEFAULT) << "the bands cover every tile row once";
   }
 }
 
@@ -89,7 +90,7 @@ TEST_F(SplitDevices, KeepGoingDropsTheFailingDeviceAndSaysSo) {
       }
     }
     EXPECT_EQ(failed, 1) << rep.dump(2);
-    EXPECT_EQ(rows, (150 + 15) / 16) << "the device left covers every tile row";
+    EXPECT_EQ(rows, (150 + TILE_DEFAULT - 1) / TILE_DEFAULT) << "the device left covers every tile row";
   }
 }
 

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "cli_fixture.hpp"
+#include "parashade/kernels/constants.h"
 
 namespace parashade {
 namespace {
@@ -149,7 +150,7 @@ TEST_F(CliTune, BruteMeasuresTheDefaultFirstAndResumesFromTheCache) {
   ASSERT_TRUE(succeeds(tune(args)));
   const auto first = visited();
   ASSERT_EQ(first.size(), 3u);
-  EXPECT_EQ(first[0]["tile"], 16);
+  EXPECT_EQ(first[0]["tile"], TILE_DEFAULT);  // the default configuration first
   EXPECT_EQ(first[0]["work_items"], 0);
   EXPECT_EQ(first[0]["partition"], "none");
   // The next run continues the same sequence after what is cached.

@@ -134,7 +134,9 @@ def identity(tmp, mode, cases):
                 check(faces == r["faces"], "%s np=%d: ranks hold %d of %d faces" % (label, np, faces, r["faces"]))
             else:
                 rows = sum(p["band_tile_rows"] for p in r["per_rank"])
-                check(rows == (120 + 15) // 16, "%s np=%d: bands cover %d tile rows" % (label, np, rows))
+                tile = r["tile_size"]
+                check(rows == (120 + tile - 1) // tile, "%s np=%d: bands cover %d tile rows of %d" %
+                      (label, np, rows, tile))
             os.remove(img)
 
 
