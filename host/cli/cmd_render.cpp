@@ -43,6 +43,8 @@ struct RenderArgs {
   std::string scene, output, method = "gouraud", device, size, report, units, arith = "float", division = "constant",
               coverage = "centre", specular = "exact", normalize = "exact", triangle_choice;
   int frames = 5, warmup = 1, tile = TILE_DEFAULT, work_items = 0;
+  // Triangle records a frame may hold at once before it streams in bands (MiB); 0: never streams.
+  int band_mib = int(RenderOptions::kBandRecordBytes >> 20);
   double max_error = 0;  // 0: not given
   int combined_min_width = -1;
   bool float_output = false, no_error = false, quiet = false, highlight_test = false;
@@ -231,6 +233,7 @@ int run_render(const RenderArgs& a) {
   options.float_output = a.float_output;
   options.tile_size = a.tile;
   options.work_items = a.work_items;
+  options.band_record_bytes = a.band_mib == 0 ? SIZE_MAX : std::size_t(a.band_mib) << 20;
   if (method == Method::combined) options.combined = parse_combined(a.method);
   options.combined.highlight_test = a.highlight_test;
   if (a.combined_min_width != -1) {
@@ -381,6 +384,7 @@ int run_render(const RenderArgs& a) {
       {"width", scene.width},
       {"height", scene.height},
       {"tile_size", options.tile_size},
+      {"band_mib", a.band_mib},
       {"tuned", tuned},
       {"work_items", renderer.work_items(frame.stats.tiles)},
       {"triangles", {{"in", frame.stats.geometry.triangles_in},
@@ -531,6 +535,11 @@ Command add_render_command(CLI::App& app) {
                   "Kernel work-items, each rendering every N-th tile (0: " + std::to_string(WORK_ITEMS_PER_COMPUTE_UNIT) +
                       " per compute unit)")
       ->capture_default_str();
+  cmd->add_option("--band-mib", a->band_mib,
+                  "A frame whose triangle records would exceed this many MiB is set up, binned and shaded in bands "
+                  "of tile rows, which bounds its memory (0: never; the image is the same either way)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1 << 20));
   cmd->add_option("--units", a->units,
                   "Shade the spans through a modeled shading unit (Gouraud's intensities, or Phong's normal "
                   "components with --method phong): " + unit_specs_help() + "; reports modeled clocks");

@@ -1,0 +1,62 @@
+// `render --band-mib N`: a frame whose triangle records would exceed N MiB is prepared and shaded in bands
+// of tile rows (bench/README.md, "Peak memory: streamed bands"); 0 never streams. The image is the same
+// either way; the report says how many bands the frame took and the budget; bad values are refused.
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "cli_fixture.hpp"
+
+namespace parashade {
+namespace {
+
+using namespace testing_support;
+
+std::string bytes_of(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// 640x360, a 256 x 128 sphere: ~21 000 screen triangles after culling, ~3 MiB of Gouraud records.
+std::string many_triangles_scene() {
+  return R"({
+  "name": "fine ball",
+  "resolution": [640, 360],
+  "camera": {"position": [0, 0, 3], "target": [0, 0, 0], "fov": 45},
+  "lights": [{"type": "directional", "direction": [-0.3, -0.4, -1]}],
+  "objects": [{"shape": {"type": "sphere", "slices": 256, "stacks": 128}}],
+  "cull_backfaces": true
+})";
+}
+
+class CliBandMib : public CliTest {};
+
+TEST_F(CliBandMib, StreamsBelowTheBudgetWithTheSameImage) {
+  const auto scene = input("fine.json", many_triangles_scene());
+  ASSERT_TRUE(succeeds(render(scene, {"--band-mib", "0"})));
+  const std::string whole = bytes_of(image());
+  const nlohmann::json never = read_report();
+  EXPECT_EQ(never["band_mib"], 0);
+  EXPECT_EQ(never["stats"]["bands"], 1);
+  ASSERT_TRUE(succeeds(render(scene, {"--band-mib", "1"})));
+  const nlohmann::json banded = read_report();
+  EXPECT_EQ(banded["band_mib"], 1);
+  EXPECT_GT(banded["stats"]["bands"].get<int>(), 1) << "a 1 MiB budget should cut ~3 MiB of records into bands";
+  EXPECT_EQ(bytes_of(image()), whole) << "the banded frame differs from the whole one";
+  ASSERT_TRUE(succeeds(render(scene)));
+  EXPECT_EQ(read_report()["stats"]["bands"], 1) << "the default budget (16 MiB) streams this small frame";
+}
+
+TEST_F(CliBandMib, BadValuesAreRefused) {
+  const auto scene = input("ball.json", sphere_scene());
+  for (const char* bad : {"-1", "many", "2000000"}) {
+    EXPECT_TRUE(fails_with(render(scene, {"--band-mib", bad}), kUsage, {"--band-mib"})) << bad;
+    EXPECT_TRUE(nothing_written()) << bad;
+  }
+}
+
+}  // namespace
+}  // namespace parashade
