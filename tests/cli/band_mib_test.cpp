@@ -15,11 +15,6 @@ namespace {
 
 using namespace testing_support;
 
-std::string bytes_of(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 // 640x360, a 256 x 128 sphere: ~21 000 screen triangles after culling, ~3 MiB of Gouraud records.
 std::string many_triangles_scene() {
   return R"({

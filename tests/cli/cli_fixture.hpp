@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <iterator>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,6 +45,12 @@ inline std::string tetrahedron_obj() {
   return "# regular tetrahedron\n"
          "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\n"
          "f 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n";
+}
+
+// A file's whole contents (an image compared byte for byte).
+inline std::string bytes_of(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 class CliTest : public ::testing::Test {

@@ -12,11 +12,6 @@ namespace {
 
 using namespace testing_support;
 
-std::string bytes_of(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 class PlannerCli : public CliTest {};
 
 TEST_F(PlannerCli, RenderWithUnitsReportsTheLoadAndKeepsTheImage) {
