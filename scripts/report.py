@@ -293,7 +293,7 @@ def throughput_table(rows):
     return "\n".join(lines)
 
 
-def memory_table(memory, rows, baseline):
+def memory_table(memory, baseline):
     lines = ["| scene | size | method | peak RSS MiB (whole `parashade render`) | above the OpenCL runtime's MiB | "
              "budget MiB | within |",
              "|---|---|---|---|---|---|---|"]
@@ -302,9 +302,6 @@ def memory_table(memory, rows, baseline):
         method = m.get("method", "gouraud")
         over = m.get("over_baseline_mib")
         budget = m.get("budget_mib")
-        if budget is None:  # older memory files: the budget from the benchmark row
-            b = find(rows, peer="parashade", scene=m["scene"], size=size, method="gouraud")
-            budget = b["memory_budget_mib"] if b else None
         if over is None or budget is None:
             lines.append(f"| {m['scene']} | {size} | {method} | {m['peak_rss_mib']:.1f} | - | - | - |")
             continue
@@ -347,7 +344,7 @@ def main():
                "## Pixel throughput (large triangles) and triangle throughput (small triangles)", "",
                throughput_table(rows), ""]
     if res["memory"]:
-        md += ["## Peak memory", "", memory_table(res["memory"], rows, res.get("memory_baseline")), ""]
+        md += ["## Peak memory", "", memory_table(res["memory"], res.get("memory_baseline")), ""]
     sizes = sorted({r["size"] for r in rows if r["peer"] == "llvmpipe"}, key=lambda s: int(s.split("x")[0]))
     scenes = sorted({r["scene"] for r in rows if r["peer"] == "llvmpipe"})
     plots = []

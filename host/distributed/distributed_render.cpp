@@ -8,7 +8,7 @@
 #include <memory>
 #include <numeric>
 
-#include "key_pixel.hpp"
+#include "composite.hpp"
 #include "mpi_session.hpp"
 #include "scene_bytes.hpp"
 #include "parashade/device.hpp"
@@ -303,6 +303,7 @@ int run(MpiSession& mpi, const DistributedRender& job) {
   MPI_Op min_op;
   MPI_Op_create(min_key_for(pixel_bytes), 1, &min_op);
   const std::size_t block = (pixels + n - 1) / n;
+  const CompositeBlocks blocks{block, pixel_bytes, pixel_type, mpi.comm, rank, n};
   // Pixels of pixel_bytes each: what a rank sends (every block), what it receives (every rank's copy of
   // its block), and rank 0's composited frame.
   std::vector<char> send, received(sort_last ? block * n * pixel_bytes : 0), all;
@@ -394,16 +395,10 @@ int run(MpiSession& mpi, const DistributedRender& job) {
       // imbalance, not compositing).
       MPI_Barrier(mpi.comm);
       t_comp = now_ms();
-      // A reduce-scatter as MPI_Alltoall (each rank gets every rank's copy of its block) and the operator
-      // applied locally with MPI_Reduce_local: the bytes of a ring reduce-scatter, and 3-4x faster here than
-      // Open MPI's MPI_Reduce_scatter_block with a user-defined operator (parashade_mpi_composite_probe,
-      // docs/distributed.md). The operator is a minimum over (key, rank), so the order does not matter.
-      MPI_Alltoall(send.data(), int(block), pixel_type, received.data(), int(block), pixel_type, mpi.comm);
-      char* mine = received.data() + std::size_t(rank) * block * pixel_bytes;
-      for (int r = 0; r < n; ++r)
-        if (r != rank)
-          MPI_Reduce_local(received.data() + std::size_t(r) * block * pixel_bytes, mine, int(block), pixel_type,
-                           min_op);
+      // The reduce-scatter (composite.hpp), then this rank's composited block to rank 0.
+      exchange_blocks(blocks, send, received);
+      reduce_received(blocks, received, min_op);
+      const char* mine = blocks.own(received);
       if (rank == 0) all.resize(block * n * pixel_bytes);
       const double t_gather = now_ms();
       MPI_Gather(mine, int(block), pixel_type, all.data(), int(block), pixel_type, 0, mpi.comm);

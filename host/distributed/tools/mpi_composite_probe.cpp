@@ -19,8 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "../key_pixel.hpp"
+#include "../composite.hpp"
 
+using parashade::distributed::CompositeBlocks;
 using parashade::distributed::KeyPixel;
 using parashade::distributed::kFloatPixelBytes;
 using parashade::distributed::min_key_for;
@@ -91,14 +92,10 @@ int main(int argc, char** argv) {
   std::vector<char> send(all_pixels * bytes), mine(block * bytes), received(all_pixels * bytes),
       gathered(rank == 0 ? all_pixels * bytes : 0);
   fill(send, all_pixels, bytes, rank);
-  char* own = received.data() + std::size_t(rank) * block * bytes;  // this rank's block, composited in place
-  const auto reduce_local = [&] {
-    for (int r = 0; r < n; ++r)
-      if (r != rank) MPI_Reduce_local(received.data() + std::size_t(r) * block * bytes, own, int(block), type, op);
-  };
-  const auto alltoall = [&] {
-    MPI_Alltoall(send.data(), int(block), type, received.data(), int(block), type, MPI_COMM_WORLD);
-  };
+  const CompositeBlocks blocks{block, bytes, type, MPI_COMM_WORLD, rank, n};
+  const char* own = blocks.own(received);  // this rank's block, composited in place
+  const auto reduce_local = [&] { parashade::distributed::reduce_received(blocks, received, op); };
+  const auto alltoall = [&] { parashade::distributed::exchange_blocks(blocks, send, received); };
 
   const double alltoall_ms = timed_ms(reps, alltoall);
   // Again on the same received blocks: the operator is branchless, so a repetition costs the same.

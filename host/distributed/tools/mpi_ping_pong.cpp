@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "../key_pixel.hpp"
+#include "../composite.hpp"
 
 using parashade::distributed::KeyPixel;
 using parashade::distributed::min_key_for;
