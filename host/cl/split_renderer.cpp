@@ -50,6 +50,7 @@ SplitRenderer::SplitRenderer(std::vector<std::unique_ptr<Device>> devices, Rende
   if (options_.float_output) throw UsageError("float read-back does not combine with a device list yet");
   speed_.assign(devices_.size(), 0.0);
   dropped_.assign(devices_.size(), "");
+  renderers_.resize(devices_.size());
 }
 
 const Frame& SplitRenderer::render(const Scene& scene, std::string* warning) {
@@ -99,11 +100,16 @@ const Frame& SplitRenderer::render(const Scene& scene, std::string* warning) {
     threads.emplace_back([&, i] {
       try {
         const auto t0 = std::chrono::steady_clock::now();
-        RenderOptions o = options_;
-        o.band_first = shares_[i].first_row;
-        o.band_rows = shares_[i].rows;
-        Renderer r(*devices_[i], o);
-        const Frame& f = r.render(scene);
+        std::unique_ptr<Renderer>& r = renderers_[i];
+        if (r) {
+          r->set_band(shares_[i].first_row, shares_[i].rows);
+        } else {
+          RenderOptions o = options_;
+          o.band_first = shares_[i].first_row;
+          o.band_rows = shares_[i].rows;
+          r = std::make_unique<Renderer>(*devices_[i], o);
+        }
+        const Frame& f = r->render(scene);
         const int y0 = shares_[i].first_row * tile, y1 = std::min(scene.height, (shares_[i].first_row + shares_[i].rows) * tile);
         const std::size_t pitch = std::size_t(scene.width) * 4;
         std::memcpy(&img.rgba[std::size_t(y0) * pitch], &f.image.rgba[std::size_t(y0) * pitch], std::size_t(y1 - y0) * pitch);
@@ -125,6 +131,7 @@ const Frame& SplitRenderer::render(const Scene& scene, std::string* warning) {
       if (!keep_going_) throw DeviceError("device '" + devices_[i]->info().name + "' failed: " + e.what());
       if (warning) *warning += "device '" + devices_[i]->info().name + "' failed (" + e.what() + "); continuing on the others\n";
       dropped_[i] = *e.what() ? e.what() : "failed";
+      renderers_[i].reset();
       failed = true;
     }
   }

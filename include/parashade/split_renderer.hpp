@@ -34,6 +34,9 @@ class SplitRenderer {
 
  private:
   std::vector<std::unique_ptr<Device>> devices_;
+  // One renderer per device, kept across frames (its band moved by set_band): a new one each frame would
+  // allocate and map its buffers again. Declared after devices_, so destroyed before them.
+  std::vector<std::unique_ptr<Renderer>> renderers_;
   RenderOptions options_;
   bool keep_going_;
   std::vector<double> speed_;  // tile rows per kernel ms in the last frame; 0: not measured yet
