@@ -46,8 +46,8 @@ std::vector<std::string> kernel_files(const KernelVariant& v) {
 }
 
 bool KernelVariant::stamps_apply() const {
-  return stamps && method == Method::phong && !unit_path && !combined && !span_normalize && plan_pass == 0 &&
-         !float_output;
+  return stamps && (method == Method::phong || method == Method::gouraud) && !unit_path && !combined &&
+         !span_normalize && plan_pass == 0 && !float_output;
 }
 
 std::string KernelVariant::build_options() const {

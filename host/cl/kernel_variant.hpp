@@ -35,7 +35,7 @@ struct KernelVariant {
   bool stamps = false;  // asked for; used where the kernel has them (stamps_apply)
 
   // 4x4 stamps: the plain path only (no unit, combined method, per-span normalization, plan or float
-  // read-back), and only for Phong, where they pay (docs/pipeline.md).
+  // read-back), for Phong and Gouraud, where they pay (docs/pipeline.md); flat stays on row segments.
   bool stamps_apply() const;
 
   std::string build_options() const;

@@ -2,7 +2,7 @@
 // records, computed on the host from their integer edge functions (planner.hpp's for_each_span): the same
 // pixels, however a tile's spans are found (the span search, a block the triangle covers whole, small
 // triangles' per-pixel tests, row segments or stamps). Large random triangles reaching past the frame,
-// small ones, tiles 16, 32 and 64, Gouraud (row segments) and Phong (stamps).
+// small ones, tiles 16, 32 and 64, Gouraud on row segments (RenderOptions::stamps off) and Phong on stamps.
 #include <random>
 #include <vector>
 
@@ -37,7 +37,9 @@ void expect_exact_coverage(const Scene& scene, const char* what) {
   for (Method method : {Method::gouraud, Method::phong}) {
     const std::vector<char> exact = exact_coverage(scene, method);
     for (int tile : {16, 32, 64}) {
-      Renderer renderer(test_device(), render_options(method, false, tile));
+      RenderOptions options = render_options(method, false, tile);
+      options.stamps = method == Method::phong;  // both layouts: Gouraud's row segments, Phong's stamps
+      Renderer renderer(test_device(), options);
       const RenderedImage& image = renderer.render(scene).image;
       std::size_t differ = 0, covered = 0;
       for (std::size_t p = 0; p < exact.size(); ++p) {

@@ -1,5 +1,6 @@
-// The kernel's 4x4 stamps (RenderOptions::stamps, Phong's plain path) against its 1x16 row segments: the
-// same pixels are covered and shaded with the same operations, so the images must be byte-identical.
+// The kernel's 4x4 stamps (RenderOptions::stamps, the plain path of Phong and Gouraud) against its 1x16 row
+// segments: the same pixels are covered and shaded with the same operations, so the images must be
+// byte-identical, for both methods.
 // The scenes cover what the stamp walk treats apart: small triangles (per-pixel edge tests) and large
 // ones (row spans), tiles of 16, 32 and 64, a frame whose width and height are not multiples of the
 // stamp or the tile, slivers, a fan, near-plane clipping, point lights and a local viewer. (Each scene
@@ -19,8 +20,8 @@ namespace {
 
 using namespace testing_support;
 
-std::vector<std::uint8_t> render_rgba(const Scene& scene, bool stamps, int tile) {
-  RenderOptions o = render_options(Method::phong, false, tile);
+std::vector<std::uint8_t> render_rgba(const Scene& scene, Method method, bool stamps, int tile) {
+  RenderOptions o = render_options(method, false, tile);
   o.stamps = stamps;
   Renderer renderer(test_device(), o);
   const auto& rgba = renderer.render(scene).image.rgba;
@@ -28,20 +29,23 @@ std::vector<std::uint8_t> render_rgba(const Scene& scene, bool stamps, int tile)
 }
 
 void expect_same_image(const Scene& scene, const std::string& what, std::initializer_list<int> tiles = {16}) {
-  for (int tile : tiles) {
-    const auto rows = render_rgba(scene, false, tile), stamps = render_rgba(scene, true, tile);
-    ASSERT_EQ(rows.size(), stamps.size());
-    std::size_t covered = 0;
-    for (std::size_t i = 3; i < rows.size(); i += 4) covered += rows[i] != 0;
-    EXPECT_GT(covered, 0u) << what << ": nothing drawn, nothing compared";
-    std::size_t differ = 0, first = rows.size();
-    for (std::size_t i = 0; i < rows.size(); ++i)
-      if (rows[i] != stamps[i]) {
-        ++differ;
-        first = std::min(first, i);
-      }
-    EXPECT_EQ(differ, 0u) << what << ", tile " << tile << ": first differing byte at pixel " << first / 4 << " (x "
-                          << (first / 4) % scene.width << ", y " << (first / 4) / scene.width << ")";
+  for (Method method : {Method::phong, Method::gouraud}) {
+    for (int tile : tiles) {
+      const auto rows = render_rgba(scene, method, false, tile), stamps = render_rgba(scene, method, true, tile);
+      ASSERT_EQ(rows.size(), stamps.size());
+      std::size_t covered = 0;
+      for (std::size_t i = 3; i < rows.size(); i += 4) covered += rows[i] != 0;
+      EXPECT_GT(covered, 0u) << what << ": nothing drawn, nothing compared";
+      std::size_t differ = 0, first = rows.size();
+      for (std::size_t i = 0; i < rows.size(); ++i)
+        if (rows[i] != stamps[i]) {
+          ++differ;
+          first = std::min(first, i);
+        }
+      EXPECT_EQ(differ, 0u) << what << ", " << method_name(method) << ", tile " << tile
+                            << ": first differing byte at pixel " << first / 4 << " (x " << (first / 4) % scene.width
+                            << ", y " << (first / 4) / scene.width << ")";
+    }
   }
 }
 
