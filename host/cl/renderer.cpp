@@ -83,13 +83,58 @@ cl::Buffer& Renderer::ensure(cl::Buffer& buffer, std::size_t& capacity, std::siz
 // Every blocking OpenCL call costs a round trip to the device's threads (~60 us on PoCL here), so the
 // input buffers are mapped together: the tile list at its current capacity, since binning's size is
 // known only later (it is mapped again in the rare frame it must grow).
+void Renderer::premap_records() {
+  if (!premapped_.empty() || tris_cap_ == 0) return;  // mapped already, or no frame yet to size them
+  cl::CommandQueue& q = device_.queue();
+  premapped_.resize(3);
+  mapped_ = FrameRecords{};
+  mapped_.triangles = static_cast<TriangleGeometry*>(
+      q.enqueueMapBuffer(tris_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, tris_cap_, nullptr, &premapped_[0]));
+  mapped_.attributes = static_cast<float*>(
+      q.enqueueMapBuffer(attrs_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, attrs_cap_, nullptr, &premapped_[1]));
+  list_mapped_bytes_ = list_cap_;
+  mapped_list_ = static_cast<std::uint32_t*>(
+      q.enqueueMapBuffer(tile_tris_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, list_cap_, nullptr, &premapped_[2]));
+}
+
+void Renderer::unmap_premapped() {
+  if (premapped_.empty()) return;
+  cl::CommandQueue& q = device_.queue();
+  q.enqueueUnmapMemObject(tris_, mapped_.triangles);
+  q.enqueueUnmapMemObject(attrs_, mapped_.attributes);
+  q.enqueueUnmapMemObject(tile_tris_, mapped_list_);
+  mapped_ = FrameRecords{};
+  mapped_list_ = nullptr;
+  premapped_.clear();
+}
+
 FrameRecords Renderer::records(std::size_t n, std::size_t attribute_floats, bool fixed, bool leaves) {
   cl::CommandQueue& q = device_.queue();
   const std::size_t tri_bytes = std::max<std::size_t>(64, n * sizeof(TriangleGeometry));
   const std::size_t attr_bytes = std::max<std::size_t>(64, n * attribute_floats * sizeof(float));
+  const std::size_t list_bytes = std::max<std::size_t>(64, 2 * n * sizeof(std::uint32_t));
+  if (!premapped_.empty() && (tri_bytes > tris_cap_ || attr_bytes > attrs_cap_ || list_bytes > list_cap_))
+    unmap_premapped();  // too small for this frame: grown and mapped below
+  if (!premapped_.empty()) {
+    std::vector<cl::Event> mapped;
+    mapped.swap(premapped_);
+    if (fixed) {
+      const std::size_t fixed_bytes = std::max<std::size_t>(64, n * sizeof(FixedPlanes));
+      ensure(fixed_, fixed_cap_, fixed_bytes, CL_MEM_READ_ONLY);
+      mapped_.fixed = static_cast<FixedPlanes*>(
+          q.enqueueMapBuffer(fixed_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, fixed_bytes, nullptr, &mapped.emplace_back()));
+    }
+    const std::size_t leaf_bytes = std::max<std::size_t>(64, (leaves ? n : 0) * sizeof(SierpinskiLeaf));
+    ensure(leaves_, leaves_cap_, leaf_bytes, CL_MEM_READ_ONLY);
+    if (leaves)
+      mapped_.leaves = static_cast<SierpinskiLeaf*>(
+          q.enqueueMapBuffer(leaves_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, leaf_bytes, nullptr, &mapped.emplace_back()));
+    cl::Event::waitForEvents(mapped);
+    return mapped_;
+  }
   ensure(tris_, tris_cap_, tri_bytes, CL_MEM_READ_ONLY);
   ensure(attrs_, attrs_cap_, attr_bytes, CL_MEM_READ_ONLY);
-  ensure(tile_tris_, list_cap_, std::max<std::size_t>(64, 2 * n * sizeof(std::uint32_t)), CL_MEM_READ_ONLY);
+  ensure(tile_tris_, list_cap_, list_bytes, CL_MEM_READ_ONLY);
   std::vector<cl::Event> mapped(3);
   mapped_ = FrameRecords{};
   mapped_.triangles = static_cast<TriangleGeometry*>(
@@ -174,6 +219,7 @@ int Renderer::work_items(int tiles) const {
 Renderer::~Renderer() {
   try {
     release_frame();
+    unmap_premapped();
     device_.queue().finish();
     for (Device* d : unit_devices_) d->queue().finish();
   } catch (...) {  // nothing sensible to do while tearing down
@@ -195,6 +241,7 @@ const Frame& Renderer::render(const Scene& scene) {
   try {
     release_frame();  // the previous frame's image stays mapped until now
     const auto frame_start = Clock::now();
+    premap_records();
     double upload_ms = 0;
     // A large frame streams: band after band, its records are set up, binned and shaded (the next band's
     // map waits for the kernel that reads the records it overwrites).
@@ -270,6 +317,7 @@ const Frame& Renderer::render(const Scene& scene) {
                              &done);
       if (b + 1 == bands) break;
       band_done.push_back(done);
+      premap_records();  // mapped when this band's kernel ends (the queue is in order)
       done.wait();  // the next band's map would wait for it too; this keeps the wait out of its setup time
       band_launch_ms += ms_since(t0);
       band = &prepare_band(scene, b + 1, &upload_ms);

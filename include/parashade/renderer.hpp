@@ -70,6 +70,11 @@ class Renderer : private FrameStorage {
  private:
   // FrameStorage: the record buffers and the tile list, mapped for the host stages (one round trip).
   FrameRecords records(std::size_t n, std::size_t attribute_floats, bool fixed, bool leaves) override;
+  // Maps the triangle records, their attributes and the tile list at their capacity now, without waiting,
+  // so the map's round trip to the device's threads overlaps the host stages; records() then waits for
+  // it, or maps again in the rare frame that needs more room.
+  void premap_records();
+  void unmap_premapped();
   std::uint32_t* tile_list(std::size_t entries) override;
   // The host stages into the mapped buffers, then their unmaps and the bins' and row table's uploads
   // (these last take `upload_ms`).
@@ -102,6 +107,7 @@ class Renderer : private FrameStorage {
   FrameRecords mapped_;
   std::uint32_t* mapped_list_ = nullptr;
   std::size_t list_mapped_bytes_ = 0;
+  std::vector<cl::Event> premapped_;  // premap_records()'s maps, until records() takes them
   cl::Buffer tris_, attrs_, tile_start_, tile_tris_, lights_, materials_, out_rgba_, out_float_, counts_, fixed_,
       tile_counters_, leaves_, dda_first_, dda_rows_;
   cl::Buffer keys_, plan_packets_, plan_vtiles_, plan_starts_, plan_list_, plan_counter_;
