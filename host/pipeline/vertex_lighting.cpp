@@ -64,13 +64,9 @@ PARASHADE_LANE Floats splat(float v) {
   return r;
 }
 
-PARASHADE_LANE Floats sqrt_lanes(Floats v) {
-#if defined(__SSE__) && !defined(__clang__)
-  return __builtin_ia32_sqrtps(v);  // correctly rounded, as std::sqrt(float)
-#else
+PARASHADE_LANE Floats sqrt_lanes(Floats v) {  // correctly rounded lane by lane, as std::sqrt(float)
   for (int k = 0; k < VertexLighting::kLanes; ++k) v[k] = std::sqrt(v[k]);
   return v;
-#endif
 }
 
 PARASHADE_LANE Floats select(Mask m, Floats yes, Floats no) { return Floats((m & Mask(yes)) | (~m & Mask(no))); }
@@ -96,8 +92,12 @@ PARASHADE_LANE void add_where(Mask m, Vec3s& out, glm::vec3 ik, Floats s) {
 }  // namespace
 
 // shade() with its branches as lane masks: a lane adds a term exactly when shade() would.
-void VertexLighting::shade_lanes(std::uint32_t material, const glm::vec3* p_in, const glm::vec3* n_in,
-                                 glm::vec3* out_colour) const {
+// Two builds chosen at load time: AVX2's 8-float registers hold the lanes whole (no FMA either way: the
+// same bits).
+__attribute__((target_clones("avx2", "default"))) void VertexLighting::shade_lanes(std::uint32_t material,
+                                                                                 const glm::vec3* p_in,
+                                                                                 const glm::vec3* n_in,
+                                                                                 glm::vec3* out_colour) const {
   const PreparedMaterial& m = materials_[material];
   Vec3s p, n;
   for (int k = 0; k < kLanes; ++k) {

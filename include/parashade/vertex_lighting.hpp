@@ -17,7 +17,7 @@ class VertexLighting {
   glm::vec3 shade(std::uint32_t material, glm::vec3 p, glm::vec3 n) const;
   // shade() of kLanes vertices at once, as vectors of kLanes floats: lane for lane the same IEEE single
   // operations in the same order (no contraction), so the same bits as kLanes calls of shade().
-  static constexpr int kLanes = 4;
+  static constexpr int kLanes = 8;
   void shade_lanes(std::uint32_t material, const glm::vec3* p, const glm::vec3* n, glm::vec3* out) const;
 
  private:
