@@ -25,14 +25,19 @@
 namespace parashade {
 namespace {
 
-void host_stages(benchmark::State& state, const std::string& scene_name, Method method) {
-  const Scene* scene = nullptr;
+// The scene at 1920x1080, or nullptr with the benchmark skipped (a mesh that cannot be read).
+const Scene* scene_or_skip(benchmark::State& state, const std::string& scene_name) {
   try {
-    scene = &bench::scene_named(scene_name, 1920, 1080);
+    return &bench::scene_named(scene_name, 1920, 1080);
   } catch (const std::exception& e) {
     state.SkipWithError(e.what());
-    return;
+    return nullptr;
   }
+}
+
+void host_stages(benchmark::State& state, const std::string& scene_name, Method method) {
+  const Scene* scene = scene_or_skip(state, scene_name);
+  if (!scene) return;
   FramePipeline pipeline;
   FrameConfig config;
   config.method = method;
@@ -52,13 +57,8 @@ void host_stages(benchmark::State& state, const std::string& scene_name, Method 
 }
 
 void host_floor(benchmark::State& state, const std::string& scene_name) {
-  const Scene* scene = nullptr;
-  try {
-    scene = &bench::scene_named(scene_name, 1920, 1080);
-  } catch (const std::exception& e) {
-    state.SkipWithError(e.what());
-    return;
-  }
+  const Scene* scene = scene_or_skip(state, scene_name);
+  if (!scene) return;
   const glm::mat4 vp = view_projection(*scene);
   std::size_t vertices = 0;
   for (const Object& o : scene->objects) vertices += o.mesh->positions.size();

@@ -83,18 +83,22 @@ cl::Buffer& Renderer::ensure(cl::Buffer& buffer, std::size_t& capacity, std::siz
 // Every blocking OpenCL call costs a round trip to the device's threads (~60 us on PoCL here), so the
 // input buffers are mapped together: the tile list at its current capacity, since binning's size is
 // known only later (it is mapped again in the rare frame it must grow).
-void Renderer::premap_records() {
-  if (!premapped_.empty() || tris_cap_ == 0) return;  // mapped already, or no frame yet to size them
+void Renderer::enqueue_record_maps(std::size_t tri_bytes, std::size_t attr_bytes, std::vector<cl::Event>& events) {
   cl::CommandQueue& q = device_.queue();
-  premapped_.resize(3);
+  events.resize(3);
   mapped_ = FrameRecords{};
   mapped_.triangles = static_cast<TriangleGeometry*>(
-      q.enqueueMapBuffer(tris_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, tris_cap_, nullptr, &premapped_[0]));
+      q.enqueueMapBuffer(tris_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, tri_bytes, nullptr, &events[0]));
   mapped_.attributes = static_cast<float*>(
-      q.enqueueMapBuffer(attrs_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, attrs_cap_, nullptr, &premapped_[1]));
+      q.enqueueMapBuffer(attrs_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, attr_bytes, nullptr, &events[1]));
   list_mapped_bytes_ = list_cap_;
   mapped_list_ = static_cast<std::uint32_t*>(
-      q.enqueueMapBuffer(tile_tris_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, list_cap_, nullptr, &premapped_[2]));
+      q.enqueueMapBuffer(tile_tris_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, list_mapped_bytes_, nullptr, &events[2]));
+}
+
+void Renderer::premap_records() {
+  if (!premapped_.empty() || tris_cap_ == 0) return;  // mapped already, or no frame yet to size them
+  enqueue_record_maps(tris_cap_, attrs_cap_, premapped_);
 }
 
 void Renderer::unmap_premapped() {
@@ -115,35 +119,15 @@ FrameRecords Renderer::records(std::size_t n, std::size_t attribute_floats, bool
   const std::size_t list_bytes = std::max<std::size_t>(64, 2 * n * sizeof(std::uint32_t));
   if (!premapped_.empty() && (tri_bytes > tris_cap_ || attr_bytes > attrs_cap_ || list_bytes > list_cap_))
     unmap_premapped();  // too small for this frame: grown and mapped below
+  std::vector<cl::Event> mapped;
   if (!premapped_.empty()) {
-    std::vector<cl::Event> mapped;
     mapped.swap(premapped_);
-    if (fixed) {
-      const std::size_t fixed_bytes = std::max<std::size_t>(64, n * sizeof(FixedPlanes));
-      ensure(fixed_, fixed_cap_, fixed_bytes, CL_MEM_READ_ONLY);
-      mapped_.fixed = static_cast<FixedPlanes*>(
-          q.enqueueMapBuffer(fixed_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, fixed_bytes, nullptr, &mapped.emplace_back()));
-    }
-    const std::size_t leaf_bytes = std::max<std::size_t>(64, (leaves ? n : 0) * sizeof(SierpinskiLeaf));
-    ensure(leaves_, leaves_cap_, leaf_bytes, CL_MEM_READ_ONLY);
-    if (leaves)
-      mapped_.leaves = static_cast<SierpinskiLeaf*>(
-          q.enqueueMapBuffer(leaves_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, leaf_bytes, nullptr, &mapped.emplace_back()));
-    cl::Event::waitForEvents(mapped);
-    return mapped_;
+  } else {
+    ensure(tris_, tris_cap_, tri_bytes, CL_MEM_READ_ONLY);
+    ensure(attrs_, attrs_cap_, attr_bytes, CL_MEM_READ_ONLY);
+    ensure(tile_tris_, list_cap_, list_bytes, CL_MEM_READ_ONLY);
+    enqueue_record_maps(tri_bytes, attr_bytes, mapped);
   }
-  ensure(tris_, tris_cap_, tri_bytes, CL_MEM_READ_ONLY);
-  ensure(attrs_, attrs_cap_, attr_bytes, CL_MEM_READ_ONLY);
-  ensure(tile_tris_, list_cap_, list_bytes, CL_MEM_READ_ONLY);
-  std::vector<cl::Event> mapped(3);
-  mapped_ = FrameRecords{};
-  mapped_.triangles = static_cast<TriangleGeometry*>(
-      q.enqueueMapBuffer(tris_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, tri_bytes, nullptr, &mapped[0]));
-  mapped_.attributes = static_cast<float*>(
-      q.enqueueMapBuffer(attrs_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, attr_bytes, nullptr, &mapped[1]));
-  list_mapped_bytes_ = list_cap_;
-  mapped_list_ = static_cast<std::uint32_t*>(
-      q.enqueueMapBuffer(tile_tris_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, list_mapped_bytes_, nullptr, &mapped[2]));
   if (fixed) {
     const std::size_t fixed_bytes = std::max<std::size_t>(64, n * sizeof(FixedPlanes));
     ensure(fixed_, fixed_cap_, fixed_bytes, CL_MEM_READ_ONLY);

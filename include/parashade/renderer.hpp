@@ -75,6 +75,8 @@ class Renderer : private FrameStorage {
   // it, or maps again in the rare frame that needs more room.
   void premap_records();
   void unmap_premapped();
+  // The records (tri_bytes), attributes (attr_bytes) and the whole tile list mapped for writing, not waited for.
+  void enqueue_record_maps(std::size_t tri_bytes, std::size_t attr_bytes, std::vector<cl::Event>& events);
   std::uint32_t* tile_list(std::size_t entries) override;
   // The host stages into the mapped buffers, then their unmaps and the bins' and row table's uploads
   // (these last take `upload_ms`).
