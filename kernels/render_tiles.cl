@@ -141,21 +141,106 @@ INLINE void shade_segment(__global const TriangleGeometry* t, __global const flo
 }
 #endif
 
+#ifndef DEFER_STAMPS
+#define DEFER_STAMPS 0
+#endif
+#if DEFER_STAMPS
+/* Deferred stamps (Phong): in a tile of at least DEFER_MIN_TRIANGLES triangles the walk only keeps, per pixel,
+ * the record of the triangle that passed its depth test last (winner), and each pixel is shaded once after
+ * the walk by that triangle: what the walk would have kept, without shading the pixels overwritten later or
+ * a stamp's uncovered lanes once per triangle. */
+#define DEFER_DECL , uint ti, intV* winner, int deferred
+#define DEFER_ARGS , ti, winner, deferred
+#else
+#define DEFER_DECL
+#define DEFER_ARGS
+#endif
+
 #if STAMPS
 /* One stamp: columns rel (from the triangle's x0) and rows dy (from its y0) per lane; depth test, shade,
  * keep. The same operations per pixel as shade_segment's, so the same values. */
 INLINE void shade_stamp(__global const TriangleGeometry* t, __global const float* attr, intV dy, intV rel, intV inside,
                         int slot, floatV* depth, floatV* cr, floatV* cg, floatV* cb, __constant float4* lights,
-                        __constant float4* materials, float4 viewer) {
+                        __constant float4* materials, float4 viewer DEFER_DECL) {
   const floatV frel = convert_floatV(rel), fdy = convert_floatV(dy);
   const floatV z = (t->z_ref + t->z_ddy * fdy) + t->z_ddx * frel;
   const intV pass = inside & isless(z, depth[slot]);
   if (!any_lanes(pass)) return;
   depth[slot] = select(depth[slot], z, pass);
+#if DEFER_STAMPS
+  if (deferred) {
+    winner[slot] = select(winner[slot], (intV)(int)ti, pass);
+    return;
+  }
+#endif
   floatV sr, sg, sb;
   shade_pixels_at(attr, fdy, frel, &sr, &sg, &sb, lights, materials, viewer);
   keep(pass, sr, sg, sb, &cr[slot], &cg[slot], &cb[slot]);
 }
+
+#if DEFER_STAMPS
+/* The deferred tile's pixels, a stamp at a time, each by its winner. A stamp whose pixels share one winner is
+ * shaded from that triangle's planes as the walk would; otherwise each lane's planes are gathered from its
+ * own triangle (lanes without a winner repeat a covered lane's and are not kept), one shading for the stamp,
+ * or, when the winners' materials differ, one per winner. */
+#define DEFER_PLANE_FLOATS 18 /* the normal and position planes: slots 0..17 */
+INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb, __global const TriangleGeometry* tris,
+                          __global const float* attrs, int tile_x, int tile_y, __constant float4* lights,
+                          __constant float4* materials, float4 viewer) {
+  for (int i = 0; i < TILE_VECTORS; ++i) {
+    const intV won = winner[i] >= 0;
+    if (!any_lanes(won)) continue;
+    int ids[VEC];
+    vstoreV(winner[i], 0, ids);
+    const int x = tile_x + (i % STAMPS_X) * STAMP, y = tile_y + (i / STAMPS_X) * STAMP;
+    int first = -1, mixed = 0;
+    for (int l = 0; l < VEC; ++l) {
+      if (ids[l] < 0) continue;
+      if (first < 0) first = ids[l];
+      mixed |= ids[l] != first;
+    }
+    floatV sr, sg, sb;
+    if (!mixed) {
+      __global const TriangleGeometry* t = &tris[first];
+      shade_pixels_at(attrs + (size_t)first * ATTR_FLOATS, convert_floatV(STAMP_ROW + (y - t->y0)),
+                      convert_floatV(STAMP_COLUMN + (x - t->x0)), &sr, &sg, &sb, lights, materials, viewer);
+      keep(won, sr, sg, sb, &cr[i], &cg[i], &cb[i]);
+      continue;
+    }
+    float planes[DEFER_PLANE_FLOATS][VEC];
+    int dy[VEC], rel[VEC], material = -1, materials_differ = 0;
+    for (int l = 0; l < VEC; ++l) {
+      const int id = ids[l] >= 0 ? ids[l] : first;
+      __global const float* a = attrs + (size_t)id * ATTR_FLOATS;
+      for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) planes[k][l] = a[k];
+      dy[l] = y + l / STAMP - tris[id].y0;
+      rel[l] = x + l % STAMP - tris[id].x0;
+      const int m = (int)a[PHONG_MATERIAL_SLOT];
+      materials_differ |= material >= 0 && m != material;
+      material = m;
+    }
+    if (!materials_differ) {
+      floatV p[DEFER_PLANE_FLOATS];
+      for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = vloadV(0, planes[k]);
+      shade_pixels_lanes(p, material, convert_floatV(vloadV(0, dy)), convert_floatV(vloadV(0, rel)), &sr, &sg, &sb, lights,
+                         materials, viewer);
+      keep(won, sr, sg, sb, &cr[i], &cg[i], &cb[i]);
+      continue;
+    }
+    for (int l = 0; l < VEC; ++l) { /* each winner over its own lanes */
+      const int id = ids[l];
+      if (id < 0) continue;
+      const intV mine = winner[i] == id;
+      for (int k = l; k < VEC; ++k)
+        if (ids[k] == id) ids[k] = -1;
+      __global const TriangleGeometry* t = &tris[id];
+      shade_pixels_at(attrs + (size_t)id * ATTR_FLOATS, convert_floatV(STAMP_ROW + (y - t->y0)),
+                      convert_floatV(STAMP_COLUMN + (x - t->x0)), &sr, &sg, &sb, lights, materials, viewer);
+      keep(mine, sr, sg, sb, &cr[i], &cg[i], &cb[i]);
+    }
+  }
+}
+#endif
 
 /* A small triangle's (TRIANGLE_SMALL) coverage of a stamp: small_triangle_inside with a row per lane. */
 INLINE intV small_stamp_inside(__global const TriangleGeometry* t, intV rel, intV dy) {
@@ -227,8 +312,15 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
 
   floatV depth[TILE_VECTORS];
   colourV cr[TILE_VECTORS], cg[TILE_VECTORS], cb[TILE_VECTORS];
+#if DEFER_STAMPS
+  intV winner[TILE_VECTORS];
+  const int deferred = (int)(end - begin) >= DEFER_MIN_TRIANGLES;
+#endif
   for (int i = 0; i < TILE_VECTORS; ++i) {
     depth[i] = (floatV)INFINITY;
+#if DEFER_STAMPS
+    winner[i] = (intV)(-1);
+#endif
 #if REGISTER_COLOUR
     /* Colour holds span registers: the background as a register value. */
     cr[i] = (intV)(int)(background.x * (1 << FRAC_BITS));
@@ -342,7 +434,8 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
           for (int sx = sx_first; sx <= sx_last; ++sx) {
             const intV rel = STAMP_COLUMN + (tile_x + sx * STAMP - x0);
             const intV inside = small_stamp_inside(t, rel, dy) & rows & (rel >= lo) & (rel <= hi);
-            shade_stamp(t, attr, dy, rel, inside, sy * STAMPS_X + sx, depth, cr, cg, cb, lights, materials, viewer);
+            shade_stamp(t, attr, dy, rel, inside, sy * STAMPS_X + sx, depth, cr, cg, cb, lights, materials, viewer
+                        DEFER_ARGS);
           }
         }
         continue;
@@ -376,7 +469,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
         for (int sx = (left + x0 - tile_x) / STAMP; sx <= (right + x0 - tile_x) / STAMP; ++sx) {
           const intV rel = STAMP_COLUMN + (tile_x + sx * STAMP - x0);
           shade_stamp(t, attr, dy, rel, (rel >= lo_s) & (rel <= hi_s), sy * STAMPS_X + sx, depth, cr, cg, cb, lights,
-                      materials, viewer);
+                      materials, viewer DEFER_ARGS);
         }
       }
     }
@@ -448,6 +541,9 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
 #endif
   }
 
+#if DEFER_STAMPS
+  if (deferred) shade_winners(winner, cr, cg, cb, tris, attrs, tile_x, tile_y, lights, materials, viewer);
+#endif
 #if STAMPS
   /* Each stamp row of the tile through a private line buffer, so the frame is still written VEC pixels
    * of a row at a time. */

@@ -33,6 +33,7 @@ struct KernelVariant {
   int plan_pass = 0;
   bool plan_dynamic = false;
   bool stamps = false;  // asked for; used where the kernel has them (stamps_apply)
+  int defer_min_triangles = -1;  // Phong's stamps: RenderOptions::defer_min_triangles
 
   // 4x4 stamps: the plain path only (no unit, combined method, per-span normalization, plan or float
   // read-back), for Phong and Gouraud, where they pay (docs/pipeline.md); flat stays on row segments.

@@ -20,18 +20,22 @@ namespace {
 
 using namespace testing_support;
 
-std::vector<std::uint8_t> render_rgba(const Scene& scene, Method method, bool stamps, int tile) {
+std::vector<std::uint8_t> render_rgba(const Scene& scene, Method method, bool stamps, int tile, int defer_min = -1) {
   RenderOptions o = render_options(method, false, tile);
   o.stamps = stamps;
+  o.defer_min_triangles = defer_min;
   Renderer renderer(test_device(), o);
   const auto& rgba = renderer.render(scene).image.rgba;
   return {rgba.begin(), rgba.end()};
 }
 
 void expect_same_image(const Scene& scene, const std::string& what, std::initializer_list<int> tiles = {16}) {
-  for (Method method : {Method::phong, Method::gouraud}) {
+  // Phong's stamps also with every tile deferred (shaded after its walk by each pixel's winner).
+  for (const auto& [method, defer_min] : {std::pair{Method::phong, -1}, std::pair{Method::phong, 0},
+                                          std::pair{Method::gouraud, -1}}) {
     for (int tile : tiles) {
-      const auto rows = render_rgba(scene, method, false, tile), stamps = render_rgba(scene, method, true, tile);
+      const auto rows = render_rgba(scene, method, false, tile),
+                 stamps = render_rgba(scene, method, true, tile, defer_min);
       ASSERT_EQ(rows.size(), stamps.size());
       std::size_t covered = 0;
       for (std::size_t i = 3; i < rows.size(); i += 4) covered += rows[i] != 0;
@@ -42,7 +46,7 @@ void expect_same_image(const Scene& scene, const std::string& what, std::initial
           ++differ;
           first = std::min(first, i);
         }
-      EXPECT_EQ(differ, 0u) << what << ", " << method_name(method) << ", tile " << tile
+      EXPECT_EQ(differ, 0u) << what << ", " << method_name(method) << (defer_min == 0 ? " deferred" : "") << ", tile " << tile
                             << ": first differing byte at pixel " << first / 4 << " (x " << (first / 4) % scene.width
                             << ", y " << (first / 4) / scene.width << ")";
     }
