@@ -19,12 +19,7 @@ INLINE void blinn_phong_masked(__constant float4* materials, int m, __constant f
   floatV cr = (floatV)amb.x, cg = (floatV)amb.y, cb = (floatV)amb.z;
 #if LOCAL_VIEWER
   floatV vx = viewer.x - px, vy = viewer.y - py, vz = viewer.z - pz;
-  {
-    const floatV inv = safe_rsqrt(vx * vx + vy * vy + vz * vz);
-    vx *= inv;
-    vy *= inv;
-    vz *= inv;
-  }
+  normalize_lanes(&vx, &vy, &vz);
 #else
   const floatV vx = viewer.x, vy = viewer.y, vz = viewer.z;
 #endif
@@ -36,10 +31,7 @@ INLINE void blinn_phong_masked(__constant float4* materials, int m, __constant f
       lx = l4.x - px;
       ly = l4.y - py;
       lz = l4.z - pz;
-      const floatV inv = safe_rsqrt(lx * lx + ly * ly + lz * lz);
-      lx *= inv;
-      ly *= inv;
-      lz *= inv;
+      normalize_lanes(&lx, &ly, &lz);
     } else {
       lx = l4.x;
       ly = l4.y;

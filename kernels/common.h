@@ -38,6 +38,14 @@ typedef uint16 uintV;
 /* 1/sqrt(x), and 0 where x is 0: a zero vector stays zero instead of becoming NaN. */
 INLINE floatV safe_rsqrt(floatV x) { return select((floatV)0.0f, rsqrt(x), isgreater(x, (floatV)0.0f)); }
 
+/* (x, y, z) scaled to unit length per lane (a zero vector stays zero): every per-pixel normalization. */
+INLINE void normalize_lanes(floatV* x, floatV* y, floatV* z) {
+  const floatV inv = safe_rsqrt(*x * *x + *y * *y + *z * *z);
+  *x *= inv;
+  *y *= inv;
+  *z *= inv;
+}
+
 /* An 8-bit level: round to nearest (ties to even) and saturate. Adding 2^23 to a value in [0, 255]
  * rounds it to an integer in the float's low mantissa bits (the default rounding mode is to nearest
  * even), which are then read as an integer. rint() and convert_*_sat_rte are emulated lane by lane on

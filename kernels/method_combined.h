@@ -62,10 +62,7 @@ INLINE floatV plane_at(__global const float* a, int slot, floatV fdy, floatV rel
 INLINE void shade_points(__global const float* a, floatV fdy, floatV rel, floatV* r, floatV* g, floatV* b,
                          __constant float4* lights, __constant float4* materials, float4 viewer) {
   floatV nx = plane_at(a, 0, fdy, rel), ny = plane_at(a, 1, fdy, rel), nz = plane_at(a, 2, fdy, rel);
-  const floatV inv = safe_rsqrt(nx * nx + ny * ny + nz * nz);
-  nx *= inv;
-  ny *= inv;
-  nz *= inv;
+  normalize_lanes(&nx, &ny, &nz);
 #if NEED_POSITION
   const floatV px = plane_at(a, 9, fdy, rel), py = plane_at(a, 10, fdy, rel), pz = plane_at(a, 11, fdy, rel);
 #else

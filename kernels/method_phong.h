@@ -26,12 +26,8 @@ INLINE void shade_unit_normal(__global const float* a, floatV fdy, floatV rel, f
 INLINE void shade_pixels_at(__global const float* a, floatV fdy, floatV rel, floatV* r, floatV* g, floatV* b,
                             __constant float4* lights, __constant float4* materials, float4 viewer) {
   floatV nx = plane_row(a, 0, fdy, rel), ny = plane_row(a, 1, fdy, rel), nz = plane_row(a, 2, fdy, rel);
-  const floatV len2 = nx * nx + ny * ny + nz * nz;
   /* A zero interpolated normal (opposite vertex normals) shades with ambient only, never NaN. */
-  const floatV inv = safe_rsqrt(len2);
-  nx *= inv;
-  ny *= inv;
-  nz *= inv;
+  normalize_lanes(&nx, &ny, &nz);
   shade_unit_normal(a, fdy, rel, nx, ny, nz, r, g, b, lights, materials, viewer);
 }
 
@@ -45,11 +41,7 @@ INLINE floatV plane_lanes(const floatV* p, int slot, floatV fdy, floatV rel) {
 INLINE void shade_pixels_lanes(const floatV* p, int material, floatV fdy, floatV rel, floatV* r, floatV* g, floatV* b,
                                __constant float4* lights, __constant float4* materials, float4 viewer) {
   floatV nx = plane_lanes(p, 0, fdy, rel), ny = plane_lanes(p, 1, fdy, rel), nz = plane_lanes(p, 2, fdy, rel);
-  const floatV len2 = nx * nx + ny * ny + nz * nz;
-  const floatV inv = safe_rsqrt(len2);
-  nx *= inv;
-  ny *= inv;
-  nz *= inv;
+  normalize_lanes(&nx, &ny, &nz);
 #if NEED_POSITION
   const floatV px = plane_lanes(p, 9, fdy, rel), py = plane_lanes(p, 10, fdy, rel), pz = plane_lanes(p, 11, fdy, rel);
 #else

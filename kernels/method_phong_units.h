@@ -12,10 +12,7 @@ INLINE void shade_unit_normals(const SpanRegisters* regs, intV i, int length, __
   floatV nx = convert_floatV(unit_register(regs, 0, i, length)) * scale;
   floatV ny = convert_floatV(unit_register(regs, 1, i, length)) * scale;
   floatV nz = convert_floatV(unit_register(regs, 2, i, length)) * scale;
-  const floatV inv = safe_rsqrt(nx * nx + ny * ny + nz * nz);
-  nx *= inv;
-  ny *= inv;
-  nz *= inv;
+  normalize_lanes(&nx, &ny, &nz);
   shade_unit_normal(a, (floatV)(float)dy, rel, nx, ny, nz, r, g, b, lights, materials, viewer);
 }
 

@@ -179,10 +179,10 @@ INLINE void shade_stamp(__global const TriangleGeometry* t, __global const float
 }
 
 #if DEFER_STAMPS
-/* The deferred tile's pixels, a stamp at a time, each by its winner. A stamp whose pixels share one winner is
- * shaded from that triangle's planes as the walk would; otherwise each lane's planes are gathered from its
- * own triangle (lanes without a winner repeat a covered lane's and are not kept), one shading for the stamp,
- * or, when the winners' materials differ, one per winner. */
+/* The deferred tile's pixels, a stamp at a time, each by its winner. A stamp whose pixels have several
+ * winners of one material is shaded once with each lane's planes gathered from its own triangle (lanes
+ * without a winner repeat a covered lane's and are not kept); otherwise each winner shades its own lanes
+ * from its planes, as the walk would (one shading when the stamp has one winner). */
 #define DEFER_PLANE_FLOATS 18 /* the normal and position planes: slots 0..17 */
 INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb, __global const TriangleGeometry* tris,
                           __global const float* attrs, int tile_x, int tile_y, __constant float4* lights,
@@ -200,32 +200,27 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
       mixed |= ids[l] != first;
     }
     floatV sr, sg, sb;
-    if (!mixed) {
-      __global const TriangleGeometry* t = &tris[first];
-      shade_pixels_at(attrs + (size_t)first * ATTR_FLOATS, convert_floatV(STAMP_ROW + (y - t->y0)),
-                      convert_floatV(STAMP_COLUMN + (x - t->x0)), &sr, &sg, &sb, lights, materials, viewer);
-      keep(won, sr, sg, sb, &cr[i], &cg[i], &cb[i]);
-      continue;
-    }
-    float planes[DEFER_PLANE_FLOATS][VEC];
-    int dy[VEC], rel[VEC], material = -1, materials_differ = 0;
-    for (int l = 0; l < VEC; ++l) {
-      const int id = ids[l] >= 0 ? ids[l] : first;
-      __global const float* a = attrs + (size_t)id * ATTR_FLOATS;
-      for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) planes[k][l] = a[k];
-      dy[l] = y + l / STAMP - tris[id].y0;
-      rel[l] = x + l % STAMP - tris[id].x0;
-      const int m = (int)a[PHONG_MATERIAL_SLOT];
-      materials_differ |= material >= 0 && m != material;
-      material = m;
-    }
-    if (!materials_differ) {
-      floatV p[DEFER_PLANE_FLOATS];
-      for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = vloadV(0, planes[k]);
-      shade_pixels_lanes(p, material, convert_floatV(vloadV(0, dy)), convert_floatV(vloadV(0, rel)), &sr, &sg, &sb, lights,
-                         materials, viewer);
-      keep(won, sr, sg, sb, &cr[i], &cg[i], &cb[i]);
-      continue;
+    if (mixed) {
+      float planes[DEFER_PLANE_FLOATS][VEC];
+      int dy[VEC], rel[VEC], material = -1, materials_differ = 0;
+      for (int l = 0; l < VEC; ++l) {
+        const int id = ids[l] >= 0 ? ids[l] : first;
+        __global const float* a = attrs + (size_t)id * ATTR_FLOATS;
+        for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) planes[k][l] = a[k];
+        dy[l] = y + l / STAMP - tris[id].y0;
+        rel[l] = x + l % STAMP - tris[id].x0;
+        const int m = (int)a[PHONG_MATERIAL_SLOT];
+        materials_differ |= material >= 0 && m != material;
+        material = m;
+      }
+      if (!materials_differ) {
+        floatV p[DEFER_PLANE_FLOATS];
+        for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = vloadV(0, planes[k]);
+        shade_pixels_lanes(p, material, convert_floatV(vloadV(0, dy)), convert_floatV(vloadV(0, rel)), &sr, &sg, &sb,
+                           lights, materials, viewer);
+        keep(won, sr, sg, sb, &cr[i], &cg[i], &cb[i]);
+        continue;
+      }
     }
     for (int l = 0; l < VEC; ++l) { /* each winner over its own lanes */
       const int id = ids[l];
