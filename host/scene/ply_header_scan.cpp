@@ -98,6 +98,11 @@ class PlyHeaderChecker {
       } else if (keyword == "element") {
         if (tokens.size() != 3) fail("element line needs a name and a count");
         if (elements_.size() >= kMaxElements) fail("more than " + std::to_string(kMaxElements) + " elements");
+        // OpenMesh's reader loops over the last face element's count for every face element (fuzz finding
+        // F14): a second one shifts its reads, and a value taken for a list length reserved gigabytes.
+        if (tokens[1] == "vertex" || tokens[1] == "face")
+          for (const Element& e : elements_)
+            if (e.name == tokens[1]) fail("a second '" + tokens[1] + "' element (OpenMesh's reader reads only one)");
         elements_.push_back({tokens[1], count(tokens[2]), 0, 0, {}});
       } else if (keyword == "property") {
         add_property(tokens);
@@ -149,6 +154,12 @@ class PlyHeaderChecker {
       const int length_bytes = scalar(tokens[2]);
       scalar(tokens[3]);
       if (!is_integer_type(tokens[2])) fail("list length type '" + tokens[2] + "' is not an integer type");
+      // OpenMesh reads any other list as one value (F14): the values after it would be read out of place.
+      const bool vertex_indices = e.name == "face" && (tokens[4] == "vertex_indices" || tokens[4] == "vertex_index");
+      if (!vertex_indices)
+        fail("list property '" + tokens[4] + "' of element '" + e.name +
+             "' (OpenMesh's reader reads only the face element's vertex_indices as a list)");
+      if (!is_integer_type(tokens[3])) fail("vertex index type '" + tokens[3] + "' is not an integer type");
       e.min_binary_bytes += static_cast<std::uint64_t>(length_bytes);
       e.layout.push_back({true, tokens[2], tokens[3]});
     } else if (tokens.size() == 3) {

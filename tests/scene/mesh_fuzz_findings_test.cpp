@@ -68,6 +68,32 @@ TEST(FuzzFindingF13, PlyObjInfoWithAHeaderKeywordIsRefused) {
             1u);
 }
 
+// F14 (CI fuzzing run on 54e5908): OpenMesh's reader reads a list other than the face's vertex_indices as
+// one value, and loops every face element over the last face element's count; either way a value ends up
+// read as a face's list length, and a 237-byte file asked for gigabytes of vertex handles (libFuzzer OOM).
+TEST(FuzzFindingF14, PlyListsOpenMeshWouldMisreadAreRefused) {
+  const std::string vertices =
+      "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+  const std::string data = "0 0 0\n1 0 0\n0 1 0\n";
+  expect_refused("other_list.ply",
+                 "ply\nformat ascii 1.0\n" + vertices + "element extra 1\nproperty list uchar int stuff\n"
+                 "element face 1\nproperty list int int vertex_indices\nend_header\n" + data + "1 2000000000\n3 0 1 2\n",
+                 "list property 'stuff' of element 'extra'");
+  expect_refused("two_faces.ply",
+                 "ply\nformat ascii 1.0\n" + vertices + "element face 1\nproperty list uchar int vertex_indices\n"
+                 "element face 2\nproperty int foo\nend_header\n" + data + "3 0 1 2\n2000000000 5\n",
+                 "a second 'face' element");
+  expect_refused("float_indices.ply",
+                 "ply\nformat ascii 1.0\n" + vertices + "element face 1\nproperty list uchar float vertex_indices\n"
+                 "end_header\n" + data + "3 0 1.5 2\n",
+                 "vertex index type 'float'");
+  // Scalar face properties beside the vertex indices (colours, as real files have them) still load.
+  EXPECT_EQ(triangles("face_colour.ply", "ply\nformat ascii 1.0\n" + vertices +
+                                             "element face 1\nproperty list uchar int vertex_index\nproperty uchar red\n"
+                                             "end_header\n" + data + "3 0 1 2 200\n"),
+            1u);
+}
+
 // F3: without end_header OpenMesh's header parser looped forever at the end of the file, growing memory.
 TEST(FuzzFindingF3, PlyWithoutEndHeaderIsRefused) {
   expect_refused("f3.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n", "no end_header");
