@@ -201,23 +201,31 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
     }
     floatV sr, sg, sb;
     if (mixed) {
-      float planes[DEFER_PLANE_FLOATS][VEC];
-      int dy[VEC], rel[VEC], material = -1, materials_differ = 0;
+      /* Each lane's planes from its own winner: a stamp has a few winners, so each one's record is read
+       * once and blended into the lanes it won (lanes without a winner keep the first one's). Copying
+       * every lane's record into a lane-major array instead compiled to a scatter per lane. */
+      __global const float* a = attrs + (size_t)first * ATTR_FLOATS;
+      const int material = (int)a[PHONG_MATERIAL_SLOT];
+      floatV p[DEFER_PLANE_FLOATS];
+      for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = (floatV)a[k];
+      intV dy = STAMP_ROW + (y - tris[first].y0), rel = STAMP_COLUMN + (x - tris[first].x0);
+      int materials_differ = 0, pending[VEC];
+      for (int l = 0; l < VEC; ++l) pending[l] = ids[l] != first ? ids[l] : -1;
       for (int l = 0; l < VEC; ++l) {
-        const int id = ids[l] >= 0 ? ids[l] : first;
-        __global const float* a = attrs + (size_t)id * ATTR_FLOATS;
-        for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) planes[k][l] = a[k];
-        dy[l] = y + l / STAMP - tris[id].y0;
-        rel[l] = x + l % STAMP - tris[id].x0;
-        const int m = (int)a[PHONG_MATERIAL_SLOT];
-        materials_differ |= material >= 0 && m != material;
-        material = m;
+        const int id = pending[l];
+        if (id < 0) continue;
+        for (int k = l; k < VEC; ++k)
+          if (pending[k] == id) pending[k] = -1;
+        a = attrs + (size_t)id * ATTR_FLOATS;
+        materials_differ |= (int)a[PHONG_MATERIAL_SLOT] != material;
+        const intV mine = winner[i] == id;
+        for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = select(p[k], (floatV)a[k], mine);
+        dy = select(dy, STAMP_ROW + (y - tris[id].y0), mine);
+        rel = select(rel, STAMP_COLUMN + (x - tris[id].x0), mine);
       }
       if (!materials_differ) {
-        floatV p[DEFER_PLANE_FLOATS];
-        for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = vloadV(0, planes[k]);
-        shade_pixels_lanes(p, material, convert_floatV(vloadV(0, dy)), convert_floatV(vloadV(0, rel)), &sr, &sg, &sb,
-                           lights, materials, viewer);
+        shade_pixels_lanes(p, material, convert_floatV(dy), convert_floatV(rel), &sr, &sg, &sb, lights, materials,
+                           viewer);
         keep(won, sr, sg, sb, &cr[i], &cg[i], &cb[i]);
         continue;
       }
