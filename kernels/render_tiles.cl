@@ -40,7 +40,9 @@ typedef floatV colourV;
 #ifndef STAMPS
 #define STAMPS 0
 #endif
-#if STAMPS && (PLAN_PASS || UNIT_PATH || COMBINED || SHADE_SPAN || OUTPUT_FLOAT)
+/* The combined method has stamps only as combined:0 without a per-triangle choice: Phong at every pixel (with
+ * the triangle's specular mask under HIGHLIGHT_TEST), which needs no span walk. */
+#if STAMPS && (PLAN_PASS || UNIT_PATH || SHADE_SPAN || OUTPUT_FLOAT || (COMBINED && (SEG_AUTO || SEG_K != 0 || TRIANGLE_CHOICE)))
 #error "STAMPS: the plain path only"
 #endif
 /* Stamps: STAMP x STAMP pixels, STAMPS_X of them across a tile (TILE_VECTORS in all, as row segments). */
@@ -174,7 +176,11 @@ INLINE void shade_stamp(__global const TriangleGeometry* t, __global const float
   }
 #endif
   floatV sr, sg, sb;
+#if COMBINED
+  shade_points(attr, fdy, frel, &sr, &sg, &sb, lights, materials, viewer);
+#else
   shade_pixels_at(attr, fdy, frel, &sr, &sg, &sb, lights, materials, viewer);
+#endif
   keep(pass, sr, sg, sb, &cr[slot], &cg[slot], &cb[slot]);
 }
 

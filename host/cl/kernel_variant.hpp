@@ -35,8 +35,9 @@ struct KernelVariant {
   bool stamps = false;  // asked for; used where the kernel has them (stamps_apply)
   int defer_min_triangles = -1;  // Phong's stamps: RenderOptions::defer_min_triangles
 
-  // 4x4 stamps: the plain path only (no unit, combined method, per-span normalization, plan or float
-  // read-back), for Phong and Gouraud, where they pay (docs/pipeline.md); flat stays on row segments.
+  // 4x4 stamps: the plain path only (no unit, per-span normalization, plan or float read-back), for Phong,
+  // Gouraud and combined:0 without a per-triangle choice (Phong at every pixel), where they pay
+  // (docs/pipeline.md); flat and the other combined methods (segments along rows) stay on row segments.
   bool stamps_apply() const;
 
   std::string build_options() const;

@@ -1,6 +1,7 @@
-// The kernel's 4x4 stamps (RenderOptions::stamps, the plain path of Phong and Gouraud) against its 1x16 row
-// segments: the same pixels are covered and shaded with the same operations, so the images must be
-// byte-identical, for both methods.
+// The kernel's 4x4 stamps (RenderOptions::stamps, the plain path of Phong, Gouraud and combined:0 without a
+// per-triangle choice) against its 1x16 row segments: the same pixels are covered and shaded with the same
+// operations, so the images must be byte-identical, for each method (combined:0 also with its highlight test,
+// the per-triangle specular mask).
 // The scenes cover what the stamp walk treats apart: small triangles (per-pixel edge tests) and large
 // ones (row spans), tiles of 16, 32 and 64, a frame whose width and height are not multiples of the
 // stamp or the tile, slivers, a fan, near-plane clipping, point lights and a local viewer. (Each scene
@@ -20,10 +21,19 @@ namespace {
 
 using namespace testing_support;
 
-std::vector<std::uint8_t> render_rgba(const Scene& scene, Method method, bool stamps, int tile, int defer_min = -1) {
-  RenderOptions o = render_options(method, false, tile);
+// A case of the comparison: the method, Phong's deferral threshold, combined:0's highlight test.
+struct Variant {
+  Method method;
+  int defer_min = -1;
+  bool highlight_test = false;
+};
+
+std::vector<std::uint8_t> render_rgba(const Scene& scene, const Variant& v, bool stamps, int tile) {
+  RenderOptions o = render_options(v.method, false, tile);
   o.stamps = stamps;
-  o.defer_min_triangles = defer_min;
+  o.defer_min_triangles = v.defer_min;
+  o.combined.k = 0;
+  o.combined.highlight_test = v.highlight_test;
   Renderer renderer(test_device(), o);
   const auto& rgba = renderer.render(scene).image.rgba;
   return {rgba.begin(), rgba.end()};
@@ -31,11 +41,10 @@ std::vector<std::uint8_t> render_rgba(const Scene& scene, Method method, bool st
 
 void expect_same_image(const Scene& scene, const std::string& what, std::initializer_list<int> tiles = {16}) {
   // Phong's stamps also with every tile deferred (shaded after its walk by each pixel's winner).
-  for (const auto& [method, defer_min] : {std::pair{Method::phong, -1}, std::pair{Method::phong, 0},
-                                          std::pair{Method::gouraud, -1}}) {
+  for (const Variant& v : {Variant{Method::phong}, Variant{Method::phong, 0}, Variant{Method::gouraud},
+                           Variant{Method::combined}, Variant{Method::combined, -1, true}}) {
     for (int tile : tiles) {
-      const auto rows = render_rgba(scene, method, false, tile),
-                 stamps = render_rgba(scene, method, true, tile, defer_min);
+      const auto rows = render_rgba(scene, v, false, tile), stamps = render_rgba(scene, v, true, tile);
       ASSERT_EQ(rows.size(), stamps.size());
       std::size_t covered = 0;
       for (std::size_t i = 3; i < rows.size(); i += 4) covered += rows[i] != 0;
@@ -46,7 +55,8 @@ void expect_same_image(const Scene& scene, const std::string& what, std::initial
           ++differ;
           first = std::min(first, i);
         }
-      EXPECT_EQ(differ, 0u) << what << ", " << method_name(method) << (defer_min == 0 ? " deferred" : "") << ", tile " << tile
+      EXPECT_EQ(differ, 0u) << what << ", " << method_name(v.method) << (v.defer_min == 0 ? " deferred" : "")
+                            << (v.highlight_test ? " highlight test" : "") << ", tile " << tile
                             << ": first differing byte at pixel " << first / 4 << " (x " << (first / 4) % scene.width
                             << ", y " << (first / 4) / scene.width << ")";
     }
