@@ -52,30 +52,19 @@ INLINE bool combined_walks(__global const TriangleGeometry* t, __global const fl
 #endif
 }
 
-/* A plane's value on each lane's own row and column: the same operations, in the same order, as
- * method_phong.h's plane_row, so segment ends equal Phong's pixels bit for bit. */
-INLINE floatV plane_at(__global const float* a, int slot, floatV fdy, floatV rel) {
-  return ((floatV)a[slot] + a[slot + 6] * fdy) + a[slot + 3] * rel;
-}
-
-/* Exact Blinn–Phong at one point per lane (row dy, column rel relative to the record's corner). */
+/* Exact Blinn–Phong at one point per lane (row dy, column rel relative to the record's corner): method_phong.h's
+ * per-pixel shading, so segment ends equal Phong's pixels bit for bit; under HIGHLIGHT_TEST with the triangle's
+ * specular mask (the branch keeps the all-lights case free of per-light tests). */
 INLINE void shade_points(__global const float* a, floatV fdy, floatV rel, floatV* r, floatV* g, floatV* b,
                          __constant float4* lights, __constant float4* materials, float4 viewer) {
-  floatV nx = plane_at(a, 0, fdy, rel), ny = plane_at(a, 1, fdy, rel), nz = plane_at(a, 2, fdy, rel);
-  normalize_lanes(&nx, &ny, &nz);
-#if NEED_POSITION
-  const floatV px = plane_at(a, 9, fdy, rel), py = plane_at(a, 10, fdy, rel), pz = plane_at(a, 11, fdy, rel);
-#else
-  const floatV px = 0.0f, py = 0.0f, pz = 0.0f;
-#endif
 #if HIGHLIGHT_TEST
   const int needed = (int)a[PHONG_HIGHLIGHT_SLOT];
   if (needed != (1 << NUM_LIGHTS) - 1) {
-    blinn_phong_masked(materials, (int)a[PHONG_MATERIAL_SLOT], lights, viewer, needed, nx, ny, nz, px, py, pz, r, g, b);
+    shade_pixels_masked(a, fdy, rel, needed, r, g, b, lights, materials, viewer);
     return;
   }
 #endif
-  blinn_phong(materials, (int)a[PHONG_MATERIAL_SLOT], lights, viewer, nx, ny, nz, px, py, pz, r, g, b);
+  shade_pixels_at(a, fdy, rel, r, g, b, lights, materials, viewer);
 }
 
 #if TRIANGLE_CHOICE || HIGHLIGHT_TEST

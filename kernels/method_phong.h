@@ -10,25 +10,32 @@ INLINE floatV plane_row(__global const float* a, int slot, floatV fdy, floatV re
   return (a[slot] + a[slot + 6] * fdy) + a[slot + 3] * rel;
 }
 
-/* Blinn–Phong with a unit normal per lane; the world position from its planes only when a point light or
- * a local viewer needs it. */
-INLINE void shade_unit_normal(__global const float* a, floatV fdy, floatV rel, floatV nx, floatV ny, floatV nz, floatV* r,
-                              floatV* g, floatV* b, __constant float4* lights, __constant float4* materials,
-                              float4 viewer) {
+/* Blinn–Phong with a unit normal per lane, the specular term for the lights in `needed` (blinn_phong_masked;
+ * -1: every light); the world position from its planes only when a point light or a local viewer needs it. */
+INLINE void shade_unit_normal(__global const float* a, floatV fdy, floatV rel, int needed, floatV nx, floatV ny,
+                              floatV nz, floatV* r, floatV* g, floatV* b, __constant float4* lights,
+                              __constant float4* materials, float4 viewer) {
 #if NEED_POSITION
   const floatV px = plane_row(a, 9, fdy, rel), py = plane_row(a, 10, fdy, rel), pz = plane_row(a, 11, fdy, rel);
 #else
   const floatV px = 0.0f, py = 0.0f, pz = 0.0f;
 #endif
-  blinn_phong(materials, (int)a[PHONG_MATERIAL_SLOT], lights, viewer, nx, ny, nz, px, py, pz, r, g, b);
+  blinn_phong_masked(materials, (int)a[PHONG_MATERIAL_SLOT], lights, viewer, needed, nx, ny, nz, px, py, pz, r, g, b);
+}
+
+/* Phong at the lanes' pixels, the specular term for the lights in `needed` (the combined method's highlight
+ * test; -1: every light). */
+INLINE void shade_pixels_masked(__global const float* a, floatV fdy, floatV rel, int needed, floatV* r, floatV* g,
+                                floatV* b, __constant float4* lights, __constant float4* materials, float4 viewer) {
+  floatV nx = plane_row(a, 0, fdy, rel), ny = plane_row(a, 1, fdy, rel), nz = plane_row(a, 2, fdy, rel);
+  /* A zero interpolated normal (opposite vertex normals) shades with ambient only, never NaN. */
+  normalize_lanes(&nx, &ny, &nz);
+  shade_unit_normal(a, fdy, rel, needed, nx, ny, nz, r, g, b, lights, materials, viewer);
 }
 
 INLINE void shade_pixels_at(__global const float* a, floatV fdy, floatV rel, floatV* r, floatV* g, floatV* b,
                             __constant float4* lights, __constant float4* materials, float4 viewer) {
-  floatV nx = plane_row(a, 0, fdy, rel), ny = plane_row(a, 1, fdy, rel), nz = plane_row(a, 2, fdy, rel);
-  /* A zero interpolated normal (opposite vertex normals) shades with ambient only, never NaN. */
-  normalize_lanes(&nx, &ny, &nz);
-  shade_unit_normal(a, fdy, rel, nx, ny, nz, r, g, b, lights, materials, viewer);
+  shade_pixels_masked(a, fdy, rel, -1, r, g, b, lights, materials, viewer);
 }
 
 /* shade_pixels_at with each lane's own planes (p[k]: coefficient k of the lane's triangle, slots 0..17) and one
@@ -89,6 +96,6 @@ INLINE void shade_pixels_span(__global const float* a, int dy, floatV rel, const
   }
   floatV nx, ny, nz;
   span_pixel_normals(s, convert_intV(rel) - xl, xr - xl + 1, &nx, &ny, &nz);
-  shade_unit_normal(a, (floatV)(float)dy, rel, nx, ny, nz, r, g, b, lights, materials, viewer);
+  shade_unit_normal(a, (floatV)(float)dy, rel, -1, nx, ny, nz, r, g, b, lights, materials, viewer);
 }
 #endif

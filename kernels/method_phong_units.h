@@ -13,7 +13,7 @@ INLINE void shade_unit_normals(const SpanRegisters* regs, intV i, int length, __
   floatV ny = convert_floatV(unit_register(regs, 1, i, length)) * scale;
   floatV nz = convert_floatV(unit_register(regs, 2, i, length)) * scale;
   normalize_lanes(&nx, &ny, &nz);
-  shade_unit_normal(a, (floatV)(float)dy, rel, nx, ny, nz, r, g, b, lights, materials, viewer);
+  shade_unit_normal(a, (floatV)(float)dy, rel, -1, nx, ny, nz, r, g, b, lights, materials, viewer);
 }
 
 #endif
