@@ -8,13 +8,11 @@
 
 #include "parashade/parallel.hpp"
 #include "parashade/vertex_lighting.hpp"
+#include "parashade/vertex_snap.hpp"
+#include "parashade/vertex_world.hpp"
 
 namespace parashade {
 namespace {
-
-// Clip planes; bit i of an outcode = outside plane i.
-enum : std::uint8_t { kNear = 1, kFar = 2, kLeft = 4, kRight = 8, kBottom = 16, kTop = 32 };
-constexpr std::uint8_t kNonFinite = 64;  // not a plane: the vertex has NaN or Inf coordinates
 
 float plane_distance(const glm::vec4& c, int plane) {
   switch (plane) {
@@ -25,37 +23,6 @@ float plane_distance(const glm::vec4& c, int plane) {
     case kBottom: return c.y + kGuardBand * c.w;
     default: return kGuardBand * c.w - c.y;
   }
-}
-
-std::uint8_t outcode_of(const glm::vec4& c) {
-  // One test for NaN or Inf in any coordinate (the sum is then NaN or Inf); finite coordinates so
-  // large that their sum overflows (> 3e38) count as outside too.
-  if (!std::isfinite(c.x + c.y + c.z + c.w)) return kNonFinite;
-  const float g = kGuardBand * c.w;
-  return std::uint8_t((c.z + c.w >= 0.0f ? 0 : kNear) | (c.w - c.z >= 0.0f ? 0 : kFar) |
-                      (c.x + g >= 0.0f ? 0 : kLeft) | (g - c.x >= 0.0f ? 0 : kRight) |
-                      (c.y + g >= 0.0f ? 0 : kBottom) | (g - c.y >= 0.0f ? 0 : kTop));
-}
-
-struct Snapped {
-  glm::ivec2 xy;
-  float depth;
-  float inv_w;
-};
-
-// Clip space -> sub-pixel screen position (y down), window depth and 1/w. Only meaningful for points
-// inside the guard band (the callers guarantee it); values are clamped so nothing overflows otherwise.
-Snapped snap(const glm::vec4& c, int width, int height) {
-  Snapped s{{0, 0}, 1.0f, 0.0f};
-  if (!(c.w > 0.0f)) return s;
-  const double inv_w = 1.0 / double(c.w);
-  const double x = (double(c.x) * inv_w * 0.5 + 0.5) * width * kSubpixel;
-  const double y = (0.5 - double(c.y) * inv_w * 0.5) * height * kSubpixel;
-  constexpr double kLimit = double(1 << 30);
-  s.xy = {int(std::lrint(std::clamp(x, -kLimit, kLimit))), int(std::lrint(std::clamp(y, -kLimit, kLimit)))};
-  s.depth = float(double(c.z) * inv_w * 0.5 + 0.5);
-  s.inv_w = float(inv_w);
-  return s;
 }
 
 struct ClipVertex {
@@ -79,12 +46,8 @@ struct VertexSource {
   std::uint32_t material = 0;
   std::uint32_t base = 0;  // index of the object's first vertex in the frame
 
-  glm::vec3 world(std::size_t i) const { return glm::vec3(model * glm::vec4(mesh->positions[i], 1.0f)); }
-  glm::vec3 normal(std::size_t i) const {
-    const glm::vec3 n = normal_matrix * mesh->normals[i];
-    const float len = glm::length(n);
-    return len > 0.0f ? n / len : glm::vec3(0.0f, 0.0f, 1.0f);
-  }
+  glm::vec3 world(std::size_t i) const { return world_position(model, mesh->positions[i]); }
+  glm::vec3 normal(std::size_t i) const { return unit_normal(normal_matrix, mesh->normals[i]); }
 };
 
 // Work of one chunk of input triangles, merged in chunk order so the output order is deterministic.
@@ -389,28 +352,14 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
     const ObjectRange range = scratch.vertex_ranges[r];
     const VertexSource& src = sources[range.object];
     const glm::mat4 m = model_vp[range.object];
-    const glm::vec3* position = src.mesh->positions.data();
-    // Plain pointers: a store through the outcodes' bytes may alias anything, so the vectors' data
-    // pointers would be reloaded from memory after every vertex.
-    glm::vec4* clip_out = g.clip.data() + src.base;
-    std::uint8_t* outcode = g.outcode.data() + src.base;
-    glm::ivec2* xy = g.xy.data() + src.base;
-    float* depth = g.depth.data() + src.base;
-    float* inv_w = g.inv_w.data() + src.base;
-    glm::vec3* world = needs.world ? g.world.data() + src.base : nullptr;
-    glm::vec3* normal = needs.normal ? g.normal.data() + src.base : nullptr;
-    const int width = g.width, height = g.height;
-    for (std::size_t i = range.first; i < range.last; ++i) {
-      const glm::vec4 clip = m * glm::vec4(position[i], 1.0f);
-      clip_out[i] = clip;
-      outcode[i] = outcode_of(clip);
-      const Snapped s = snap(clip, width, height);
-      xy[i] = s.xy;
-      depth[i] = s.depth;
-      inv_w[i] = s.inv_w;
-      if (world) world[i] = src.world(i);
-      if (normal) normal[i] = src.normal(i);
-    }
+    const std::size_t at = src.base + range.first;
+    transform_vertices(m, src.mesh->positions.data() + range.first, range.last - range.first, g.width, g.height,
+                       {g.clip.data() + at, g.outcode.data() + at, g.xy.data() + at, g.depth.data() + at,
+                        g.inv_w.data() + at});
+    if (needs.world || needs.normal)
+      world_and_normals(src.model, src.normal_matrix, src.mesh->positions.data() + range.first,
+                        needs.normal ? src.mesh->normals.data() + range.first : nullptr, range.last - range.first,
+                        needs.world ? g.world.data() + at : nullptr, needs.normal ? g.normal.data() + at : nullptr);
   });
 
   // Primitive assembly in chunks, merged in order.
@@ -481,7 +430,7 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
     const VertexSource& src = sources[range.object];
     constexpr int kLanes = VertexLighting::kLanes;  // used vertices lit kLanes at a time
     std::size_t lane_vertex[kLanes];
-    glm::vec3 p[kLanes], n[kLanes], colour[kLanes];
+    glm::vec3 position[kLanes], normal[kLanes], p[kLanes], n[kLanes], colour[kLanes];
     int lanes = 0;
     for (std::size_t i = range.first; i < range.last; ++i) {
       const std::size_t v = src.base + i;
@@ -490,13 +439,15 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
         continue;
       }
       lane_vertex[lanes] = v;
-      p[lanes] = src.world(i);
-      n[lanes] = src.normal(i);
+      position[lanes] = src.mesh->positions[i];
+      normal[lanes] = src.mesh->normals[i];
       if (++lanes < kLanes) continue;
+      world_and_normals(src.model, src.normal_matrix, position, normal, kLanes, p, n);
       lighting.shade_lanes(src.material, p, n, colour);
       for (int k = 0; k < kLanes; ++k) g.color[lane_vertex[k]] = colour[k];
       lanes = 0;
     }
+    world_and_normals(src.model, src.normal_matrix, position, normal, std::size_t(lanes), p, n);
     for (int k = 0; k < lanes; ++k) g.color[lane_vertex[k]] = lighting.shade(src.material, p[k], n[k]);
   };
   parallel_for(scratch.light_ranges.size() + jobs.size(), [&](std::size_t item) {
