@@ -3,7 +3,7 @@
 # units' scaling sweep (parashade scaling), standalone peak memory (parashade render under
 # /usr/bin/time), the Phong family (phong-study, combined and normalization studies, bench_normalize),
 # then the report (plots, image strip, claims table) when python3-matplotlib is present.
-#   scripts/bench-suite.sh [-q] [OUT_DIR]          whole suite (sizes 1920x1080, 512x512, 3840x2160; ~1 h here)
+#   scripts/bench-suite.sh [-q] [OUT_DIR]          whole suite (sizes 1920x1080, 512x512, 3840x2160; ~15 min on the quiet 2-core VM)
 #   scripts/bench-suite.sh [-q] --quick [OUT_DIR]  CI subset: sphere_8k and fullscreen_quad at 512x512 (< 1 min)
 #   scripts/bench-suite.sh [-q] --phong [OUT_DIR]  the Phong family ([Romanyuk & Romanyuk, combined shading]; [Dembitsky 2025, software/hardware rendering] ch. 2-3) and the claims table only (~5 min)
 #   scripts/bench-suite.sh [-q] [--phong] --shard K/N [OUT_DIR]   shard K of N: its share of the steps
