@@ -39,7 +39,6 @@ constexpr int kLanes = 8;
 typedef float Floats __attribute__((vector_size(4 * kLanes)));
 typedef double Doubles __attribute__((vector_size(8 * kLanes)));
 typedef int Ints __attribute__((vector_size(4 * kLanes)));
-typedef long long Longs __attribute__((vector_size(8 * kLanes)));
 
 template <typename V, typename T>
 inline __attribute__((always_inline)) V splat(T v) {
@@ -68,8 +67,8 @@ inline __attribute__((always_inline)) Doubles clamp(Doubles x, double limit) {
   return x < lo ? lo : (hi < x ? hi : x);  // std::clamp's order: NaN stays NaN
 }
 
-inline __attribute__((always_inline)) void transform_lanes(const glm::mat4& m, const glm::vec3* position, int width, int height, std::size_t i,
-                     const SnappedVertices& out) {
+inline __attribute__((always_inline)) void transform_lanes(const glm::mat4& m, const glm::vec3* position, int width,
+                                                           int height, std::size_t i, const SnappedVertices& out) {
   float coordinate[3][kLanes];
   for (int k = 0; k < kLanes; ++k)
     for (int j = 0; j < 3; ++j) coordinate[j][k] = position[i + std::size_t(k)][j];
@@ -91,8 +90,9 @@ inline __attribute__((always_inline)) void transform_lanes(const glm::mat4& m, c
   const Ints valid = c[3] > zero;
   const Doubles inv = splat<Doubles>(1.0) / __builtin_convertvector(c[3], Doubles);
   const Doubles half = splat<Doubles>(0.5), sub = splat<Doubles>(double(kSubpixel));
-  const Doubles x = ((__builtin_convertvector(c[0], Doubles) * inv * half + half) * splat<Doubles>(double(width))) * sub;
-  const Doubles y = ((half - __builtin_convertvector(c[1], Doubles) * inv * half) * splat<Doubles>(double(height))) * sub;
+  const Doubles cx = __builtin_convertvector(c[0], Doubles), cy = __builtin_convertvector(c[1], Doubles);
+  const Doubles x = ((cx * inv * half + half) * splat<Doubles>(double(width))) * sub;
+  const Doubles y = ((half - cy * inv * half) * splat<Doubles>(double(height))) * sub;
   constexpr double kLimit = double(1 << 30);
   const Ints xi = round_to_int(clamp(x, kLimit)) & valid, yi = round_to_int(clamp(y, kLimit)) & valid;
   const Floats depth = __builtin_convertvector(__builtin_convertvector(c[2], Doubles) * inv * half + half, Floats);

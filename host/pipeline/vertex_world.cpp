@@ -43,7 +43,8 @@ PARASHADE_LANE void world_lanes(const glm::mat4& m, const glm::vec3* position, g
   Floats p[3], w[3];
   load(position, p);
   // glm's mat4 * vec4: (m[0] * x + m[1] * y) + (m[2] * z + m[3] * w), w = 1.
-  for (int j = 0; j < 3; ++j) w[j] = (splat(m[0][j]) * p[0] + splat(m[1][j]) * p[1]) + (splat(m[2][j]) * p[2] + splat(m[3][j]));
+  for (int j = 0; j < 3; ++j)
+    w[j] = (splat(m[0][j]) * p[0] + splat(m[1][j]) * p[1]) + (splat(m[2][j]) * p[2] + splat(m[3][j]));
   store(w, world);
 }
 

@@ -1,8 +1,8 @@
 // transform_vertices (the vertex stage's lanes) against the scalar definitions, element for element and
 // bit for bit: clip position, outcode, snapped sub-pixel position, depth and 1/w must not depend on
 // whether a vertex went through a lane or the scalar tail. Hard inputs: rounding ties of the sub-pixel
-// snap (ties to even), points on the clip planes, w <= 0, tiny and huge w, points far outside the guard band (clamped), NaN and
-// Inf coordinates, -0; perspective and orthographic matrices.
+// snap (ties to even), points on the clip planes, w <= 0, tiny and huge w, points far outside the guard
+// band (clamped), NaN and Inf coordinates, -0; perspective and orthographic matrices.
 #include <cmath>
 #include <cstdint>
 #include <cstring>
