@@ -110,7 +110,7 @@ inline __attribute__((always_inline)) void transform_lanes(const glm::mat4& m, c
 }
 
 // Whole groups of kLanes vertices from the first. Clones for AVX-512 and AVX2 machines (8 lanes of doubles
-// are one or two registers; SSE2 needs four and spills). The scalar tail stays outside the clones: GCC 12
+// are one or two registers; SSE2 needs four and spills, so the baseline clone is not called: vertex_lanes_pay). The scalar tail stays outside the clones: GCC 12
 // left out the vzeroupper on a clone's return path through scalar code, and the dirty upper register
 // state then slowed the SSE code that ran next on that thread (Phong's setup 1.5x).
 __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
@@ -121,9 +121,14 @@ void transform_groups(const glm::mat4& m, const glm::vec3* position, std::size_t
 
 }  // namespace
 
+bool vertex_lanes_pay() {
+  static const bool pay = __builtin_cpu_supports("avx2");
+  return pay;
+}
+
 void transform_vertices(const glm::mat4& m, const glm::vec3* position, std::size_t count, int width, int height,
                         const SnappedVertices& out) {
-  const std::size_t groups = count / kLanes;
+  const std::size_t groups = vertex_lanes_pay() ? count / kLanes : 0;
   if (groups) transform_groups(m, position, groups, width, height, out);
   for (std::size_t i = groups * kLanes; i < count; ++i) {
     const glm::vec4 clip = m * glm::vec4(position[i], 1.0f);

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "parashade/vertex_snap.hpp"  // vertex_lanes_pay
+
 namespace parashade {
 
 glm::vec3 world_position(const glm::mat4& model, glm::vec3 p) { return glm::vec3(model * glm::vec4(p, 1.0f)); }
@@ -76,7 +78,7 @@ void world_and_normal_groups(const glm::mat4& model, const glm::mat3& normal_mat
 
 void world_and_normals(const glm::mat4& model, const glm::mat3& normal_matrix, const glm::vec3* position,
                        const glm::vec3* normals, std::size_t count, glm::vec3* world, glm::vec3* normal) {
-  const std::size_t groups = count / kLanes;
+  const std::size_t groups = vertex_lanes_pay() ? count / kLanes : 0;
   if (groups) world_and_normal_groups(model, normal_matrix, position, normals, groups, world, normal);
   for (std::size_t i = groups * kLanes; i < count; ++i) {
     if (world) world[i] = world_position(model, position[i]);
