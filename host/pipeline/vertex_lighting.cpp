@@ -1,7 +1,8 @@
 #include "parashade/vertex_lighting.hpp"
 
 #include <cmath>
-#include <cstring>
+
+#include "parashade/vertex_lanes.hpp"
 
 namespace parashade {
 
@@ -47,47 +48,15 @@ glm::vec3 VertexLighting::shade(std::uint32_t material, glm::vec3 p, glm::vec3 n
 
 namespace {
 
-// kLanes floats as one vector (GCC/Clang vector extensions: +, -, *, / are the IEEE operations lane
-// by lane, SSE on any x86-64); comparisons give lanes of all ones (true) or zero. Casts between the
-// two types keep the bits.
-#define PARASHADE_LANE inline __attribute__((always_inline))
-typedef float Floats __attribute__((vector_size(4 * VertexLighting::kLanes)));
-typedef int Mask __attribute__((vector_size(4 * VertexLighting::kLanes)));
+using namespace vertex_lanes;
+static_assert(VertexLighting::kLanes == vertex_lanes::kLanes, "the vertex stage's lanes");
 
-struct Vec3s {
-  Floats x, y, z;
-};
-
-PARASHADE_LANE Floats splat(float v) {
-  Floats r;
-  for (int k = 0; k < VertexLighting::kLanes; ++k) r[k] = v;
-  return r;
-}
-
-PARASHADE_LANE Floats sqrt_lanes(Floats v) {  // correctly rounded lane by lane, as std::sqrt(float)
-  for (int k = 0; k < VertexLighting::kLanes; ++k) v[k] = std::sqrt(v[k]);
-  return v;
-}
-
-PARASHADE_LANE Floats select(Mask m, Floats yes, Floats no) { return Floats((m & Mask(yes)) | (~m & Mask(no))); }
-// glm::dot of vec3: (x*x' + y*y') + z*z'; glm::length = sqrt(dot(a, a)).
-PARASHADE_LANE Floats dot(const Vec3s& a, const Vec3s& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-PARASHADE_LANE Floats length(const Vec3s& a) { return sqrt_lanes(dot(a, a)); }
-PARASHADE_LANE Vec3s minus(const Vec3s& a, const Vec3s& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-PARASHADE_LANE Vec3s plus(const Vec3s& a, const Vec3s& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-PARASHADE_LANE Vec3s divide(const Vec3s& a, Floats d) { return {a.x / d, a.y / d, a.z / d}; }
-PARASHADE_LANE Vec3s splat3(glm::vec3 v) { return {splat(v.x), splat(v.y), splat(v.z)}; }
-PARASHADE_LANE Vec3s select3(Mask m, const Vec3s& yes, const Vec3s& no) {
-  return {select(m, yes.x, no.x), select(m, yes.y, no.y), select(m, yes.z, no.z)};
-}
 // out + (i * k) * s where m holds (glm: light.intensity * m.diffuse * n_dot_l, added to out).
-PARASHADE_LANE void add_where(Mask m, Vec3s& out, glm::vec3 ik, Floats s) {
+inline __attribute__((always_inline)) void add_where(Mask m, Vec3s& out, glm::vec3 ik, Floats s) {
   out.x = select(m, out.x + splat(ik.x) * s, out.x);
   out.y = select(m, out.y + splat(ik.y) * s, out.y);
   out.z = select(m, out.z + splat(ik.z) * s, out.z);
 }
-
-#undef PARASHADE_LANE
 
 }  // namespace
 
@@ -99,11 +68,7 @@ __attribute__((target_clones("avx2", "default"))) void VertexLighting::shade_lan
                                                                                  const glm::vec3* n_in,
                                                                                  glm::vec3* out_colour) const {
   const PreparedMaterial& m = materials_[material];
-  Vec3s p, n;
-  for (int k = 0; k < kLanes; ++k) {
-    p.x[k] = p_in[k].x, p.y[k] = p_in[k].y, p.z[k] = p_in[k].z;
-    n.x[k] = n_in[k].x, n.y[k] = n_in[k].y, n.z[k] = n_in[k].z;
-  }
+  const Vec3s p = load3(p_in), n = load3(n_in);
   const Floats zero = splat(0.0f);
   Vec3s out = splat3(m.ambient_term);
   Vec3s v = splat3(view_dir_);
@@ -133,7 +98,7 @@ __attribute__((target_clones("avx2", "default"))) void VertexLighting::shade_lan
       if (specular[k]) power[k] = std::pow(n_dot_h[k], m.shininess);
     add_where(specular, out, light.intensity * m.specular, power);
   }
-  for (int k = 0; k < kLanes; ++k) out_colour[k] = {out.x[k], out.y[k], out.z[k]};
+  store3(out, out_colour);
 }
 
 }  // namespace parashade

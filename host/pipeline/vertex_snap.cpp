@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "parashade/screen_geometry.hpp"
+#include "parashade/vertex_lanes.hpp"
 
 namespace parashade {
 
@@ -33,72 +34,56 @@ Snapped snap(const glm::vec4& c, int width, int height) {
 
 namespace {
 
-// kLanes vertices as vectors (GCC/Clang vector extensions: the IEEE operations lane by lane; the file is
-// built without contraction into fused multiply-adds, so each lane repeats the scalar functions' bits).
-constexpr int kLanes = 8;
-typedef float Floats __attribute__((vector_size(4 * kLanes)));
-typedef double Doubles __attribute__((vector_size(8 * kLanes)));
-typedef int Ints __attribute__((vector_size(4 * kLanes)));
+using namespace vertex_lanes;
+using Ints = Mask;  // the same lanes holding integers (outcodes, screen positions)
 
-template <typename V, typename T>
-inline __attribute__((always_inline)) V splat(T v) {
-  V r;
+inline __attribute__((always_inline)) Doubles splat_double(double v) {
+  Doubles r;
   for (int k = 0; k < kLanes; ++k) r[k] = v;
   return r;
 }
 
-// Lanes of `yes` where the mask is all ones, else of `no` (masks from comparisons: -1 or 0).
-inline __attribute__((always_inline)) Ints select(Ints m, Ints yes, Ints no) { return (m & yes) | (~m & no); }
-
 // Per lane: the outcode bit where `inside` (a comparison) is false.
-inline __attribute__((always_inline)) Ints outside(Ints inside, int bit) { return ~inside & splat<Ints>(bit); }
+inline __attribute__((always_inline)) Ints outside(Mask inside, int bit) { return ~inside & bit; }
 
 // std::lrint of doubles within +-2^30 (after the clamp): adding and subtracting 1.5 * 2^52 rounds to the
 // nearest integer, ties to even, as lrint in the default rounding mode; then the exact conversion. NaN
 // lanes give 0, as int(lrint(NaN)) on x86-64 (the low half of 0x8000000000000000).
 inline __attribute__((always_inline)) Ints round_to_int(Doubles x) {
-  const Doubles magic = splat<Doubles>(6755399441055744.0);
+  const Doubles magic = splat_double(6755399441055744.0);
   const Doubles r = (x + magic) - magic;
-  return __builtin_convertvector(r == r ? r : splat<Doubles>(0.0), Ints);
+  return __builtin_convertvector(r == r ? r : splat_double(0.0), Ints);
 }
 
 inline __attribute__((always_inline)) Doubles clamp(Doubles x, double limit) {
-  const Doubles lo = splat<Doubles>(-limit), hi = splat<Doubles>(limit);
+  const Doubles lo = splat_double(-limit), hi = splat_double(limit);
   return x < lo ? lo : (hi < x ? hi : x);  // std::clamp's order: NaN stays NaN
 }
 
 inline __attribute__((always_inline)) void transform_lanes(const glm::mat4& m, const glm::vec3* position, int width,
                                                            int height, std::size_t i, const SnappedVertices& out) {
-  float coordinate[3][kLanes];
-  for (int k = 0; k < kLanes; ++k)
-    for (int j = 0; j < 3; ++j) coordinate[j][k] = position[i + std::size_t(k)][j];
-  Floats p[3];
-  std::memcpy(p, coordinate, sizeof p);
-  // glm's mat4 * vec4: (m[0] * x + m[1] * y) + (m[2] * z + m[3] * w), w = 1.
+  const Vec3s p = load3(position + i);
   Floats c[4];
-  for (int j = 0; j < 4; ++j)
-    c[j] = (splat<Floats>(m[0][j]) * p[0] + splat<Floats>(m[1][j]) * p[1]) +
-           (splat<Floats>(m[2][j]) * p[2] + splat<Floats>(m[3][j]));
+  for (int j = 0; j < 4; ++j) c[j] = transform(m, p, j);
   const Floats sum = ((c[0] + c[1]) + c[2]) + c[3];
-  const Ints finite = (sum - sum) == splat<Floats>(0.0f);  // false for NaN and Inf
-  const Floats g = splat<Floats>(kGuardBand) * c[3], zero = splat<Floats>(0.0f);
+  const Mask finite = (sum - sum) == splat(0.0f);  // false for NaN and Inf
+  const Floats g = splat(kGuardBand) * c[3], zero = splat(0.0f);
   const Ints planes = outside(c[2] + c[3] >= zero, kNear) | outside(c[3] - c[2] >= zero, kFar) |
                       outside(c[0] + g >= zero, kLeft) | outside(g - c[0] >= zero, kRight) |
                       outside(c[1] + g >= zero, kBottom) | outside(g - c[1] >= zero, kTop);
-  const Ints code = select(finite, planes, splat<Ints>(kNonFinite));
+  const Ints code = (finite & planes) | (~finite & kNonFinite);
 
-  const Ints valid = c[3] > zero;
-  const Doubles inv = splat<Doubles>(1.0) / __builtin_convertvector(c[3], Doubles);
-  const Doubles half = splat<Doubles>(0.5), sub = splat<Doubles>(double(kSubpixel));
+  const Mask valid = c[3] > zero;
+  const Doubles inv = splat_double(1.0) / __builtin_convertvector(c[3], Doubles);
+  const Doubles half = splat_double(0.5), sub = splat_double(double(kSubpixel));
   const Doubles cx = __builtin_convertvector(c[0], Doubles), cy = __builtin_convertvector(c[1], Doubles);
-  const Doubles x = ((cx * inv * half + half) * splat<Doubles>(double(width))) * sub;
-  const Doubles y = ((half - cy * inv * half) * splat<Doubles>(double(height))) * sub;
+  const Doubles x = ((cx * inv * half + half) * splat_double(double(width))) * sub;
+  const Doubles y = ((half - cy * inv * half) * splat_double(double(height))) * sub;
   constexpr double kLimit = double(1 << 30);
   const Ints xi = round_to_int(clamp(x, kLimit)) & valid, yi = round_to_int(clamp(y, kLimit)) & valid;
   const Floats depth = __builtin_convertvector(__builtin_convertvector(c[2], Doubles) * inv * half + half, Floats);
   const Floats inv_w = __builtin_convertvector(inv, Floats);
-  const Floats depth_out = (Floats)select(valid, (Ints)depth, (Ints)splat<Floats>(1.0f));
-  const Floats inv_w_out = (Floats)(valid & (Ints)inv_w);
+  const Floats depth_out = select(valid, depth, splat(1.0f)), inv_w_out = select(valid, inv_w, zero);
 
   for (int k = 0; k < kLanes; ++k) {
     out.clip[i + std::size_t(k)] = {c[0][k], c[1][k], c[2][k], c[3][k]};
@@ -110,9 +95,10 @@ inline __attribute__((always_inline)) void transform_lanes(const glm::mat4& m, c
 }
 
 // Whole groups of kLanes vertices from the first. Clones for AVX-512 and AVX2 machines (8 lanes of doubles
-// are one or two registers; SSE2 needs four and spills, so the baseline clone is not called: vertex_lanes_pay). The scalar tail stays outside the clones: GCC 12
-// left out the vzeroupper on a clone's return path through scalar code, and the dirty upper register
-// state then slowed the SSE code that ran next on that thread (Phong's setup 1.5x).
+// are one or two registers; SSE2 needs four and spills, so the baseline clone is not called:
+// vertex_lanes::pay). The scalar tail stays outside the clones: GCC 12 left out the vzeroupper on a
+// clone's return path through scalar code, and the dirty upper register state then slowed the SSE code
+// that ran next on that thread (Phong's setup 1.5x).
 __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
 void transform_groups(const glm::mat4& m, const glm::vec3* position, std::size_t groups, int width, int height,
                       const SnappedVertices& out) {
@@ -121,16 +107,11 @@ void transform_groups(const glm::mat4& m, const glm::vec3* position, std::size_t
 
 }  // namespace
 
-bool vertex_lanes_pay() {
-  static const bool pay = __builtin_cpu_supports("avx2");
-  return pay;
-}
-
 void transform_vertices(const glm::mat4& m, const glm::vec3* position, std::size_t count, int width, int height,
                         const SnappedVertices& out) {
-  const std::size_t groups = vertex_lanes_pay() ? count / kLanes : 0;
+  const std::size_t groups = vertex_lanes::pay() ? count / vertex_lanes::kLanes : 0;
   if (groups) transform_groups(m, position, groups, width, height, out);
-  for (std::size_t i = groups * kLanes; i < count; ++i) {
+  for (std::size_t i = groups * vertex_lanes::kLanes; i < count; ++i) {
     const glm::vec4 clip = m * glm::vec4(position[i], 1.0f);
     out.clip[i] = clip;
     out.outcode[i] = outcode_of(clip);

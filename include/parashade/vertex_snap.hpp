@@ -25,13 +25,9 @@ struct Snapped {
 // inside the guard band (the callers guarantee it); values are clamped so nothing overflows otherwise.
 Snapped snap(const glm::vec4& c, int width, int height);
 
-// Whether the vertex stage's lanes pay on this machine: with AVX2 or better. The baseline x86-64 build of them
-// (SSE2) was slower than the scalar loop (sphere_2m's vertex stage 1.16-1.23x), so without AVX2
-// transform_vertices and world_and_normals (vertex_world.hpp) run the scalar definitions: the same bits.
-bool vertex_lanes_pay();
-
 // Vertices [0, count) of `position` through `m` (model-view-projection, glm's float matrix product):
-// clip[i] = m * (position[i], 1), outcode[i] = outcode_of(clip[i]), and snap(clip[i]) into xy, depth, inv_w.
+// clip[i] = m * (position[i], 1), outcode[i] = outcode_of(clip[i]), and snap(clip[i]) into xy, depth, inv_w;
+// eight at a time in vector lanes where they pay (vertex_lanes.hpp), the same bits.
 struct SnappedVertices {
   glm::vec4* clip;
   std::uint8_t* outcode;

@@ -78,6 +78,12 @@ TEST(VertexSnapLanes, EqualsScalarBitForBit) {
   expect_same_as_scalar(glm::mat4(1.0f), p, 1920, 1080, "identity, 1920x1080");
   expect_same_as_scalar(perspective(), p, 3840, 2160, "perspective");
   expect_same_as_scalar(glm::ortho(-2.0f, 2.0f, -1.5f, 1.5f, 0.1f, 10.0f) * view(), p, 641, 479, "orthographic");
+  // Every entry of the matrix nonzero (a model turned about a skew axis, scaled and moved), so each clip
+  // coordinate sums four products and the order of the sums shows.
+  const glm::mat4 model = glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(0.3f, -0.2f, 0.5f)), 0.7f,
+                                                 glm::vec3(0.3f, 1.0f, -0.2f)),
+                                     glm::vec3(1.5f, 0.75f, 1.25f));
+  expect_same_as_scalar(perspective() * model, p, 1920, 1080, "perspective, skew model");
 }
 
 // The inputs reach every branch whose lanes could differ from the scalar code.
