@@ -21,6 +21,13 @@ void set_host_threads(unsigned threads);
 // results must not depend on which thread runs an item. Exceptions from body are rethrown (the first).
 void parallel_for(std::size_t count, const std::function<void(std::size_t)>& body);
 
+// parallel_for when `worth_waking`, else the same calls in order on the calling thread: a job of a
+// tenth of a millisecond or less finishes sooner without waking a worker and waiting for it.
+inline void parallel_for_if(bool worth_waking, std::size_t count, const std::function<void(std::size_t)>& body) {
+  if (worth_waking) return parallel_for(count, body);
+  for (std::size_t i = 0; i < count; ++i) body(i);
+}
+
 // Idle workers stop spinning and block until the next parallel_for.
 void parallel_rest();
 
