@@ -48,6 +48,7 @@
 #include "parashade/metrics.hpp"
 #include "parashade/reference.hpp"
 #include "parashade/renderer.hpp"
+#include "parashade/tile_choice.hpp"
 #include "parashade/units.hpp"
 #include "peer/bench_scenes.hpp"
 #include "peer/llvmpipe_peer.hpp"
@@ -177,7 +178,9 @@ void parashade_frame(benchmark::State& state, const std::string& case_name, cons
   const Scene* scene = scene_or_skip(state, scene_name, w, h);
   if (!scene) return;
   reset_peak_rss();
-  Renderer renderer(bench_device(), options);
+  RenderOptions chosen = options;  // the tile `parashade render` takes by default
+  chosen.tile_size = default_tile_size(*scene, options, options.band_record_bytes);
+  Renderer renderer(bench_device(), chosen);
   for (int i = 0; i < 2; ++i) renderer.render(*scene);  // program build, work-group compilation, allocations
   double sum_ms = 0, kernel_ms = 0;
   const Frame* last = nullptr;
@@ -191,11 +194,12 @@ void parashade_frame(benchmark::State& state, const std::string& case_name, cons
   const double n = double(state.iterations());
   common_counters(state, *scene, sum_ms / n, peak);
   state.counters["kernel_ms"] = kernel_ms / n;
+  state.counters["tile_size"] = chosen.tile_size;
   state.counters["triangles_after_culling"] = double(last->stats.geometry.triangles_out);
   if (options.unit_path()) state.counters["modeled_clocks"] = double(last->stats.clocks.clocks);
   if (!options.unit_path() && options.method != Method::combined) {  // the plain path's walk, counted on the host
     FramePipeline pipeline;
-    const LaneUtilization lanes = lane_utilization(pipeline.prepare_frame(*scene, options));
+    const LaneUtilization lanes = lane_utilization(pipeline.prepare_frame(*scene, chosen));
     state.counters["lanes_rows"] = lanes.rows();
     state.counters["lanes_stamps"] = lanes.stamps();
   }

@@ -34,6 +34,7 @@
 #include "parashade/report_header.hpp"
 #include "parashade/scene.hpp"
 #include "parashade/statistics.hpp"
+#include "parashade/tile_choice.hpp"
 #include "parashade/unit_table.hpp"
 
 namespace parashade::cli {
@@ -54,6 +55,7 @@ struct RenderArgs {
   std::string distribute, rank_partition, read_scene;  // --distribute: MPI ranks (docs/distributed.md)
   std::string device_origin = "--device";  // or PARASHADE_DEVICE (device_option.hpp)
   bool no_tuned = false, explicit_config = false, keep_going = false;  // explicit: --tile, --work-items, --cu or --partition given
+  bool tile_given = false;  // --tile given: else default_tile_size (tile_choice.hpp) on one device
 };
 
 // Median of each stage over the timed frames.
@@ -328,6 +330,7 @@ int run_render(const RenderArgs& a) {
       std::cerr << "parashade: warning: tune cache not used: " << e.what() << "\n";
     }
   }
+  if (!a.tile_given && tuned.is_null()) options.tile_size = default_tile_size(scene, options, options.band_record_bytes);
   Renderer renderer(*device, options, unit_devices);
   if (!a.quiet)
     std::cerr << "rendering " << scene.name << " (" << scene.width << "x" << scene.height << ", "
@@ -528,8 +531,10 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("--warmup", a->warmup, "Untimed frames first (program build, work-group compilation; at most " +
                                              std::to_string(kMaxFrames) + ")")
       ->capture_default_str();
-  cmd->add_option("--tile", a->tile, "Screen tile size: " + tile_sizes_text())
-      ->capture_default_str()
+  cmd->add_option("--tile", a->tile,
+                  "Screen tile size: " + tile_sizes_text() + " (default: " + std::to_string(TILE_MAX) +
+                      " for a Gouraud or flat frame on one device that is not streamed in bands, else " +
+                      std::to_string(TILE_DEFAULT) + "; a tuned entry's when there is one)")
       ->check(CLI::IsMember(tile_sizes()));
   cmd->add_option("--work-items", a->work_items,
                   "Kernel work-items, each rendering every N-th tile (0: " + std::to_string(WORK_ITEMS_PER_COMPUTE_UNIT) +
@@ -580,6 +585,7 @@ Command add_render_command(CLI::App& app) {
   return {cmd, [a, cmd]() {
             a->explicit_config = cmd->count("--tile") + cmd->count("--work-items") + cmd->count("--cu") +
                                      cmd->count("--partition") > 0;
+            a->tile_given = cmd->count("--tile") > 0;
             a->device_origin = device_from_environment(a->device);
             return run_render(*a);
           }};

@@ -33,6 +33,12 @@ std::uint32_t* FramePipeline::HostStorage::tile_list(std::size_t entries) {
   return list_.data();
 }
 
+bool frame_streams(const FrameConfig& config, std::size_t screen_triangles, std::size_t record_bytes) {
+  const bool plain = !config.unit_path() && !config.plan && config.band_rows < 0 && config.method != Method::combined;
+  const std::size_t per_record = sizeof(TriangleGeometry) + attribute_floats(config.method) * sizeof(float);
+  return plain && screen_triangles > record_bytes / per_record;
+}
+
 const PreparedFrame& FramePipeline::prepare_frame(const Scene& scene, const FrameConfig& config) {
   return prepare_frame(scene, config, host_);
 }
@@ -53,9 +59,8 @@ int FramePipeline::begin_frame(const Scene& scene, const FrameConfig& config, st
   band_rows_.clear();
   banding_ms_ = 0;
   banding_empty_ = 0;
-  const bool streams = !config.unit_path() && !config.plan && config.band_rows < 0 && config.method != Method::combined;
+  if (!frame_streams(config, geometry_.triangles.size(), record_bytes)) return 1;
   const std::size_t per_record = sizeof(TriangleGeometry) + attribute_floats(config.method) * sizeof(float);
-  if (!streams || geometry_.triangles.size() <= record_bytes / per_record) return 1;
   t0 = Clock::now();
   plan_bands(config, std::max<std::size_t>(1, record_bytes / per_record));
   banding_ms_ = ms_since(t0);

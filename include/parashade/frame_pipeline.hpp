@@ -63,6 +63,11 @@ struct PreparedFrame {
   TileBins bins() const { return {tile_start, tile_list, tiles_x, tiles_y, tile_size}; }
 };
 
+// Whether a frame of `screen_triangles` (after the geometry stage) streams in bands when its records may
+// take `record_bytes` (FramePipeline::begin_frame's rule): only plain frames (no unit, plan, split band or
+// combined method) stream.
+bool frame_streams(const FrameConfig& config, std::size_t screen_triangles, std::size_t record_bytes);
+
 class FramePipeline {
  public:
   // Prepares `scene` as `config` asks (checked: check_frame_config), into the pipeline's own host

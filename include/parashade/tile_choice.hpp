@@ -1,0 +1,19 @@
+#pragma once
+// The screen tile edge a frame gets when none is asked for (`parashade render` without --tile or a tuned
+// entry, bench_llvmpipe). For Gouraud and flat frames 64-pixel tiles repeat each triangle's per-tile work
+// (record loads, span search) in fewer tiles and bin fewer entries, which paid on the small and medium scenes
+// since the kernel shades 4x4 stamps (bench/README.md, run Q). A frame streamed in bands keeps TILE_DEFAULT: a
+// band of 64-pixel tile rows holds too few tiles for the work-items (sphere_2m's kernel 1.32x slower). So do
+// Phong (mixed), and the paths whose spans or counters follow the tiles (units, plans, split bands).
+#include <cstddef>
+
+#include "parashade/frame_config.hpp"
+#include "parashade/scene.hpp"
+
+namespace parashade {
+
+// TILE_MAX for a plain Gouraud or flat frame that does not stream, else TILE_DEFAULT. Runs the geometry stage once to count the frame's screen triangles (FramePipeline's streaming rule,
+// frame_streams), so it costs about one frame's geometry: call it once per scene, not per frame.
+int default_tile_size(const Scene& scene, const FrameConfig& config, std::size_t band_record_bytes);
+
+}  // namespace parashade

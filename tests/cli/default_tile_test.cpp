@@ -1,0 +1,52 @@
+// `render` without --tile (and without a tuned entry) takes the tile size that follows the frame
+// (include/parashade/tile_choice.hpp): 64 for a Gouraud or flat frame that is not streamed in bands, 32 for a
+// streamed one, for Phong and for the unit paths; --tile always wins, and the image never depends on it.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "cli_fixture.hpp"
+
+namespace parashade {
+namespace {
+
+using namespace testing_support;
+
+// 640x360, a 256 x 128 sphere: ~21 000 screen triangles, ~3 MiB of Gouraud records (as band_mib_test's).
+std::string fine_ball() {
+  return R"({
+  "name": "fine ball",
+  "resolution": [640, 360],
+  "camera": {"position": [0, 0, 3], "target": [0, 0, 0], "fov": 45},
+  "lights": [{"type": "directional", "direction": [-0.3, -0.4, -1]}],
+  "objects": [{"shape": {"type": "sphere", "slices": 256, "stacks": 128}}],
+  "cull_backfaces": true
+})";
+}
+
+class CliDefaultTile : public CliTest {
+ protected:
+  int tile_of(const std::filesystem::path& scene, std::vector<std::string> options) {
+    options.push_back("--no-tuned");
+    EXPECT_TRUE(succeeds(render(scene, options)));
+    return read_report()["tile_size"].get<int>();
+  }
+};
+
+TEST_F(CliDefaultTile, FollowsTheFrame) {
+  const auto scene = input("fine.json", fine_ball());
+  EXPECT_EQ(tile_of(scene, {}), 64) << "an unstreamed Gouraud frame";
+  const std::string by_default = bytes_of(image());
+  EXPECT_EQ(tile_of(scene, {"--method", "flat"}), 64);
+  EXPECT_EQ(tile_of(scene, {"--band-mib", "1"}), 32) << "a streamed frame keeps 32-pixel tiles";
+  EXPECT_GT(read_report()["stats"]["bands"].get<int>(), 1);
+  EXPECT_EQ(bytes_of(image()), by_default);
+  EXPECT_EQ(tile_of(scene, {"--method", "phong"}), 32);
+  EXPECT_EQ(tile_of(scene, {"--units", "classic", "--arith", "fixed"}), 32) << "the unit path";
+  EXPECT_EQ(tile_of(scene, {"--tile", "32"}), 32) << "--tile wins";
+  EXPECT_EQ(bytes_of(image()), by_default) << "the tile size changed the image";
+  EXPECT_EQ(tile_of(scene, {"--tile", "16", "--band-mib", "0"}), 16);
+}
+
+}  // namespace
+}  // namespace parashade
