@@ -15,18 +15,6 @@ namespace {
 
 using namespace testing_support;
 
-// 640x360, a 256 x 128 sphere: ~21 000 screen triangles after culling, ~3 MiB of Gouraud records.
-std::string many_triangles_scene() {
-  return R"({
-  "name": "fine ball",
-  "resolution": [640, 360],
-  "camera": {"position": [0, 0, 3], "target": [0, 0, 0], "fov": 45},
-  "lights": [{"type": "directional", "direction": [-0.3, -0.4, -1]}],
-  "objects": [{"shape": {"type": "sphere", "slices": 256, "stacks": 128}}],
-  "cull_backfaces": true
-})";
-}
-
 class CliBandMib : public CliTest {};
 
 TEST_F(CliBandMib, StreamsBelowTheBudgetWithTheSameImage) {

@@ -40,6 +40,19 @@ inline std::string sphere_scene() {
 }
 constexpr int kSphereTriangles = 64;
 
+// 640x360, a 256 x 128 sphere: ~21 000 screen triangles after culling, ~3 MiB of Gouraud records (a frame
+// that streams under a 1 MiB band budget and not under the default).
+inline std::string many_triangles_scene() {
+  return R"({
+  "name": "fine ball",
+  "resolution": [640, 360],
+  "camera": {"position": [0, 0, 3], "target": [0, 0, 0], "fov": 45},
+  "lights": [{"type": "directional", "direction": [-0.3, -0.4, -1]}],
+  "objects": [{"shape": {"type": "sphere", "slices": 256, "stacks": 128}}],
+  "cull_backfaces": true
+})";
+}
+
 // A regular tetrahedron around the origin, faces wound outward: the smallest closed mesh.
 inline std::string tetrahedron_obj() {
   return "# regular tetrahedron\n"

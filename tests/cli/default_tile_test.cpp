@@ -12,18 +12,6 @@ namespace {
 
 using namespace testing_support;
 
-// 640x360, a 256 x 128 sphere: ~21 000 screen triangles, ~3 MiB of Gouraud records (as band_mib_test's).
-std::string fine_ball() {
-  return R"({
-  "name": "fine ball",
-  "resolution": [640, 360],
-  "camera": {"position": [0, 0, 3], "target": [0, 0, 0], "fov": 45},
-  "lights": [{"type": "directional", "direction": [-0.3, -0.4, -1]}],
-  "objects": [{"shape": {"type": "sphere", "slices": 256, "stacks": 128}}],
-  "cull_backfaces": true
-})";
-}
-
 class CliDefaultTile : public CliTest {
  protected:
   int tile_of(const std::filesystem::path& scene, std::vector<std::string> options) {
@@ -34,7 +22,7 @@ class CliDefaultTile : public CliTest {
 };
 
 TEST_F(CliDefaultTile, FollowsTheFrame) {
-  const auto scene = input("fine.json", fine_ball());
+  const auto scene = input("fine.json", many_triangles_scene());
   EXPECT_EQ(tile_of(scene, {}), 64) << "an unstreamed Gouraud frame";
   const std::string by_default = bytes_of(image());
   EXPECT_EQ(tile_of(scene, {"--method", "flat"}), 64);
