@@ -31,6 +31,7 @@
 #include "parashade/report.hpp"
 #include "parashade/report_header.hpp"
 #include "parashade/statistics.hpp"
+#include "parashade/tile_choice.hpp"
 #include "tune_cache.hpp"
 #include "tune_export.hpp"
 #include "tune_space.hpp"
@@ -177,6 +178,8 @@ int run_tune(const TuneArgs& a) {
   TunePoints points;
   step([&] {
     scene = load_scene_at(a.scene, size, a.size);
+    // The default configuration is the layout `render` takes without --tile (tile_choice.hpp).
+    base.tile_size = default_tile_size(scene, base, base.band_record_bytes);
     if (rank == 0) {
       if (!a.report.empty()) check_report_destination(a.report);
       if (!a.export_kt.empty()) check_report_destination(a.export_kt);
