@@ -56,8 +56,7 @@ double now_ms() { return MPI_Wtime() * 1e3; }
 double prepare_of(const FrameTimings& t) { return t.geometry_ms + t.setup_ms + t.binning_ms + t.planning_ms; }
 
 std::size_t record_bytes(const RenderOptions& o, std::size_t records) {
-  return records * (sizeof(TriangleGeometry) + attribute_floats(o.method) * sizeof(float) +
-                    (o.arith.fixed ? sizeof(FixedPlanes) : 0));
+  return records * (triangle_record_bytes(o.method) + (o.arith.fixed ? sizeof(FixedPlanes) : 0));
 }
 
 // The scene's faces assigned to ranks by the planner's strategies, from the modeled cost of each face

@@ -33,10 +33,16 @@ std::uint32_t* FramePipeline::HostStorage::tile_list(std::size_t entries) {
   return list_.data();
 }
 
+bool frame_can_stream(const FrameConfig& config) {
+  return !config.unit_path() && !config.plan && config.band_rows < 0 && config.method != Method::combined;
+}
+
+std::size_t triangle_record_bytes(Method method) {
+  return sizeof(TriangleGeometry) + attribute_floats(method) * sizeof(float);
+}
+
 bool frame_streams(const FrameConfig& config, std::size_t screen_triangles, std::size_t record_bytes) {
-  const bool plain = !config.unit_path() && !config.plan && config.band_rows < 0 && config.method != Method::combined;
-  const std::size_t per_record = sizeof(TriangleGeometry) + attribute_floats(config.method) * sizeof(float);
-  return plain && screen_triangles > record_bytes / per_record;
+  return frame_can_stream(config) && screen_triangles > record_bytes / triangle_record_bytes(config.method);
 }
 
 const PreparedFrame& FramePipeline::prepare_frame(const Scene& scene, const FrameConfig& config) {
@@ -60,9 +66,8 @@ int FramePipeline::begin_frame(const Scene& scene, const FrameConfig& config, st
   banding_ms_ = 0;
   banding_empty_ = 0;
   if (!frame_streams(config, geometry_.triangles.size(), record_bytes)) return 1;
-  const std::size_t per_record = sizeof(TriangleGeometry) + attribute_floats(config.method) * sizeof(float);
   t0 = Clock::now();
-  plan_bands(config, std::max<std::size_t>(1, record_bytes / per_record));
+  plan_bands(config, std::max<std::size_t>(1, record_bytes / triangle_record_bytes(config.method)));
   banding_ms_ = ms_since(t0);
   return int(band_rows_.size()) - 1;
 }

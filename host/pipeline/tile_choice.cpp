@@ -7,8 +7,8 @@ namespace parashade {
 
 int default_tile_size(const Scene& scene, const FrameConfig& config, std::size_t band_record_bytes) {
   // Phong keeps TILE_DEFAULT: 64-pixel tiles were mixed for it (the spheres 0.86-0.98x, the teapot 1.01-1.08x).
-  const bool plain = !config.unit_path() && !config.plan && config.band_rows < 0;
-  if (!plain || (config.method != Method::gouraud && config.method != Method::flat)) return TILE_DEFAULT;
+  if (!frame_can_stream(config) || (config.method != Method::gouraud && config.method != Method::flat))
+    return TILE_DEFAULT;
   ScreenGeometry g;
   build_screen_geometry(scene, {config.method, false}, g);
   return frame_streams(config, g.triangles.size(), band_record_bytes) ? TILE_DEFAULT : TILE_MAX;

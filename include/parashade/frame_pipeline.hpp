@@ -63,9 +63,13 @@ struct PreparedFrame {
   TileBins bins() const { return {tile_start, tile_list, tiles_x, tiles_y, tile_size}; }
 };
 
+// Whether a frame of this configuration may stream in bands: a plain frame (no unit, plan, split band or
+// combined method).
+bool frame_can_stream(const FrameConfig& config);
+// Bytes of one triangle's record and attributes for `method` (what a band's budget counts).
+std::size_t triangle_record_bytes(Method method);
 // Whether a frame of `screen_triangles` (after the geometry stage) streams in bands when its records may
-// take `record_bytes` (FramePipeline::begin_frame's rule): only plain frames (no unit, plan, split band or
-// combined method) stream.
+// take `record_bytes` (FramePipeline::begin_frame's rule).
 bool frame_streams(const FrameConfig& config, std::size_t screen_triangles, std::size_t record_bytes);
 
 class FramePipeline {
