@@ -143,6 +143,9 @@ INLINE void shade_segment(__global const TriangleGeometry* t, __global const flo
 }
 #endif
 
+#ifndef SHADE_EVERY_LANE
+#define SHADE_EVERY_LANE 0
+#endif
 #ifndef DEFER_STAMPS
 #define DEFER_STAMPS 0
 #endif
@@ -167,7 +170,7 @@ INLINE void shade_stamp(__global const TriangleGeometry* t, __global const float
   const floatV frel = convert_floatV(rel), fdy = convert_floatV(dy);
   const floatV z = (t->z_ref + t->z_ddy * fdy) + t->z_ddx * frel;
   const intV pass = inside & isless(z, depth[slot]);
-  if (!any_lanes(pass)) return;
+  if (!SHADE_EVERY_LANE && !any_lanes(pass)) return;
   depth[slot] = select(depth[slot], z, pass);
 #if DEFER_STAMPS
   if (deferred) {
@@ -251,11 +254,10 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
 }
 #endif
 
-/* A small triangle's (TRIANGLE_SMALL) coverage of a stamp: small_triangle_inside with a row per lane. */
-INLINE intV small_stamp_inside(__global const TriangleGeometry* t, intV rel, intV dy) {
-  intV inside = (intV)(-1);
-  for (int e = 0; e < 3; ++e) inside &= ((intV)(int)t->edge_c[e] + t->edge_b[e] * dy + t->edge_a[e] * rel) >= 0;
-  return inside;
+/* A small triangle's (TRIANGLE_SMALL) edge function e at rows dy, columns x0 (its row term): exact in 32 bits over
+ * the box and beyond (span.h). */
+INLINE intV small_stamp_row(__global const TriangleGeometry* t, int e, intV dy) {
+  return (intV)(int)t->edge_c[e] + t->edge_b[e] * dy;
 }
 #endif
 
@@ -440,9 +442,12 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
         for (int sy = sy_first; sy <= sy_last; ++sy) {
           const intV dy = STAMP_ROW + (tile_y + sy * STAMP - y0);
           const intV rows = (dy >= row_first - y0) & (dy <= row_last - y0);
+          const intV r0 = small_stamp_row(t, 0, dy), r1 = small_stamp_row(t, 1, dy), r2 = small_stamp_row(t, 2, dy);
           for (int sx = sx_first; sx <= sx_last; ++sx) {
             const intV rel = STAMP_COLUMN + (tile_x + sx * STAMP - x0);
-            const intV inside = small_stamp_inside(t, rel, dy) & rows & (rel >= lo) & (rel <= hi);
+            /* All three edges >= 0: no sign bit in their OR. */
+            const intV inside = (((r0 + t->edge_a[0] * rel) | (r1 + t->edge_a[1] * rel) | (r2 + t->edge_a[2] * rel)) >= 0) &
+                                rows & (rel >= lo) & (rel <= hi);
             shade_stamp(t, attr, dy, rel, inside, sy * STAMPS_X + sx, depth, cr, cg, cb, lights, materials, viewer
                         DEFER_ARGS);
           }
