@@ -2,7 +2,8 @@
  * covered pixel centres (the coverage rule of screen_geometry.hpp). Per edge, the crossing is
  * estimated in float, q = -E_row / a, and settled by exact 64-bit evaluation of the edge function at
  * the candidate and its neighbour. |q| <= 4097 within a window and the estimate's relative error is
- * below 2^-22, so it is off by less than 0.001 pixel and one correction step each way is enough. */
+ * below 2^-22 (2^-21 with a division of 2.5 ulp, OpenCL's least for float), so it is off by less than
+ * 0.002 pixel and one correction step each way is enough. */
 #ifndef PARASHADE_SPAN_H
 #define PARASHADE_SPAN_H
 
@@ -10,6 +11,10 @@
 
 typedef long16 longV;
 #define convert_longV convert_long16
+
+/* 1/a, the seed of the span search, computed here rather than stored in the record: the records are what
+ * setup writes and the kernel reads per triangle, and only the span search of larger triangles needs it. */
+INLINE float edge_reciprocal(long a) { return a != 0 ? 1.0f / (float)a : 0.0f; }
 
 /* The span search of row_spans for one edge, in vector type T (long or int lanes): r holds E at x = x0 on
  * each row, a the x increment; narrows [lo_v, hi_v]. */
@@ -43,7 +48,7 @@ INLINE void row_spans(__global const TriangleGeometry* t, intV dy, intV* lo_out,
   for (int e = 0; e < 3; ++e) {
     const long a = t->edge_a[e];
     const longV r = (longV)t->edge_c[e] + dyl * (long)t->edge_b[e]; /* E at x = x0 on each row */
-    SETTLE_SPAN_EDGE(longV, convert_longV, r, a, t->edge_inv_a[e], lo_v, hi_v);
+    SETTLE_SPAN_EDGE(longV, convert_longV, r, a, edge_reciprocal(a), lo_v, hi_v);
   }
   *lo_out = lo_v;
   *hi_out = hi_v;
@@ -67,7 +72,7 @@ INLINE void row_spans_small(__global const TriangleGeometry* t, intV dy, intV* l
   for (int e = 0; e < 3; ++e) {
     const int a = t->edge_a[e];
     const intV r = (intV)(int)t->edge_c[e] + dy * t->edge_b[e];
-    SETTLE_SPAN_EDGE(intV, convert_intV, r, a, t->edge_inv_a[e], lo_v, hi_v);
+    SETTLE_SPAN_EDGE(intV, convert_intV, r, a, edge_reciprocal(a), lo_v, hi_v);
   }
   *lo_out = lo_v;
   *hi_out = hi_v;

@@ -4,7 +4,7 @@
  * Coverage: for edge e, E_e(x, y) = edge_c[e] + edge_a[e]*(x - x0) + edge_b[e]*(y - y0) is the edge
  * function of screen_geometry.hpp at the centre of pixel (x, y), minus the edge's top-left bias; the
  * pixel is covered when all three are >= 0. edge_a, edge_b are exact (|.| < 2^31 in the guard band),
- * edge_c needs 64 bits. edge_inv_a = 1/edge_a only seeds the span-end search; the result is exact.
+ * edge_c needs 64 bits.
  * Small triangles (vertex extent <= SMALL_EXTENT pixels both ways) have |E| < 2^30 over their box and
  * the 16 pixels beyond it, so the kernels may evaluate their edge functions per pixel in 32 bits.
  * Planes: value(x, y) = ref + ddx*(x - x0) + ddy*(y - y0), with (x0, y0) the bounding box corner. */
@@ -30,7 +30,6 @@ typedef struct {
   ps_long edge_c[3];
   ps_int edge_a[3];
   ps_int edge_b[3];
-  ps_float edge_inv_a[3];
   ps_short x0, y0, x1, y1;  /* pixels whose centres may be covered, clamped to the screen; empty if x0 > x1 */
   ps_float z_ref, z_ddx, z_ddy;  /* window depth plane */
   ps_int flags;                  /* TRIANGLE_SMALL */
@@ -40,7 +39,7 @@ typedef struct {
 
 /* Per-method attribute records: ATTR_* floats per triangle, indexed like TriangleGeometry. */
 #define FLAT_ATTR_FLOATS 4      /* r, g, b (levels), unused */
-#define GOURAUD_ATTR_FLOATS 12  /* ref r,g,b; ddx r,g,b (the constant span increment dI_G); ddy r,g,b; 3 unused */
+#define GOURAUD_ATTR_FLOATS 9  /* ref r,g,b; ddx r,g,b (the constant span increment dI_G); ddy r,g,b */
 /* Phong: normal ref xyz, ddx xyz, ddy xyz; position ref xyz, ddx xyz, ddy xyz; material; 3 spare slots
  * that the combined method's per-triangle choice uses (triangle_choice.hpp). A triangle it gives to
  * Gouraud holds its colour planes (Gouraud's layout) in slots 0..8 instead of the normal planes. */

@@ -46,7 +46,6 @@ DdaRowTable apply_dda_coverage(const ScreenGeometry& g, TriangleGeometry* record
     for (int e = 0; e < 3; ++e) {
       r.edge_c[e] = 0;
       r.edge_a[e] = r.edge_b[e] = 0;
-      r.edge_inv_a[e] = 0.0f;
     }
     for (int y = y0; y <= y1; ++y) {
       const glm::ivec2 s = spans.rows[std::size_t(y - spans.y0)];

@@ -145,8 +145,6 @@ std::uint64_t setup_triangle_range(const ScreenGeometry& g, Method method, Trian
       r.edge_c[e] = dx * (cy - vi.y) - dy * (cx - vi.x) - edge_bias(glm::ivec2(vi), glm::ivec2(vj));
       r.edge_a[e] = ps_int(-dy * kSubpixel);
       r.edge_b[e] = ps_int(dx * kSubpixel);
-      // Seeds the span search (kernels/span.h): large triangles, and all triangles on the unit path.
-      r.edge_inv_a[e] = r.edge_a[e] != 0 ? 1.0f / float(r.edge_a[e]) : 0.0f;
     }
 
     const glm::dvec2 s[3] = {glm::dvec2(p[0]) / double(kSubpixel), glm::dvec2(p[1]) / double(kSubpixel),
@@ -182,7 +180,6 @@ std::uint64_t setup_triangle_range(const ScreenGeometry& g, Method method, Trian
       case Method::gouraud: {
         const auto ch = colour_planes();
         store(attr, 0, ch[0], ch[1], ch[2]);
-        attr[9] = attr[10] = attr[11] = 0.0f;
         if (fixed) {
           for (int k = 0; k < 3; ++k) {
             fixed[rec].ref[k] = to_plane_register(ch[k].ref);

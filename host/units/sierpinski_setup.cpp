@@ -190,7 +190,6 @@ std::uint64_t split_sierpinski(const ScreenGeometry& g, const UnitConfig& unit, 
           lr.edge_c[e] = (leaf.sign > 0 ? E.at(corner - shift) : E.at(shift - corner)) - bias;
           lr.edge_a[e] = ps_int(-leaf.sign * E.dy * kSubpixel);
           lr.edge_b[e] = ps_int(leaf.sign * E.dx * kSubpixel);
-          lr.edge_inv_a[e] = lr.edge_a[e] != 0 ? 1.0f / float(lr.edge_a[e]) : 0.0f;
         }
         // Depth and the float planes: the triangle's own, at this record's corner (the ideal values).
         move_plane_anchor(r, a, nullptr, int(x0), int(y0), lr, attr_out + o * GOURAUD_ATTR_FLOATS, nullptr);

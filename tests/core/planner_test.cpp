@@ -70,7 +70,6 @@ TriangleGeometry staircase(int x0, int y0) {
   t.edge_a[0] = 1;  t.edge_b[0] = 0;  t.edge_c[0] = 0;   // x >= 0
   t.edge_a[1] = 0;  t.edge_b[1] = 1;  t.edge_c[1] = 0;   // y >= 0
   t.edge_a[2] = -1; t.edge_b[2] = -1; t.edge_c[2] = 3;   // 3 - x - y >= 0
-  for (int e = 0; e < 3; ++e) t.edge_inv_a[e] = t.edge_a[e] ? 1.0f / float(t.edge_a[e]) : 0.0f;
   t.x0 = ps_short(x0);
   t.y0 = ps_short(y0);
   t.x1 = ps_short(x0 + 3);
