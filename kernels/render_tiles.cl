@@ -170,14 +170,15 @@ INLINE void shade_stamp(__global const TriangleGeometry* t, __global const float
   const floatV frel = convert_floatV(rel), fdy = convert_floatV(dy);
   const floatV z = (t->z_ref + t->z_ddy * fdy) + t->z_ddx * frel;
   const intV pass = inside & isless(z, depth[slot]);
-  if (!SHADE_EVERY_LANE && !any_lanes(pass)) return;
-  depth[slot] = select(depth[slot], z, pass);
 #if DEFER_STAMPS
-  if (deferred) {
+  if (deferred) { /* two selects: cheaper than asking whether any lane passed */
+    depth[slot] = select(depth[slot], z, pass);
     winner[slot] = select(winner[slot], (intV)(int)ti, pass);
     return;
   }
 #endif
+  if (!SHADE_EVERY_LANE && !any_lanes(pass)) return;
+  depth[slot] = select(depth[slot], z, pass);
   floatV sr, sg, sb;
 #if COMBINED
   shade_points(attr, fdy, frel, &sr, &sg, &sb, lights, materials, viewer);
