@@ -255,11 +255,6 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
 }
 #endif
 
-/* A small triangle's (TRIANGLE_SMALL) edge function e at rows dy, columns x0 (its row term): exact in 32 bits over
- * the box and beyond (span.h). */
-INLINE intV small_stamp_row(__global const TriangleGeometry* t, int e, intV dy) {
-  return (intV)(int)t->edge_c[e] + t->edge_b[e] * dy;
-}
 #endif
 
 /* VEC pixels of the frame from (x, y) on, those left of the frame's right edge. */
@@ -443,7 +438,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
         for (int sy = sy_first; sy <= sy_last; ++sy) {
           const intV dy = STAMP_ROW + (tile_y + sy * STAMP - y0);
           const intV rows = (dy >= row_first - y0) & (dy <= row_last - y0);
-          const intV r0 = small_stamp_row(t, 0, dy), r1 = small_stamp_row(t, 1, dy), r2 = small_stamp_row(t, 2, dy);
+          const intV r0 = small_edge_row(t, 0, dy), r1 = small_edge_row(t, 1, dy), r2 = small_edge_row(t, 2, dy);
           for (int sx = sx_first; sx <= sx_last; ++sx) {
             const intV rel = STAMP_COLUMN + (tile_x + sx * STAMP - x0);
             /* All three edges >= 0: no sign bit in their OR. */

@@ -65,13 +65,19 @@ INLINE int rect_covered(__global const TriangleGeometry* t, int lo, int hi, int 
   return 1;
 }
 
+/* A small triangle's (TRIANGLE_SMALL) edge function e at column x0 of rows dy (its row term), in 32 bits: exact over
+ * its box and the 16 pixels beyond (triangle_record.h). */
+INLINE intV small_edge_row(__global const TriangleGeometry* t, int e, intV dy) {
+  return (intV)(int)t->edge_c[e] + t->edge_b[e] * dy;
+}
+
 /* The same for a small triangle (TRIANGLE_SMALL) in 32-bit lanes: its edge values stay below 2^30 over
  * its box and 16 pixels beyond, which is all the search evaluates, so the spans are identical. */
 INLINE void row_spans_small(__global const TriangleGeometry* t, intV dy, intV* lo_out, intV* hi_out, int lo, int hi) {
   intV lo_v = (intV)lo, hi_v = (intV)hi;
   for (int e = 0; e < 3; ++e) {
     const int a = t->edge_a[e];
-    const intV r = (intV)(int)t->edge_c[e] + dy * t->edge_b[e];
+    const intV r = small_edge_row(t, e, dy);
     SETTLE_SPAN_EDGE(intV, convert_intV, r, a, edge_reciprocal(a), lo_v, hi_v);
   }
   *lo_out = lo_v;
