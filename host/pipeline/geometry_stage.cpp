@@ -85,6 +85,7 @@ class Assembler {
     const std::uint8_t* outcode = g_.outcode.data();
     const glm::ivec2* xy = g_.xy.data();
     std::uint8_t* used = needs_.color ? used_.data() : nullptr;
+    FlatLanes flat_lanes{this, obj.material, out.flat_color};
     for (std::size_t t = job.first; t < job.first + job.count; ++t) {
       glm::uvec3 tri = triangles[t] + glm::uvec3(vertex_base);
       const std::uint32_t face = std::uint32_t(job.face_first + (t - job.first));
@@ -92,7 +93,7 @@ class Assembler {
       if ((o0 | o1 | o2) == 0) {  // the common case: inside the guard band, scene vertices only
         const std::int64_t area2 = area2_of(glm::i64vec2(xy[tri.x]), glm::i64vec2(xy[tri.y]), glm::i64vec2(xy[tri.z]));
         if (!survives(area2, out)) continue;
-        if (needs_.flat) out.flat_color.push_back(flat_value(obj.material, tri));  // in the scene's vertex order
+        if (needs_.flat) flat_lanes.add(tri);  // in the scene's vertex order
         if (used) {  // the same value from any thread
           __atomic_store_n(&used[tri.x], std::uint8_t(1), __ATOMIC_RELAXED);
           __atomic_store_n(&used[tri.y], std::uint8_t(1), __ATOMIC_RELAXED);
@@ -118,6 +119,7 @@ class Assembler {
       clip_and_emit(tri, std::uint8_t(o0 | o1 | o2), flat, src, out);
       out.face.resize(out.triangles.size(), face);
     }
+    flat_lanes.finish();
   }
 
  private:
@@ -135,16 +137,50 @@ class Assembler {
   };
 
   glm::vec3 flat_value(std::uint32_t material, glm::uvec3 tri) const {
+    glm::vec3 p, n;
+    flat_point(tri, p, n);
+    return lighting_.shade(material, p, n);
+  }
+
+  // Where flat_value lights a triangle: its centroid and unit face normal.
+  void flat_point(glm::uvec3 tri, glm::vec3& p, glm::vec3& n) const {
     const glm::vec3 a = g_.world[tri.x], b = g_.world[tri.y], c = g_.world[tri.z];
-    glm::vec3 n = glm::cross(b - a, c - a);
+    n = glm::cross(b - a, c - a);
     float len = glm::length(n);
     if (!(len > 0.0f) && needs_.normal) {  // zero-area in world space: fall back to the vertex normals
       n = g_.normal[tri.x] + g_.normal[tri.y] + g_.normal[tri.z];
       len = glm::length(n);
     }
     n = len > 0.0f ? n / len : glm::vec3(0.0f, 0.0f, 1.0f);
-    return lighting_.shade(material, (a + b + c) / 3.0f, n);
+    p = (a + b + c) / 3.0f;
   }
+
+  // Flat values of a chunk's unclipped triangles, lit VertexLighting::kLanes at a time (the scalar
+  // lighting's power per triangle was half of a flat frame's geometry stage); the same bits as
+  // flat_value. Each value's slot is reserved in order, so clipped triangles' values can go between.
+  struct FlatLanes {
+    static constexpr int kLanes = VertexLighting::kLanes;
+    const Assembler* assembler;
+    std::uint32_t material;
+    std::vector<glm::vec3>& values;
+    std::size_t slot[kLanes];
+    glm::vec3 p[kLanes], n[kLanes];
+    int lanes = 0;
+    void add(glm::uvec3 tri) {
+      slot[lanes] = values.size();
+      values.emplace_back();
+      assembler->flat_point(tri, p[lanes], n[lanes]);
+      if (++lanes < kLanes) return;
+      glm::vec3 lit[kLanes];
+      assembler->lighting_.shade_lanes(material, p, n, lit);
+      for (int k = 0; k < kLanes; ++k) values[slot[k]] = lit[k];
+      lanes = 0;
+    }
+    void finish() {
+      for (int k = 0; k < lanes; ++k) values[slot[k]] = assembler->lighting_.shade(material, p[k], n[k]);
+      lanes = 0;
+    }
+  };
 
   glm::ivec2 xy_of(std::uint32_t v, const ChunkOutput& out) const {
     return (v & kNewVertex) ? out.new_snapped[v & ~kNewVertex].xy : g_.xy[v];

@@ -184,6 +184,45 @@ TEST(GeometryStage, FlatValueUsesTheSceneFaceNormalAndFacesAreKept) {
   EXPECT_EQ(g.flat_color[2], back);
 }
 
+// Many triangles (the stage lights them in lanes): each screen triangle's flat value is the scalar
+// lighting of its scene face at the centroid with the face normal, bit for bit, also for the pieces of
+// a triangle clipped at the guard band and for faces seen from behind, under a point light and a local
+// viewer (the specular power on most of them).
+TEST(GeometryStage, FlatValuesOfManyTrianglesAreTheirFacesLighting) {
+  Scene s = ortho_scene(320, 240);
+  s.cull_backfaces = false;
+  s.camera.projection = Projection::perspective;
+  Light point;
+  point.type = LightType::point;
+  point.position = {30.0f, 40.0f, 25.0f};
+  s.lights.push_back(point);
+  s.materials.front().shininess = 23.0f;
+  std::vector<glm::vec3> p;
+  std::vector<glm::uvec3> t;
+  std::uint32_t seed = 777;
+  const auto rnd = [&] { return float((seed = seed * 1664525u + 1013904223u) >> 8) / float(1 << 24) - 0.5f; };
+  for (std::uint32_t i = 0; i < 3 * 301; ++i) {  // not a multiple of the lanes
+    // Every tenth triangle reaches far beyond the guard band (clipped into pieces).
+    const float spread = (i / 3) % 10 == 0 ? 400.0f : 2.0f;
+    if (i % 3 == 0) p.push_back({12 * rnd(), 9 * rnd(), 4 * rnd()});
+    else p.push_back(p[i - i % 3] + glm::vec3(spread * rnd(), spread * rnd(), 2 * rnd()));
+    if (i % 3 == 2) t.push_back({i - 2, i - 1, i});
+  }
+  add_mesh(s, p, t);
+  ScreenGeometry g;
+  build_screen_geometry(s, {Method::flat, false}, g);
+  ASSERT_GT(g.triangles.size(), 250u);
+  EXPECT_GT(g.stats.clipped, 10u);
+  const VertexLighting lighting(s);
+  for (std::size_t k = 0; k < g.triangles.size(); ++k) {
+    const glm::uvec3 f = t[g.face[k]];
+    const glm::vec3 a = p[f.x], b = p[f.y], c = p[f.z];
+    const glm::vec3 m = glm::cross(b - a, c - a), n = m / glm::length(m);
+    const glm::vec3 expected = lighting.shade(0, (a + b + c) / 3.0f, n);
+    ASSERT_EQ(g.flat_color[k], expected) << "screen triangle " << k << " of face " << g.face[k];
+  }
+}
+
 TEST(GeometryStage, OutputDoesNotDependOnTheThreadCount) {
   Scene s = ortho_scene(320, 240);
   s.camera.projection = Projection::perspective;
