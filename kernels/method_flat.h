@@ -1,5 +1,7 @@
 /* Flat: the triangle's one value (computed in the vertex stage) on every pixel. */
 #define ATTR_FLOATS FLAT_ATTR_FLOATS
+/* One value per triangle: cheaper to keep on every lane than to ask whether any lane passed (method_gouraud.h). */
+#define SHADE_EVERY_LANE 1
 
 INLINE void shade_pixels_at(__global const float* a, floatV fdy, floatV rel, floatV* r, floatV* g, floatV* b,
                             __constant float4* lights, __constant float4* materials, float4 viewer) {

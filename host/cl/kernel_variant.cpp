@@ -50,7 +50,7 @@ bool KernelVariant::stamps_apply() const {
   // combined:0 without a per-triangle choice is Phong at every pixel: no segments to walk along rows.
   const bool per_pixel_combined = combined && !combined_config.automatic && combined_config.k == 0 &&
                                   combined_config.rule == TriangleRule::none;
-  return stamps && (method == Method::phong || method == Method::gouraud || per_pixel_combined) && !unit_path &&
+  return stamps && (method == Method::phong || method == Method::gouraud || method == Method::flat || per_pixel_combined) && !unit_path &&
          !span_normalize && plan_pass == 0 && !float_output;
 }
 

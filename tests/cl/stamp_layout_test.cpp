@@ -1,5 +1,5 @@
-// The kernel's 4x4 stamps (RenderOptions::stamps, the plain path of Phong, Gouraud and combined:0 without a
-// per-triangle choice) against its 1x16 row segments: the same pixels are covered and shaded with the same
+// The kernel's 4x4 stamps (RenderOptions::stamps, the plain path of Phong, Gouraud, flat and combined:0 without
+// a per-triangle choice) against its 1x16 row segments: the same pixels are covered and shaded with the same
 // operations, so the images must be byte-identical, for each method (combined:0 also with its highlight test,
 // the per-triangle specular mask).
 // The scenes cover what the stamp walk treats apart: small triangles (per-pixel edge tests) and large
@@ -42,7 +42,7 @@ std::vector<std::uint8_t> render_rgba(const Scene& scene, const Variant& v, bool
 void expect_same_image(const Scene& scene, const std::string& what, std::initializer_list<int> tiles = {16}) {
   // Phong's stamps also with every tile deferred (shaded after its walk by each pixel's winner).
   for (const Variant& v : {Variant{Method::phong}, Variant{Method::phong, 0}, Variant{Method::gouraud},
-                           Variant{Method::combined}, Variant{Method::combined, -1, true}}) {
+                           Variant{Method::flat}, Variant{Method::combined}, Variant{Method::combined, -1, true}}) {
     for (int tile : tiles) {
       const auto rows = render_rgba(scene, v, false, tile), stamps = render_rgba(scene, v, true, tile);
       ASSERT_EQ(rows.size(), stamps.size());
