@@ -487,7 +487,7 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
       const double width = std::max({p[0].x, p[1].x, p[2].x}) - std::min({p[0].x, p[1].x, p[2].x});
       const double* threshold = &thresholds[mat * lights];
       // Clip-made vertices carry interpolated colours and normals: no Gouraud bound for them.
-      const bool clipped = idx.x >= g.clip.size() || idx.y >= g.clip.size() || idx.z >= g.clip.size();
+      const bool clipped = idx.x >= g.outcode.size() || idx.y >= g.outcode.size() || idx.z >= g.outcode.size();
       unsigned mask = all_lights;
       bool fits = false;
       double expected = 0.0;

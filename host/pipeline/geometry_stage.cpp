@@ -42,11 +42,15 @@ struct Needs {
 struct VertexSource {
   const Mesh* mesh = nullptr;
   glm::mat4 model{1.0f};
+  glm::mat4 model_vp{1.0f};  // to clip space
   glm::mat3 normal_matrix{1.0f};
   std::uint32_t material = 0;
   std::uint32_t base = 0;  // index of the object's first vertex in the frame
 
   glm::vec3 world(std::size_t i) const { return world_position(model, mesh->positions[i]); }
+  // The vertex stage's clip position, recomputed (the same bits: transform_vertices' lanes are this
+  // product) for the few vertices clipping needs, instead of 16 bytes kept per scene vertex.
+  glm::vec4 clip(std::size_t i) const { return model_vp * glm::vec4(mesh->positions[i], 1.0f); }
   glm::vec3 normal(std::size_t i) const { return unit_normal(normal_matrix, mesh->normals[i]); }
 };
 
@@ -220,7 +224,7 @@ class Assembler {
   }
 
   ClipVertex clip_vertex(std::uint32_t v, const VertexSource& src) const {
-    ClipVertex c{v, g_.clip[v], glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
+    ClipVertex c{v, src.clip(v - src.base), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
     if (needs_.world) c.world = g_.world[v];
     if (needs_.normal) c.normal = g_.normal[v];
     if (needs_.color) {  // not lit yet (lighting follows assembly): light this vertex now
@@ -326,7 +330,6 @@ struct GeometryScratch {
   std::vector<ChunkOutput> outputs;  // cleared, not freed, between frames
   std::vector<std::uint8_t> used;
   std::vector<std::size_t> tri_offset, new_offset;
-  std::vector<glm::mat4> model_vp;
   std::vector<ObjectRange> vertex_ranges, light_ranges;
 };
 
@@ -367,7 +370,6 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
   }
 
   // Vertex stage.
-  g.clip.resize(vertex_count);
   g.outcode.resize(vertex_count);
   g.xy.resize(vertex_count);
   g.depth.resize(vertex_count);
@@ -379,23 +381,20 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
   sources.resize(scene.objects.size());
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     const Object& obj = scene.objects[o];
-    sources[o] = {obj.mesh.get(), obj.model, glm::transpose(glm::inverse(glm::mat3(obj.model))), obj.material,
-                  vertex_base[o]};
+    sources[o] = {obj.mesh.get(), obj.model, vp * obj.model, glm::transpose(glm::inverse(glm::mat3(obj.model))),
+                  obj.material, vertex_base[o]};
   }
   // One parallel_for over every object's vertices (a wake-up of the pool per object costs more than a
   // small object's work). Ranges of at least 4096 vertices (~40 ns each): a scene of a few thousand
   // vertices stays on one thread.
-  std::vector<glm::mat4>& model_vp = scratch.model_vp;
-  model_vp.resize(scene.objects.size());
-  for (std::size_t o = 0; o < scene.objects.size(); ++o) model_vp[o] = vp * sources[o].model;
   object_ranges(sources, 4096, 8192, scratch.vertex_ranges);
   parallel_for(scratch.vertex_ranges.size(), [&](std::size_t r) {
     const ObjectRange range = scratch.vertex_ranges[r];
     const VertexSource& src = sources[range.object];
-    const glm::mat4 m = model_vp[range.object];
+    const glm::mat4 m = src.model_vp;
     const std::size_t at = src.base + range.first;
     transform_vertices(m, src.mesh->positions.data() + range.first, range.last - range.first, g.width, g.height,
-                       {g.clip.data() + at, g.outcode.data() + at, g.xy.data() + at, g.depth.data() + at,
+                       {nullptr, g.outcode.data() + at, g.xy.data() + at, g.depth.data() + at,
                         g.inv_w.data() + at});
     if (needs.world || needs.normal)
       world_and_normals(src.model, src.normal_matrix, src.mesh->positions.data() + range.first,

@@ -85,8 +85,9 @@ inline __attribute__((always_inline)) void transform_lanes(const glm::mat4& m, c
   const Floats inv_w = __builtin_convertvector(inv, Floats);
   const Floats depth_out = select(valid, depth, splat(1.0f)), inv_w_out = select(valid, inv_w, zero);
 
+  if (out.clip)
+    for (int k = 0; k < kLanes; ++k) out.clip[i + std::size_t(k)] = {c[0][k], c[1][k], c[2][k], c[3][k]};
   for (int k = 0; k < kLanes; ++k) {
-    out.clip[i + std::size_t(k)] = {c[0][k], c[1][k], c[2][k], c[3][k]};
     out.outcode[i + std::size_t(k)] = std::uint8_t(code[k]);
     out.xy[i + std::size_t(k)] = {xi[k], yi[k]};
   }
@@ -113,7 +114,7 @@ void transform_vertices(const glm::mat4& m, const glm::vec3* position, std::size
   if (groups) transform_groups(m, position, groups, width, height, out);
   for (std::size_t i = groups * vertex_lanes::kLanes; i < count; ++i) {
     const glm::vec4 clip = m * glm::vec4(position[i], 1.0f);
-    out.clip[i] = clip;
+    if (out.clip) out.clip[i] = clip;
     out.outcode[i] = outcode_of(clip);
     const Snapped s = snap(clip, width, height);
     out.xy[i] = s.xy;

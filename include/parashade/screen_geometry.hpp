@@ -57,8 +57,8 @@ struct ScreenGeometry {
   int width = 0;
   int height = 0;
   // Per vertex: the scene's vertices (objects concatenated), then the vertices clipping made.
-  std::vector<glm::vec4> clip;      // clip-space position (scene vertices only)
-  std::vector<std::uint8_t> outcode;// clip planes the scene vertex is outside of (scene vertices only)
+  std::vector<std::uint8_t> outcode;// clip planes the scene vertex is outside of (scene vertices only:
+                                    // its size is their number)
   std::vector<glm::ivec2> xy;       // sub-pixel screen position (see above)
   std::vector<float> depth;         // window depth in [0, 1]; linear in screen space
   std::vector<float> inv_w;         // 1 / w_clip, for perspective-correct interpolation

@@ -29,7 +29,7 @@ Snapped snap(const glm::vec4& c, int width, int height);
 // clip[i] = m * (position[i], 1), outcode[i] = outcode_of(clip[i]), and snap(clip[i]) into xy, depth, inv_w;
 // eight at a time in vector lanes where they pay (vertex_lanes.hpp), the same bits.
 struct SnappedVertices {
-  glm::vec4* clip;
+  glm::vec4* clip;  // may be null: not kept (the vertex stage recomputes the few that clipping needs)
   std::uint8_t* outcode;
   glm::ivec2* xy;
   float* depth;

@@ -189,7 +189,7 @@ TEST(TriangleChoiceSources, TheListingsFirstTestIsInverted) {
       g.world.push_back(glm::vec3(float(t), float(k), 0.0f));
       g.normal.push_back(t == 0 ? glm::vec3(0.0f, 0.0f, 1.0f) : cone[k]);
       g.depth.push_back(0.5f);
-      g.clip.push_back(glm::vec4(0.0f));
+      g.outcode.push_back(0);
     }
   g.triangles = {{0, 1, 2}, {3, 4, 5}};
   g.material = {0, 0};
@@ -234,7 +234,7 @@ TEST(TriangleChoiceBound, DegenerateNormalsGoToPhongInEveryLane) {
       g.world.push_back(glm::vec3(float(t), float(k), 0.0f));
       g.normal.push_back(t % 4 == 3 && k == t % 3 ? bad[(t / 4) % 3] : glm::vec3(0.0f, 0.0f, 1.0f));
       g.depth.push_back(0.5f);
-      g.clip.push_back(glm::vec4(0.0f));
+      g.outcode.push_back(0);
     }
   for (int t = 0; t < count; ++t) {
     g.triangles.push_back(glm::uvec3(3 * t, 3 * t + 1, 3 * t + 2));

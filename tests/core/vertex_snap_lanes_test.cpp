@@ -67,6 +67,12 @@ void expect_same_as_scalar(const glm::mat4& m, const std::vector<glm::vec3>& p, 
       ASSERT_EQ(bits(inv_w[i]), bits(s.inv_w)) << what << " vertex " << i + first;
     }
   }
+  // Without the clip positions (the vertex stage's call): the rest unchanged.
+  std::vector<glm::ivec2> xy_alone(n);
+  transform_vertices(m, p.data(), n, width, height,
+                     {nullptr, outcode.data(), xy_alone.data(), depth.data(), inv_w.data()});
+  for (std::size_t i = 0; i < n; ++i)
+    ASSERT_EQ(xy_alone[i], snap(m * glm::vec4(p[i], 1.0f), width, height).xy) << what << " vertex " << i << ", no clip";
 }
 
 glm::mat4 view() { return glm::lookAt(glm::vec3(0.0f, 0.6f, 4.0f), glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f)); }
