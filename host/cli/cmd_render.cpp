@@ -44,8 +44,9 @@ struct RenderArgs {
   std::string scene, output, method = "gouraud", device, size, report, units, arith = "float", division = "constant",
               coverage = "centre", specular = "exact", normalize = "exact", triangle_choice;
   int frames = 5, warmup = 1, tile = TILE_DEFAULT, work_items = 0;
-  // Triangle records a frame may hold at once before it streams in bands (MiB); 0: never streams.
-  int band_mib = int(RenderOptions::kBandRecordBytes >> 20);
+  // Triangle records a frame may hold at once before it streams in bands of as many (MiB); 0: never
+  // streams; -1 (not given): by the frame (default_band_mib, bands of 16).
+  int band_mib = -1;
   double max_error = 0;  // 0: not given
   int combined_min_width = -1;
   bool float_output = false, no_error = false, quiet = false, highlight_test = false;
@@ -235,7 +236,9 @@ int run_render(const RenderArgs& a) {
   options.float_output = a.float_output;
   options.tile_size = a.tile;
   options.work_items = a.work_items;
-  options.band_record_bytes = a.band_mib == 0 ? SIZE_MAX : std::size_t(a.band_mib) << 20;
+  options.band_record_bytes = a.band_mib < 0    ? kBandBytesByFrame
+                              : a.band_mib == 0 ? SIZE_MAX
+                                                : std::size_t(a.band_mib) << 20;
   if (method == Method::combined) options.combined = parse_combined(a.method);
   options.combined.highlight_test = a.highlight_test;
   if (a.combined_min_width != -1) {
@@ -387,7 +390,7 @@ int run_render(const RenderArgs& a) {
       {"width", scene.width},
       {"height", scene.height},
       {"tile_size", options.tile_size},
-      {"band_mib", a.band_mib},
+      {"band_mib", a.band_mib < 0 ? default_band_mib(scene.width, scene.height) : a.band_mib},
       {"tuned", tuned},
       {"work_items", renderer.work_items(frame.stats.tiles)},
       {"triangles", {{"in", frame.stats.geometry.triangles_in},
@@ -542,8 +545,9 @@ Command add_render_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--band-mib", a->band_mib,
                   "A frame whose triangle records would exceed this many MiB is set up, binned and shaded in bands "
-                  "of tile rows, which bounds its memory (0: never; the image is the same either way)")
-      ->capture_default_str()
+                  "of tile rows of at most as many, which bounds its memory (0: never; the image is the same "
+                  "either way). Default: 16 plus the frame's colour and depth (8 bytes a pixel), 32 at 1920x1080 "
+                  "and 80 at 3840x2160, with bands of 16")
       ->check(CLI::Range(0, 1 << 20));
   cmd->add_option("--units", a->units,
                   "Shade the spans through a modeled shading unit (Gouraud's intensities, or Phong's normal "

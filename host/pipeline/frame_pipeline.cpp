@@ -41,6 +41,16 @@ std::size_t triangle_record_bytes(Method method) {
   return sizeof(TriangleGeometry) + attribute_floats(method) * sizeof(float);
 }
 
+int default_band_mib(int width, int height) {
+  const std::size_t frame_bytes = std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 0)) * 8;
+  return 16 + int((frame_bytes + (std::size_t(1) << 20) - 1) >> 20);
+}
+
+RecordBudget record_budget(std::size_t record_bytes, int width, int height) {
+  if (record_bytes != kBandBytesByFrame) return {record_bytes, record_bytes};
+  return {std::size_t(default_band_mib(width, height)) << 20, kDefaultBandBytes};
+}
+
 bool frame_streams(const FrameConfig& config, std::size_t screen_triangles, std::size_t record_bytes) {
   return frame_can_stream(config) && screen_triangles > record_bytes / triangle_record_bytes(config.method);
 }
@@ -62,12 +72,13 @@ int FramePipeline::begin_frame(const Scene& scene, const FrameConfig& config, st
   // The extra-triangulation unit needs its midpoints on pixel corners: vertex parity normalization.
   parity_dropped_ = config.splits_triangles() ? snap_sierpinski_vertices(geometry_, config.unit()) : 0;
   geometry_ms_ = ms_since(t0);
+  const RecordBudget budget = record_budget(record_bytes, scene.width, scene.height);
   band_rows_.clear();
   banding_ms_ = 0;
   banding_empty_ = 0;
-  if (!frame_streams(config, geometry_.triangles.size(), record_bytes)) return 1;
+  if (!frame_streams(config, geometry_.triangles.size(), budget.stream_above)) return 1;
   t0 = Clock::now();
-  plan_bands(config, std::max<std::size_t>(1, record_bytes / triangle_record_bytes(config.method)));
+  plan_bands(config, std::max<std::size_t>(1, budget.band / triangle_record_bytes(config.method)));
   banding_ms_ = ms_since(t0);
   return int(band_rows_.size()) - 1;
 }

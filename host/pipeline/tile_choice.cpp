@@ -11,7 +11,8 @@ int default_tile_size(const Scene& scene, const FrameConfig& config, std::size_t
     return TILE_DEFAULT;
   ScreenGeometry g;
   build_screen_geometry(scene, {config.method, false}, g);
-  return frame_streams(config, g.triangles.size(), band_record_bytes) ? TILE_DEFAULT : TILE_MAX;
+  const RecordBudget budget = record_budget(band_record_bytes, scene.width, scene.height);
+  return frame_streams(config, g.triangles.size(), budget.stream_above) ? TILE_DEFAULT : TILE_MAX;
 }
 
 }  // namespace parashade

@@ -72,6 +72,22 @@ std::size_t triangle_record_bytes(Method method);
 // take `record_bytes` (FramePipeline::begin_frame's rule).
 bool frame_streams(const FrameConfig& config, std::size_t screen_triangles, std::size_t record_bytes);
 
+// When none is given, a width x height frame streams only when its records would exceed this many MiB: 16
+// plus the frame's colour and depth (8 bytes a pixel), rounded up; its bands then take at most
+// kDefaultBandBytes. The banding passes cost a frame of many small triangles about a tenth of its time
+// whatever the bands' size, the memory a frame may take grows with its pixels, and smaller bands stay in
+// the last-level cache from setup to kernel (bench/README.md, run U).
+int default_band_mib(int width, int height);
+constexpr std::size_t kDefaultBandBytes = std::size_t(16) << 20;
+// A records budget that means "by the frame" (default_band_mib, kDefaultBandBytes).
+constexpr std::size_t kBandBytesByFrame = 0;
+// begin_frame's and default_tile_size's record_bytes resolved: a frame streams when its records exceed
+// `stream_above` bytes, in bands of at most `band` bytes (both record_bytes unless kBandBytesByFrame).
+struct RecordBudget {
+  std::size_t stream_above, band;
+};
+RecordBudget record_budget(std::size_t record_bytes, int width, int height);
+
 class FramePipeline {
  public:
   // Prepares `scene` as `config` asks (checked: check_frame_config), into the pipeline's own host
@@ -83,8 +99,9 @@ class FramePipeline {
 
   // A frame in bands of tile rows, so that only one band's records exist at a time (peak memory,
   // bench/README.md). begin_frame runs the vertex stage and returns the number of bands: 1 when the
-  // frame's records take at most `record_bytes` or the configuration does not stream (a plan, a unit,
-  // the combined method, a split frame's band), else bands whose records take at most that much (or one
+  // frame's records take at most `record_bytes` (record_budget: kBandBytesByFrame is the frame's
+  // default) or the configuration does not stream (a plan, a unit, the combined method, a split frame's
+  // band), else bands whose records take at most that much (or one
   // tile row each). prepare_band(b) then sets up and bins band b's triangles, in primitive order,
   // into `storage` (every band gets room for the largest band's records, so the buffers do not grow
   // from band to band); its tiles are PreparedFrame::first_tile .. end_tile. Triangles whose box holds

@@ -32,9 +32,9 @@ struct RenderOptions : FrameConfig {
   // the triangle that won its depth test (docs/pipeline.md); -1: TILE * TILE / 16, 0: every tile. Same image.
   int defer_min_triangles = -1;
   // A frame whose triangle records would take more bytes than this is prepared and shaded in bands of
-  // tile rows (FramePipeline::begin_frame), which bounds the frame's peak memory (bench/README.md).
-  std::size_t band_record_bytes = kBandRecordBytes;
-  static constexpr std::size_t kBandRecordBytes = std::size_t(16) << 20;
+  // tile rows (FramePipeline::begin_frame), which bounds the frame's peak memory (bench/README.md);
+  // kBandBytesByFrame: by the frame's size (default_band_mib, kDefaultBandBytes); SIZE_MAX: never.
+  std::size_t band_record_bytes = kBandBytesByFrame;
 };
 
 struct Frame {

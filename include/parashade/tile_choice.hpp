@@ -14,7 +14,8 @@ namespace parashade {
 
 // TILE_MAX for a plain Gouraud or flat frame that does not stream, else TILE_DEFAULT. Runs the geometry
 // stage once to count the frame's screen triangles (FramePipeline's streaming rule, frame_streams), so it
-// costs about one frame's geometry: call it once per scene, not per frame.
+// costs about one frame's geometry: call it once per scene, not per frame. band_record_bytes as
+// RenderOptions' (kBandBytesByFrame: the frame's default budget).
 int default_tile_size(const Scene& scene, const FrameConfig& config, std::size_t band_record_bytes);
 
 }  // namespace parashade

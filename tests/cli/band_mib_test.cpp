@@ -1,6 +1,8 @@
 // `render --band-mib N`: a frame whose triangle records would exceed N MiB is prepared and shaded in bands
-// of tile rows (bench/README.md, "Peak memory: streamed bands"); 0 never streams. The image is the same
-// either way; the report says how many bands the frame took and the budget; bad values are refused.
+// of tile rows (bench/README.md, "Peak memory: streamed bands"); 0 never streams; the default grows with the
+// frame. The image is the same either way; the report says how many bands the frame took and the budget;
+// bad values are refused.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -30,7 +32,11 @@ TEST_F(CliBandMib, StreamsBelowTheBudgetWithTheSameImage) {
   EXPECT_GT(banded["stats"]["bands"].get<int>(), 1) << "a 1 MiB budget should cut ~3 MiB of records into bands";
   EXPECT_EQ(bytes_of(image()), whole) << "the banded frame differs from the whole one";
   ASSERT_TRUE(succeeds(render(scene)));
-  EXPECT_EQ(read_report()["stats"]["bands"], 1) << "the default budget (16 MiB) streams this small frame";
+  const nlohmann::json by_default = read_report();
+  EXPECT_EQ(by_default["stats"]["bands"], 1) << "the default budget streams this small frame";
+  // The default: 16 MiB plus the frame's colour and depth, 8 bytes a pixel, rounded up to whole MiB.
+  const double pixel_mib = by_default["width"].get<double>() * by_default["height"].get<double>() * 8 / (1 << 20);
+  EXPECT_EQ(by_default["band_mib"].get<int>(), 16 + int(std::ceil(pixel_mib)));
 }
 
 TEST_F(CliBandMib, BadValuesAreRefused) {

@@ -3,6 +3,7 @@
 // stated here (a triangle is in a tile's list iff its box and edges may cover a pixel of it), not a copy
 // of the code's output.
 #include <algorithm>
+#include <memory>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 #include "parashade/combinations.hpp"
 #include "parashade/frame_pipeline.hpp"
 #include "parashade/scene.hpp"
+#include "parashade/shapes.hpp"
 
 namespace parashade {
 namespace {
@@ -114,6 +116,59 @@ TEST(FramePipeline, TheExtraTriangulationSplitsEveryRecord) {
   const PreparedFrame& f = pipeline.prepare_frame(scene, config);
   EXPECT_EQ(f.records, 16 * f.geometry->triangles.size());
   EXPECT_NE(f.arrays.leaves, nullptr);
+}
+
+// Plain host arrays for prepare_band.
+class Arrays : public FrameStorage {
+ public:
+  FrameRecords records(std::size_t n, std::size_t attribute_floats, bool, bool) override {
+    triangles_.resize(n);
+    attributes_.resize(n * attribute_floats);
+    return {triangles_.data(), attributes_.data(), nullptr, nullptr};
+  }
+  std::uint32_t* tile_list(std::size_t entries) override {
+    list_.resize(std::max<std::size_t>(entries, 1));
+    return list_.data();
+  }
+
+ private:
+  std::vector<TriangleGeometry> triangles_;
+  std::vector<float> attributes_;
+  std::vector<std::uint32_t> list_;
+};
+
+// The default records budget: a frame streams only when its records exceed 16 MiB plus its colour and
+// depth bytes (8 a pixel), and then in bands of at most 16 MiB; a given budget is both.
+TEST(FramePipeline, DefaultBudgetStreamsAboveTheFramesOwnBytesInBandsOf16MiB) {
+  constexpr std::size_t MiB = std::size_t(1) << 20;
+  EXPECT_EQ(default_band_mib(1920, 1080), 32);  // 15.8 MiB of pixels, rounded up
+  EXPECT_EQ(default_band_mib(3840, 2160), 80);  // 63.3 MiB
+  EXPECT_EQ(default_band_mib(1, 1), 17);
+  EXPECT_EQ(record_budget(kBandBytesByFrame, 3840, 2160).stream_above, 80 * MiB);
+  EXPECT_EQ(record_budget(kBandBytesByFrame, 3840, 2160).band, 16 * MiB);
+  EXPECT_EQ(record_budget(5 * MiB, 3840, 2160).stream_above, 5 * MiB);
+  EXPECT_EQ(record_budget(5 * MiB, 3840, 2160).band, 5 * MiB);
+
+  // The benchmark's sphere_2m at 3840x2160: Gouraud's records (~70 MiB) stay whole, Phong's (~100) stream.
+  Scene scene = load_scene(std::string(PARASHADE_SOURCE_DIR) + "/scenes/sphere.json");
+  scene.objects[0].mesh = std::make_shared<Mesh>(make_sphere(1024, 1025));
+  scene.width = 3840;
+  scene.height = 2160;
+  for (Method method : {Method::gouraud, Method::phong}) {
+    FrameConfig config;
+    config.method = method;
+    FramePipeline pipeline;
+    const int bands = pipeline.begin_frame(scene, config, kBandBytesByFrame);
+    const std::size_t bytes = pipeline.geometry().triangles.size() * triangle_record_bytes(method);
+    ASSERT_GT(bytes, 16 * MiB) << method_name(method);
+    EXPECT_EQ(bands == 1, bytes <= 80 * MiB) << method_name(method) << ": " << bytes / MiB << " MiB of records";
+    std::size_t largest = 0;
+    Arrays storage;
+    for (int b = 0; b < bands; ++b)
+      largest = std::max(largest, pipeline.prepare_band(scene, config, storage, b).records);
+    if (bands > 1) EXPECT_LE(largest * triangle_record_bytes(method), 16 * MiB) << method_name(method);
+    EXPECT_EQ(bands, method == Method::gouraud ? 1 : 7) << "the sphere's records against this budget";
+  }
 }
 
 TEST(FramePipeline, ARefusedCombinationStopsBeforeAnyWork) {
