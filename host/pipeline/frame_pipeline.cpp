@@ -166,14 +166,29 @@ void FramePipeline::plan_bands(const FrameConfig& config, std::size_t max_record
   band_start_list_[bands] = at;
   // Pass 2: the lists, each range's triangles after the previous ranges' (primitive order).
   band_list_.resize(at);
+  std::uint32_t* list = band_list_.data();
+  const std::uint32_t* rows_of = triangle_rows_.data();
   parallel_for(ranges, [&](std::size_t r) {
     std::uint32_t* next = cursor.data() + r * bands;
+    // The cursor of the band the last triangle went to stays in a register: neighbours mostly share a
+    // band, and a cursor incremented in memory made each store wait for the previous one (sphere_2m:
+    // this pass 1.6-2.0 ms, 0.5-0.9 without the wait).
+    int band = 0;
+    std::uint32_t band_at = next[0];
     for (std::size_t t = r * chunk, end = std::min(n, t + chunk); t < end; ++t) {
-      const std::uint32_t v = triangle_rows_[t];
+      const std::uint32_t v = rows_of[t];
       if (v == kNoRows) continue;
-      for (int b = band_of_row[v >> 16], last = band_of_row[v & 0xffffu]; b <= last; ++b)
-        band_list_[next[b]++] = std::uint32_t(t);
+      const int first = band_of_row[v >> 16], last = band_of_row[v & 0xffffu];
+      if (first == band && last == band) {
+        list[band_at++] = std::uint32_t(t);
+        continue;
+      }
+      next[band] = band_at;
+      for (int b = first; b <= last; ++b) list[next[b]++] = std::uint32_t(t);
+      band = last;
+      band_at = next[band];
     }
+    next[band] = band_at;
   });
 }
 
