@@ -16,6 +16,8 @@ struct TileOf {
   int size, shift;
 };
 
+constexpr std::size_t kFillAhead = 32;  // records
+
 }  // namespace
 
 template <typename Visit>
@@ -111,7 +113,15 @@ void Binner::fill(std::uint32_t* out) {
   const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
   parallel_for(chunks(), [&](std::size_t c) {
     std::uint32_t* cursor = &chunk_cursor_[c * tiles];
-    for (std::size_t i = chunk_first_[c]; i < chunk_first_[c + 1]; ++i) {
+    const std::size_t last = chunk_first_[c + 1];
+    for (std::size_t i = chunk_first_[c]; i < last; ++i) {
+      // A record of several tiles is read again (its tiles and edges), long after setup wrote it: fetched
+      // ahead, as its key says it will be.
+      if (i + kFillAhead < last && tile_of_[i + kFillAhead] == kSeveralTiles) {
+        const char* ahead = reinterpret_cast<const char*>(&tris_[i + kFillAhead]);
+        __builtin_prefetch(ahead);
+        __builtin_prefetch(ahead + sizeof(TriangleGeometry) - 1);
+      }
       const std::uint32_t key = tile_of_[i];
       if (key < kSeveralTiles)
         out[cursor[key]++] = std::uint32_t(i);
