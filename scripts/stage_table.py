@@ -34,10 +34,10 @@ def scene_file(name, tmp):
     return path
 
 
-def stages(binary, scene, method, frames, tmp):
+def stages(binary, scene, method, frames, tmp, size=None):
     report = os.path.join(tmp, "report.json")
     cmd = [binary, "render", scene, "-o", os.path.join(tmp, "image.png"), "--method", method, "--frames", str(frames),
-           "--no-error", "-q", "--report", report]
+           "--no-error", "-q", "--report", report] + (["--size", size] if size else [])
     run = subprocess.run(cmd, capture_output=True, text=True)
     if run.returncode != 0:
         sys.exit(f"stage_table.py: {' '.join(cmd)} failed ({run.returncode}): {run.stderr.strip()}")
@@ -53,6 +53,7 @@ def main():
     ap.add_argument("--methods", default="gouraud,phong")
     ap.add_argument("--frames", type=int, default=40)
     ap.add_argument("--rounds", type=int, default=3)
+    ap.add_argument("--size", help="WIDTHxHEIGHT for every scene (default: each scene's own)")
     ap.add_argument("--json", help="write the figures here")
     args = ap.parse_args()
     rows = []
@@ -63,7 +64,7 @@ def main():
                 runs = {"before": [], "after": []}
                 for _ in range(args.rounds):
                     for side in ("before", "after"):
-                        runs[side].append(stages(getattr(args, side), scene, method, args.frames, tmp))
+                        runs[side].append(stages(getattr(args, side), scene, method, args.frames, tmp, args.size))
                         print(f"[{name} {method} {side}] frame {runs[side][-1]['total_ms']:.2f} ms", file=sys.stderr)
                 row = {"scene": os.path.splitext(os.path.basename(name))[0], "method": method}
                 for side in runs:
@@ -77,7 +78,7 @@ def main():
     if args.json:
         with open(args.json, "w") as f:
             json.dump({"before": args.before, "after": args.after, "frames": args.frames, "rounds": args.rounds,
-                       "rows": rows}, f, indent=1)
+                       "size": args.size, "rows": rows}, f, indent=1)
 
 
 if __name__ == "__main__":
