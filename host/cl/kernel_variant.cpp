@@ -50,8 +50,9 @@ bool KernelVariant::stamps_apply() const {
   // combined:0 without a per-triangle choice is Phong at every pixel: no segments to walk along rows.
   const bool per_pixel_combined = combined && !combined_config.automatic && combined_config.k == 0 &&
                                   combined_config.rule == TriangleRule::none;
-  return stamps && (method == Method::phong || method == Method::gouraud || method == Method::flat || per_pixel_combined) && !unit_path &&
-         !span_normalize && plan_pass == 0 && !float_output;
+  const bool per_pixel_method = method == Method::phong || method == Method::gouraud || method == Method::flat;
+  return stamps && (per_pixel_method || per_pixel_combined) && !unit_path && !span_normalize && plan_pass == 0 &&
+         !float_output;
 }
 
 std::string KernelVariant::build_options() const {
