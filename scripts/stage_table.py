@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Per-stage frame times of two parashade binaries side by side (before / after a change), from
 `parashade render --report`: geometry, setup, binning, kernel, read-back and the whole frame, the median
-over rounds of each run's median frame. Rounds alternate the binaries, so both see the same machine.
+over rounds of each run's median frame. Rounds alternate the binaries (and their order), so both see the
+same machine.
 
     scripts/stage_table.py --before old/parashade --after build/parashade \\
         --scene scenes/teapot.json --scene sphere_2m --methods gouraud,phong --frames 40 --rounds 3
@@ -62,8 +63,9 @@ def main():
             scene = scene_file(name, tmp)
             for method in args.methods.split(","):
                 runs = {"before": [], "after": []}
-                for _ in range(args.rounds):
-                    for side in ("before", "after"):
+                for i in range(args.rounds):
+                    # Each round in the other order, so a phase change within a round favours neither binary.
+                    for side in ("before", "after") if i % 2 == 0 else ("after", "before"):
                         runs[side].append(stages(getattr(args, side), scene, method, args.frames, tmp, args.size))
                         print(f"[{name} {method} {side}] frame {runs[side][-1]['total_ms']:.2f} ms", file=sys.stderr)
                 row = {"scene": os.path.splitext(os.path.basename(name))[0], "method": method}
