@@ -67,19 +67,23 @@ INLINE void shade_points(__global const float* a, floatV fdy, floatV rel, floatV
   shade_pixels_at(a, fdy, rel, r, g, b, lights, materials, viewer);
 }
 
-#if TRIANGLE_CHOICE || HIGHLIGHT_TEST
-/* The per-pixel path (narrow triangles, and those given to Gouraud): Gouraud's planes, or Phong with the
- * triangle's specular mask (shade_points: the same operations as method_phong.h's shade_pixels). */
-INLINE void shade_pixels_combined(__global const float* a, int dy, floatV rel, floatV* r, floatV* g, floatV* b,
-                                  __constant float4* lights, __constant float4* materials, float4 viewer) {
-  const float fdy = (float)dy;
+/* Per pixel (narrow triangles, those given to Gouraud, and every triangle on the stamps): Gouraud's planes, or
+ * Phong with the triangle's specular mask (shade_points: the same operations as method_phong.h's shade_pixels). */
+INLINE void shade_points_chosen(__global const float* a, floatV fdy, floatV rel, floatV* r, floatV* g, floatV* b,
+                                __constant float4* lights, __constant float4* materials, float4 viewer) {
   if (shaded_by_gouraud(a)) {
-    *r = (floatV)(a[0] + a[6] * fdy) + a[3] * rel;
-    *g = (floatV)(a[1] + a[7] * fdy) + a[4] * rel;
-    *b = (floatV)(a[2] + a[8] * fdy) + a[5] * rel;
+    *r = plane_row(a, 0, fdy, rel);
+    *g = plane_row(a, 1, fdy, rel);
+    *b = plane_row(a, 2, fdy, rel);
     return;
   }
-  shade_points(a, (floatV)fdy, rel, r, g, b, lights, materials, viewer);
+  shade_points(a, fdy, rel, r, g, b, lights, materials, viewer);
+}
+
+#if TRIANGLE_CHOICE || HIGHLIGHT_TEST
+INLINE void shade_pixels_combined(__global const float* a, int dy, floatV rel, floatV* r, floatV* g, floatV* b,
+                                  __constant float4* lights, __constant float4* materials, float4 viewer) {
+  shade_points_chosen(a, (floatV)(float)dy, rel, r, g, b, lights, materials, viewer);
 }
 #define SHADE_PIXELS shade_pixels_combined
 #endif

@@ -40,9 +40,9 @@ typedef floatV colourV;
 #ifndef STAMPS
 #define STAMPS 0
 #endif
-/* The combined method has stamps only as combined:0 without a per-triangle choice: Phong at every pixel (with
- * the triangle's specular mask under HIGHLIGHT_TEST), which needs no span walk. */
-#if STAMPS && (PLAN_PASS || UNIT_PATH || SHADE_SPAN || OUTPUT_FLOAT || (COMBINED && (SEG_AUTO || SEG_K != 0 || TRIANGLE_CHOICE)))
+/* The combined method has stamps only as combined:0: every pixel by Phong (with the triangle's specular mask
+ * under HIGHLIGHT_TEST) or, where the per-triangle choice says so, by Gouraud's planes; no span walk. */
+#if STAMPS && (PLAN_PASS || UNIT_PATH || SHADE_SPAN || OUTPUT_FLOAT || (COMBINED && (SEG_AUTO || SEG_K != 0)))
 #error "STAMPS: the plain path only"
 #endif
 /* Stamps: STAMP x STAMP pixels, STAMPS_X of them across a tile (TILE_VECTORS in all, as row segments). */
@@ -162,6 +162,18 @@ INLINE void shade_segment(__global const TriangleGeometry* t, __global const flo
 #endif
 
 #if STAMPS
+/* A stamp's pixels of one triangle; a deferred tile still shades in the walk the triangles that cost less than
+ * deferring them (the combined method's Gouraud triangles: three planes). */
+#if COMBINED
+#define SHADE_STAMP_PIXELS shade_points_chosen
+#define SHADED_IN_WALK(attr) shaded_by_gouraud(attr)
+#define SPECULAR_NEEDED(attr) (HIGHLIGHT_TEST ? (int)(attr)[PHONG_HIGHLIGHT_SLOT] : -1)
+#else
+#define SHADE_STAMP_PIXELS shade_pixels_at
+#define SHADED_IN_WALK(attr) 0
+#define SPECULAR_NEEDED(attr) (-1)
+#endif
+
 /* One stamp: columns rel (from the triangle's x0) and rows dy (from its y0) per lane; depth test, shade,
  * keep. The same operations per pixel as shade_segment's, so the same values. */
 INLINE void shade_stamp(__global const TriangleGeometry* t, __global const float* attr, intV dy, intV rel, intV inside,
@@ -171,7 +183,7 @@ INLINE void shade_stamp(__global const TriangleGeometry* t, __global const float
   const floatV z = (t->z_ref + t->z_ddy * fdy) + t->z_ddx * frel;
   const intV pass = inside & isless(z, depth[slot]);
 #if DEFER_STAMPS
-  if (deferred) { /* two selects: cheaper than asking whether any lane passed */
+  if (deferred && !SHADED_IN_WALK(attr)) { /* two selects: cheaper than asking whether any lane passed */
     depth[slot] = select(depth[slot], z, pass);
     winner[slot] = select(winner[slot], (intV)(int)ti, pass);
     return;
@@ -180,19 +192,18 @@ INLINE void shade_stamp(__global const TriangleGeometry* t, __global const float
   if (!SHADE_EVERY_LANE && !any_lanes(pass)) return;
   depth[slot] = select(depth[slot], z, pass);
   floatV sr, sg, sb;
-#if COMBINED
-  shade_points(attr, fdy, frel, &sr, &sg, &sb, lights, materials, viewer);
-#else
-  shade_pixels_at(attr, fdy, frel, &sr, &sg, &sb, lights, materials, viewer);
-#endif
+  SHADE_STAMP_PIXELS(attr, fdy, frel, &sr, &sg, &sb, lights, materials, viewer);
   keep(pass, sr, sg, sb, &cr[slot], &cg[slot], &cb[slot]);
+#if DEFER_STAMPS
+  if (deferred) winner[slot] = select(winner[slot], (intV)(-1), pass); /* shaded: no earlier winner left there */
+#endif
 }
 
 #if DEFER_STAMPS
 /* The deferred tile's pixels, a stamp at a time, each by its winner. A stamp whose pixels have several
- * winners of one material is shaded once with each lane's planes gathered from its own triangle (lanes
- * without a winner repeat a covered lane's and are not kept); otherwise each winner shades its own lanes
- * from its planes, as the walk would (one shading when the stamp has one winner). */
+ * winners of one material (and one specular mask) is shaded once with each lane's planes gathered from its own
+ * triangle (lanes without a winner repeat a covered lane's and are not kept); otherwise each winner shades its
+ * own lanes from its planes, as the walk would (one shading when the stamp has one winner). */
 #define DEFER_PLANE_FLOATS 18 /* the normal and position planes: slots 0..17 */
 INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb, __global const TriangleGeometry* tris,
                           __global const float* attrs, int tile_x, int tile_y, __constant float4* lights,
@@ -215,11 +226,11 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
        * once and blended into the lanes it won (lanes without a winner keep the first one's). Copying
        * every lane's record into a lane-major array instead compiled to a scatter per lane. */
       __global const float* a = attrs + (size_t)first * ATTR_FLOATS;
-      const int material = (int)a[PHONG_MATERIAL_SLOT];
+      const int material = (int)a[PHONG_MATERIAL_SLOT], needed = SPECULAR_NEEDED(a);
       floatV p[DEFER_PLANE_FLOATS];
       for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = (floatV)a[k];
       intV dy = STAMP_ROW + (y - tris[first].y0), rel = STAMP_COLUMN + (x - tris[first].x0);
-      int materials_differ = 0, pending[VEC];
+      int shading_differs = 0, pending[VEC];
       for (int l = 0; l < VEC; ++l) pending[l] = ids[l] != first ? ids[l] : -1;
       for (int l = 0; l < VEC; ++l) {
         const int id = pending[l];
@@ -227,14 +238,14 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
         for (int k = l; k < VEC; ++k)
           if (pending[k] == id) pending[k] = -1;
         a = attrs + (size_t)id * ATTR_FLOATS;
-        materials_differ |= (int)a[PHONG_MATERIAL_SLOT] != material;
+        shading_differs |= (int)a[PHONG_MATERIAL_SLOT] != material || SPECULAR_NEEDED(a) != needed;
         const intV mine = winner[i] == id;
         for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = select(p[k], (floatV)a[k], mine);
         dy = select(dy, STAMP_ROW + (y - tris[id].y0), mine);
         rel = select(rel, STAMP_COLUMN + (x - tris[id].x0), mine);
       }
-      if (!materials_differ) {
-        shade_pixels_lanes(p, material, convert_floatV(dy), convert_floatV(rel), &sr, &sg, &sb, lights, materials,
+      if (!shading_differs) {
+        shade_pixels_lanes(p, material, needed, convert_floatV(dy), convert_floatV(rel), &sr, &sg, &sb, lights, materials,
                            viewer);
         keep(won, sr, sg, sb, &cr[i], &cg[i], &cb[i]);
         continue;
@@ -247,7 +258,7 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
       for (int k = l; k < VEC; ++k)
         if (ids[k] == id) ids[k] = -1;
       __global const TriangleGeometry* t = &tris[id];
-      shade_pixels_at(attrs + (size_t)id * ATTR_FLOATS, convert_floatV(STAMP_ROW + (y - t->y0)),
+      SHADE_STAMP_PIXELS(attrs + (size_t)id * ATTR_FLOATS, convert_floatV(STAMP_ROW + (y - t->y0)),
                       convert_floatV(STAMP_COLUMN + (x - t->x0)), &sr, &sg, &sb, lights, materials, viewer);
       keep(mine, sr, sg, sb, &cr[i], &cg[i], &cb[i]);
     }

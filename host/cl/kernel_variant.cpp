@@ -47,9 +47,8 @@ std::vector<std::string> kernel_files(const KernelVariant& v) {
 }
 
 bool KernelVariant::stamps_apply() const {
-  // combined:0 without a per-triangle choice is Phong at every pixel: no segments to walk along rows.
-  const bool per_pixel_combined = combined && !combined_config.automatic && combined_config.k == 0 &&
-                                  combined_config.rule == TriangleRule::none;
+  // combined:0 shades every pixel by Phong or, where its triangle choice says so, by Gouraud: no segments to walk.
+  const bool per_pixel_combined = combined && !combined_config.automatic && combined_config.k == 0;
   const bool per_pixel_method = method == Method::phong || method == Method::gouraud || method == Method::flat;
   return stamps && (per_pixel_method || per_pixel_combined) && !unit_path && !span_normalize && plan_pass == 0 &&
          !float_output;
@@ -100,7 +99,7 @@ std::string KernelVariant::build_options() const {
         << " -D UNIT_REGISTER_COLOUR=" << (method == Method::gouraud ? 1 : 0);
   }
   if (stamps_apply()) opt << " -D STAMPS=1";
-  if (stamps_apply() && method == Method::phong)
+  if (stamps_apply() && (method == Method::phong || combined))
     opt << " -D DEFER_STAMPS=1 -D DEFER_MIN_TRIANGLES="
         << (defer_min_triangles >= 0 ? defer_min_triangles : tile * tile / 16);
   if (plan_pass == 1) opt << " -D PLAN_PASS=1 -D PLAN_DYNAMIC=" << (plan_dynamic ? "1" : "0");

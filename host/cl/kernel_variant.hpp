@@ -36,8 +36,8 @@ struct KernelVariant {
   int defer_min_triangles = -1;  // Phong's stamps: RenderOptions::defer_min_triangles
 
   // 4x4 stamps: the plain path only (no unit, per-span normalization, plan or float read-back), for Phong,
-  // Gouraud, flat and combined:0 without a per-triangle choice (Phong at every pixel), where they pay
-  // (docs/pipeline.md); the other combined methods (segments along rows) stay on row segments.
+  // Gouraud, flat and combined:0 (Phong or Gouraud at every pixel), where they pay (docs/pipeline.md); the other
+  // combined methods (segments along rows) stay on row segments.
   bool stamps_apply() const;
 
   std::string build_options() const;

@@ -247,14 +247,15 @@ int run_render(const RenderArgs& a) {
       throw UsageError("--combined-min-width must be 0.." + std::to_string(kMaxResolution) + " pixels");
     options.combined.min_width = a.combined_min_width;
   }
+  if (!a.triangle_choice.empty())
+    for_option("--triangle-choice", [&] { parse_triangle_rule(a.triangle_choice, options.combined); });
   if (a.max_error != 0) {
-    if (!options.combined.automatic || method != Method::combined)
-      throw UsageError("--max-error chooses the segments of --method combined:auto; method '" + a.method + "' has none");
+    if (method != Method::combined || !(options.combined.automatic || options.combined.rule == TriangleRule::bound))
+      throw UsageError("--max-error is the error budget of --method combined:auto or --triangle-choice bound; method '" +
+                       a.method + "' with triangle choice '" + triangle_rule_name(options.combined) + "' has none");
     if (!(a.max_error > 0 && a.max_error <= 255)) throw UsageError("--max-error must be in (0, 255] levels");
     options.combined.max_error = a.max_error;
   }
-  if (!a.triangle_choice.empty())
-    for_option("--triangle-choice", [&] { parse_triangle_rule(a.triangle_choice, options.combined); });
   if (!a.units.empty()) options.units = for_option("--units", [&] { return parse_units(a.units); });
   options.arith = for_option("--arith", [&] { return parse_arith(a.arith); });
   options.division = for_option("--div", [&] { return parse_division(a.division); });
@@ -498,8 +499,8 @@ Command add_render_command(CLI::App& app) {
                   "combined:auto (K per span from --max-error); which options combine: parashade combinations")
       ->capture_default_str();
   cmd->add_option("--max-error", a->max_error,
-                  "combined:auto: error budget in 8-bit levels against Phong (default 1; 0.5 of it is the image's rounding); "
-                  "chooses Gouraud per triangle and K per span to meet it");
+                  "combined:auto or --triangle-choice bound: error budget in 8-bit levels against Phong (default 1; 0.5 "
+                  "of it is the image's rounding); chooses Gouraud per triangle (and combined:auto's K per span) to meet it");
   cmd->add_option("--specular", a->specular,
                   "Phong specular model: exact, cosk:taylor:2|4, cosk:lobe:2|4, quadratic, 7n16[:P] (docs/phong-methods.md)")
       ->capture_default_str();

@@ -1,7 +1,7 @@
-// The kernel's 4x4 stamps (RenderOptions::stamps, the plain path of Phong, Gouraud, flat and combined:0 without
-// a per-triangle choice) against its 1x16 row segments: the same pixels are covered and shaded with the same
-// operations, so the images must be byte-identical, for each method (combined:0 also with its highlight test,
-// the per-triangle specular mask).
+// The kernel's 4x4 stamps (RenderOptions::stamps, the plain path of Phong, Gouraud, flat and combined:0) against
+// its 1x16 row segments: the same pixels are covered and shaded with the same operations, so the images must be
+// byte-identical, for each method (combined:0 also with its highlight test, the per-triangle specular mask, and
+// with the per-triangle choice of Gouraud, whose triangles a deferred tile shades in its walk).
 // The scenes cover what the stamp walk treats apart: small triangles (per-pixel edge tests) and large
 // ones (row spans), tiles of 16, 32 and 64, a frame whose width and height are not multiples of the
 // stamp or the tile, slivers, a fan, near-plane clipping, point lights and a local viewer. (Each scene
@@ -21,11 +21,13 @@ namespace {
 
 using namespace testing_support;
 
-// A case of the comparison: the method, Phong's deferral threshold, combined:0's highlight test.
+// A case of the comparison: the method, the deferral threshold, combined:0's highlight test and triangle choice
+// (bound, budget 2 levels).
 struct Variant {
   Method method;
   int defer_min = -1;
   bool highlight_test = false;
+  TriangleRule rule = TriangleRule::none;
 };
 
 std::vector<std::uint8_t> render_rgba(const Scene& scene, const Variant& v, bool stamps, int tile) {
@@ -34,16 +36,24 @@ std::vector<std::uint8_t> render_rgba(const Scene& scene, const Variant& v, bool
   o.defer_min_triangles = v.defer_min;
   o.combined.k = 0;
   o.combined.highlight_test = v.highlight_test;
+  o.combined.rule = v.rule;
+  o.combined.max_error = 2.0;
   Renderer renderer(test_device(), o);
   const auto& rgba = renderer.render(scene).image.rgba;
   return {rgba.begin(), rgba.end()};
 }
 
 void expect_same_image(const Scene& scene, const std::string& what, std::initializer_list<int> tiles = {16}) {
-  // Phong's stamps also with every tile deferred (shaded after its walk by each pixel's winner).
-  for (const Variant& v : {Variant{Method::phong}, Variant{Method::phong, 0}, Variant{Method::gouraud},
-                           Variant{Method::flat}, Variant{Method::combined}, Variant{Method::combined, -1, true}}) {
+  // Phong's and combined:0's stamps also with every tile deferred (shaded after its walk by each pixel's winner);
+  // combined:0's deferred and choosing variants at the first tile size only (each is a kernel build).
+  const TriangleRule bound = TriangleRule::bound;
+  for (const Variant& v :
+       {Variant{Method::phong}, Variant{Method::phong, 0}, Variant{Method::gouraud}, Variant{Method::flat},
+        Variant{Method::combined}, Variant{Method::combined, -1, true}, Variant{Method::combined, 0, true},
+        Variant{Method::combined, -1, false, bound}, Variant{Method::combined, 0, false, bound}}) {
     for (int tile : tiles) {
+      const bool first_tile_only = v.method == Method::combined && (v.defer_min == 0 || v.rule == bound);
+      if (first_tile_only && tile != *tiles.begin()) continue;
       const auto rows = render_rgba(scene, v, false, tile), stamps = render_rgba(scene, v, true, tile);
       ASSERT_EQ(rows.size(), stamps.size());
       std::size_t covered = 0;
@@ -56,7 +66,8 @@ void expect_same_image(const Scene& scene, const std::string& what, std::initial
           first = std::min(first, i);
         }
       EXPECT_EQ(differ, 0u) << what << ", " << method_name(v.method) << (v.defer_min == 0 ? " deferred" : "")
-                            << (v.highlight_test ? " highlight test" : "") << ", tile " << tile
+                            << (v.highlight_test ? " highlight test" : "")
+                            << (v.rule == bound ? " triangle choice" : "") << ", tile " << tile
                             << ": first differing byte at pixel " << first / 4 << " (x " << (first / 4) % scene.width
                             << ", y " << (first / 4) / scene.width << ")";
     }

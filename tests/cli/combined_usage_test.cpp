@@ -20,9 +20,11 @@ TEST_F(CliCombinedUsage, SegmentLog2OutOfRangeIsNamed) {
   EXPECT_TRUE(nothing_written());
 }
 
-TEST_F(CliCombinedUsage, MaxErrorNeedsCombinedAuto) {
+TEST_F(CliCombinedUsage, MaxErrorNeedsCombinedAutoOrTheBoundChoice) {
   EXPECT_TRUE(fails_with(render(scene_, {"--method", "phong", "--max-error", "2"}), kUsage, {"--max-error"}));
   EXPECT_TRUE(fails_with(render(scene_, {"--method", "combined:2", "--max-error", "2"}), kUsage, {"--max-error"}));
+  EXPECT_TRUE(fails_with(render(scene_, {"--method", "combined:0", "--triangle-choice", "sources", "--max-error", "2"}),
+                         kUsage, {"--max-error", "sources"}));
   EXPECT_TRUE(nothing_written());
 }
 
@@ -59,6 +61,14 @@ TEST_F(CliCombinedUsage, ReportGivesTheMix) {
   EXPECT_EQ(c["gouraud"].get<long>() + c["segments"].get<long>() + c["phong"].get<long>(), c["triangles"].get<long>());
   EXPECT_GT(c["triangles"].get<long>(), 0);
   EXPECT_LE(c["largest_expected_gouraud_levels"].get<double>(), 1.5);
+  // combined:0 with the bound: Gouraud within the given budget (this coarse ball's triangles need a large one),
+  // else Phong per pixel, no segments.
+  ASSERT_TRUE(succeeds(render(scene_, {"--method", "combined:0", "--triangle-choice", "bound", "--max-error", "40"})));
+  const auto b = read_report()["stats"]["triangle_choice"];
+  EXPECT_EQ(b["segments"].get<long>(), 0);
+  EXPECT_GT(b["gouraud"].get<long>(), 0);
+  EXPECT_LE(b["largest_expected_gouraud_levels"].get<double>(), 39.5);
+  EXPECT_GT(b["largest_expected_gouraud_levels"].get<double>(), 1.5);
   ASSERT_TRUE(succeeds(render(scene_, {"--method", "combined:0", "--triangle-choice", "sources:0.95,0.01,0.02"})));
   EXPECT_EQ(read_report()["triangle_choice_rule"], "sources");
 }
