@@ -189,7 +189,7 @@ INLINE void shade_stamp(__global const TriangleGeometry* t, __global const float
     return;
   }
 #endif
-  if (!SHADE_EVERY_LANE && !any_lanes(pass)) return;
+  if (!SHADE_EVERY_LANE && !SHADED_IN_WALK(attr) && !any_lanes(pass)) return;
   depth[slot] = select(depth[slot], z, pass);
   floatV sr, sg, sb;
   SHADE_STAMP_PIXELS(attr, fdy, frel, &sr, &sg, &sb, lights, materials, viewer);
