@@ -11,10 +11,12 @@
 /* The specular term only for the lights in `needed` (a bit mask; the highlight-presence unit of [Dembitsky 2025, software/hardware rendering] ch. 3,
  * highlight.hpp, clears the lights no highlight can reach in a triangle): the others add their diffuse
  * term only. The mask is uniform over a triangle, so the branch is too; with every bit set (blinn_phong
- * below) the compiler removes it. */
+ * below) the compiler removes it. `lane_needed` narrows it per lane (lanes of different triangles: a lane
+ * without light i's bit adds a zero specular term, which leaves its sum the same bits as no term); all bits
+ * set where the lanes share one mask, and the select folds away. */
 INLINE void blinn_phong_masked(__constant float4* materials, int m, __constant float4* lights, float4 viewer, int needed,
-                               floatV nx, floatV ny, floatV nz, floatV px, floatV py, floatV pz, floatV* r, floatV* g,
-                               floatV* b) {
+                               intV lane_needed, floatV nx, floatV ny, floatV nz, floatV px, floatV py, floatV pz,
+                               floatV* r, floatV* g, floatV* b) {
   const float4 amb = materials[3 * m], kd = materials[3 * m + 1], ks = materials[3 * m + 2];
   floatV cr = (floatV)amb.x, cg = (floatV)amb.y, cb = (floatV)amb.z;
 #if LOCAL_VIEWER
@@ -42,7 +44,8 @@ INLINE void blinn_phong_masked(__constant float4* materials, int m, __constant f
       floatV hx = lx + vx, hy = ly + vy, hz = lz + vz;
       const floatV h_inv = safe_rsqrt(hx * hx + hy * hy + hz * hz);
       const floatV n_dot_h = (nx * hx + ny * hy + nz * hz) * h_inv;
-      const floatV spec = specular_term(n_dot_h, amb.w, kd.w); /* specular_models.h */
+      const floatV spec = select((floatV)0.0f, specular_term(n_dot_h, amb.w, kd.w), /* specular_models.h */
+                                 (lane_needed & (1 << i)) != 0);
       cr += il.x * (kd.x * n_dot_l + ks.x * spec);
       cg += il.y * (kd.y * n_dot_l + ks.y * spec);
       cb += il.z * (kd.z * n_dot_l + ks.z * spec);
@@ -60,7 +63,7 @@ INLINE void blinn_phong_masked(__constant float4* materials, int m, __constant f
 INLINE void blinn_phong(__constant float4* materials, int m, __constant float4* lights, float4 viewer,
                         floatV nx, floatV ny, floatV nz, floatV px, floatV py, floatV pz,
                         floatV* r, floatV* g, floatV* b) {
-  blinn_phong_masked(materials, m, lights, viewer, -1, nx, ny, nz, px, py, pz, r, g, b);
+  blinn_phong_masked(materials, m, lights, viewer, -1, (intV)(-1), nx, ny, nz, px, py, pz, r, g, b);
 }
 
 #endif

@@ -20,7 +20,8 @@ INLINE void shade_unit_normal(__global const float* a, floatV fdy, floatV rel, i
 #else
   const floatV px = 0.0f, py = 0.0f, pz = 0.0f;
 #endif
-  blinn_phong_masked(materials, (int)a[PHONG_MATERIAL_SLOT], lights, viewer, needed, nx, ny, nz, px, py, pz, r, g, b);
+  blinn_phong_masked(materials, (int)a[PHONG_MATERIAL_SLOT], lights, viewer, needed, (intV)(-1), nx, ny, nz, px, py, pz, r,
+                     g, b);
 }
 
 /* Phong at the lanes' pixels, the specular term for the lights in `needed` (the combined method's highlight
@@ -38,16 +39,17 @@ INLINE void shade_pixels_at(__global const float* a, floatV fdy, floatV rel, flo
   shade_pixels_masked(a, fdy, rel, -1, r, g, b, lights, materials, viewer);
 }
 
-/* shade_pixels_masked with each lane's own planes (p[k]: coefficient k of the lane's triangle, slots 0..17), one
- * material and one specular mask: the deferred stamps of render_tiles.cl, where a stamp's pixels come from
- * different triangles. The same operations in the same order, so the same values as shade_pixels_masked on each
- * lane's triangle. */
+/* shade_pixels_masked with each lane's own planes (p[k]: coefficient k of the lane's triangle, slots 0..17) and
+ * specular mask (lane_needed; needed their union), one material: the deferred stamps of render_tiles.cl, where a
+ * stamp's pixels come from different triangles. The same operations in the same order, so the same values as
+ * shade_pixels_masked on each lane's triangle. */
 INLINE floatV plane_lanes(const floatV* p, int slot, floatV fdy, floatV rel) {
   return (p[slot] + p[slot + 6] * fdy) + p[slot + 3] * rel;
 }
 
-INLINE void shade_pixels_lanes(const floatV* p, int material, int needed, floatV fdy, floatV rel, floatV* r, floatV* g,
-                               floatV* b, __constant float4* lights, __constant float4* materials, float4 viewer) {
+INLINE void shade_pixels_lanes(const floatV* p, int material, int needed, intV lane_needed, floatV fdy, floatV rel,
+                               floatV* r, floatV* g, floatV* b, __constant float4* lights, __constant float4* materials,
+                               float4 viewer) {
   floatV nx = plane_lanes(p, 0, fdy, rel), ny = plane_lanes(p, 1, fdy, rel), nz = plane_lanes(p, 2, fdy, rel);
   normalize_lanes(&nx, &ny, &nz);
 #if NEED_POSITION
@@ -55,7 +57,7 @@ INLINE void shade_pixels_lanes(const floatV* p, int material, int needed, floatV
 #else
   const floatV px = 0.0f, py = 0.0f, pz = 0.0f;
 #endif
-  blinn_phong_masked(materials, material, lights, viewer, needed, nx, ny, nz, px, py, pz, r, g, b);
+  blinn_phong_masked(materials, material, lights, viewer, needed, lane_needed, nx, ny, nz, px, py, pz, r, g, b);
 }
 
 INLINE void shade_pixels(__global const float* a, int dy, floatV rel, floatV* r, floatV* g, floatV* b,

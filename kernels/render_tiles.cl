@@ -201,7 +201,7 @@ INLINE void shade_stamp(__global const TriangleGeometry* t, __global const float
 
 #if DEFER_STAMPS
 /* The deferred tile's pixels, a stamp at a time, each by its winner. A stamp whose pixels have several
- * winners of one material (and one specular mask) is shaded once with each lane's planes gathered from its own
+ * winners of one material is shaded once with each lane's planes and specular mask gathered from its own
  * triangle (lanes without a winner repeat a covered lane's and are not kept); otherwise each winner shades its
  * own lanes from its planes, as the walk would (one shading when the stamp has one winner). */
 #define DEFER_PLANE_FLOATS 18 /* the normal and position planes: slots 0..17 */
@@ -226,11 +226,13 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
        * once and blended into the lanes it won (lanes without a winner keep the first one's). Copying
        * every lane's record into a lane-major array instead compiled to a scatter per lane. */
       __global const float* a = attrs + (size_t)first * ATTR_FLOATS;
-      const int material = (int)a[PHONG_MATERIAL_SLOT], needed = SPECULAR_NEEDED(a);
+      const int material = (int)a[PHONG_MATERIAL_SLOT];
+      int needed = SPECULAR_NEEDED(a); /* the lanes' specular masks and their union */
+      intV lane_needed = (intV)needed;
       floatV p[DEFER_PLANE_FLOATS];
       for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = (floatV)a[k];
       intV dy = STAMP_ROW + (y - tris[first].y0), rel = STAMP_COLUMN + (x - tris[first].x0);
-      int shading_differs = 0, pending[VEC];
+      int materials_differ = 0, pending[VEC];
       for (int l = 0; l < VEC; ++l) pending[l] = ids[l] != first ? ids[l] : -1;
       for (int l = 0; l < VEC; ++l) {
         const int id = pending[l];
@@ -238,14 +240,16 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
         for (int k = l; k < VEC; ++k)
           if (pending[k] == id) pending[k] = -1;
         a = attrs + (size_t)id * ATTR_FLOATS;
-        shading_differs |= (int)a[PHONG_MATERIAL_SLOT] != material || SPECULAR_NEEDED(a) != needed;
+        materials_differ |= (int)a[PHONG_MATERIAL_SLOT] != material;
         const intV mine = winner[i] == id;
+        needed |= SPECULAR_NEEDED(a);
+        lane_needed = select(lane_needed, (intV)SPECULAR_NEEDED(a), mine);
         for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = select(p[k], (floatV)a[k], mine);
         dy = select(dy, STAMP_ROW + (y - tris[id].y0), mine);
         rel = select(rel, STAMP_COLUMN + (x - tris[id].x0), mine);
       }
-      if (!shading_differs) {
-        shade_pixels_lanes(p, material, needed, convert_floatV(dy), convert_floatV(rel), &sr, &sg, &sb, lights, materials,
+      if (!materials_differ) {
+        shade_pixels_lanes(p, material, needed, lane_needed, convert_floatV(dy), convert_floatV(rel), &sr, &sg, &sb, lights, materials,
                            viewer);
         keep(won, sr, sg, sb, &cr[i], &cg[i], &cb[i]);
         continue;
