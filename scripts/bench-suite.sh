@@ -147,6 +147,7 @@ combined_study() {
       --methods phong gouraud combined:2 combined:3 combined:4 combined:auto@1 combined:auto@2 combined:auto@4 \
                 "combined:auto@1 --triangle-choice none" "combined:0 --triangle-choice sources" \
                 "combined:0 --triangle-choice sources-literal" "combined:0 --highlight-test" \
+                "combined:0@2 --triangle-choice bound" "combined:0@4 --triangle-choice bound" \
       --json "$OUT/combined-study.json" >"$OUT/combined-study.md"
 }
 phong_methods() {
