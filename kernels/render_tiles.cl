@@ -166,13 +166,19 @@ INLINE void shade_segment(__global const TriangleGeometry* t, __global const flo
  * deferring them (the combined method's Gouraud triangles: three planes). */
 #if COMBINED
 #define SHADE_STAMP_PIXELS shade_points_chosen
-#define SHADED_IN_WALK(attr) shaded_by_gouraud(attr)
 #define SPECULAR_NEEDED(attr) (HIGHLIGHT_TEST ? (int)(attr)[PHONG_HIGHLIGHT_SLOT] : -1)
 #else
 #define SHADE_STAMP_PIXELS shade_pixels_at
-#define SHADED_IN_WALK(attr) 0
 #define SPECULAR_NEEDED(attr) (-1)
 #endif
+/* A function, not a constant macro: a constant operand of && is a warning (an error under PARASHADE_KERNEL_WERROR). */
+INLINE bool shaded_in_walk(__global const float* attr) {
+#if COMBINED
+  return shaded_by_gouraud(attr);
+#else
+  return false;
+#endif
+}
 
 /* One stamp: columns rel (from the triangle's x0) and rows dy (from its y0) per lane; depth test, shade,
  * keep. The same operations per pixel as shade_segment's, so the same values. */
@@ -183,13 +189,13 @@ INLINE void shade_stamp(__global const TriangleGeometry* t, __global const float
   const floatV z = (t->z_ref + t->z_ddy * fdy) + t->z_ddx * frel;
   const intV pass = inside & isless(z, depth[slot]);
 #if DEFER_STAMPS
-  if (deferred && !SHADED_IN_WALK(attr)) { /* two selects: cheaper than asking whether any lane passed */
+  if (deferred && !shaded_in_walk(attr)) { /* two selects: cheaper than asking whether any lane passed */
     depth[slot] = select(depth[slot], z, pass);
     winner[slot] = select(winner[slot], (intV)(int)ti, pass);
     return;
   }
 #endif
-  if (!SHADE_EVERY_LANE && !SHADED_IN_WALK(attr) && !any_lanes(pass)) return;
+  if (!SHADE_EVERY_LANE && !shaded_in_walk(attr) && !any_lanes(pass)) return;
   depth[slot] = select(depth[slot], z, pass);
   floatV sr, sg, sb;
   SHADE_STAMP_PIXELS(attr, fdy, frel, &sr, &sg, &sb, lights, materials, viewer);

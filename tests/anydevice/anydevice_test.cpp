@@ -120,6 +120,11 @@ const std::vector<KernelPath>& kernel_paths() {
        {"--method", "combined:auto", "--max-error", "2", "--highlight-test"}, Check::approximation},
       {"CombinedChoiceBound", "default.json", "96x54", {"--method", "combined:auto", "--triangle-choice", "bound"},
        Check::approximation},
+      // combined:0 on the stamps: the teapot's tiles hold enough triangles to be deferred at this size.
+      {"CombinedZeroChoiceBoundStamps", "teapot.json", "96x54",
+       {"--method", "combined:0", "--triangle-choice", "bound", "--max-error", "4"}, Check::approximation},
+      {"CombinedZeroHighlightTestStamps", "teapot.json", "96x54", {"--method", "combined:0", "--highlight-test"},
+       Check::approximation},
       {"CombinedChoiceSources", "teapot.json", "96x54", {"--method", "combined:3", "--triangle-choice", "sources"},
        Check::approximation},
       {"CombinedChoiceSourcesLiteral", "sphere.json", "90x50",
