@@ -7,12 +7,14 @@ same machine.
     scripts/stage_table.py --before old/parashade --after build/parashade \\
         --scene scenes/teapot.json --scene sphere_2m --methods gouraud,phong --frames 40 --rounds 3
 
-A scene is a file, or sphere_131k / sphere_2m (scenes/sphere.json re-tessellated as bench_llvmpipe's).
+A scene is a file, or sphere_131k / sphere_2m (scenes/sphere.json re-tessellated as bench_llvmpipe's). A method
+may carry render options after it: --methods "phong,combined:0 --triangle-choice bound --max-error 4".
 Prints a Markdown table (ms, before -> after); --json writes the figures.
 """
 import argparse
 import json
 import os
+import shlex
 import statistics
 import subprocess
 import sys
@@ -37,8 +39,9 @@ def scene_file(name, tmp):
 
 def stages(binary, scene, method, frames, tmp, size=None):
     report = os.path.join(tmp, "report.json")
-    cmd = [binary, "render", scene, "-o", os.path.join(tmp, "image.png"), "--method", method, "--frames", str(frames),
-           "--no-error", "-q", "--report", report] + (["--size", size] if size else [])
+    words = shlex.split(method)  # the method, then its own render options
+    cmd = [binary, "render", scene, "-o", os.path.join(tmp, "image.png"), "--method", words[0], "--frames", str(frames),
+           "--no-error", "-q", "--report", report] + words[1:] + (["--size", size] if size else [])
     run = subprocess.run(cmd, capture_output=True, text=True)
     if run.returncode != 0:
         sys.exit(f"stage_table.py: {' '.join(cmd)} failed ({run.returncode}): {run.stderr.strip()}")
@@ -51,7 +54,7 @@ def main():
     ap.add_argument("--before", required=True, help="parashade binary before the change")
     ap.add_argument("--after", required=True, help="parashade binary after it")
     ap.add_argument("--scene", action="append", required=True, help="scene file or sphere_131k / sphere_2m (repeat)")
-    ap.add_argument("--methods", default="gouraud,phong")
+    ap.add_argument("--methods", default="gouraud,phong", help="comma-separated; each may carry render options")
     ap.add_argument("--frames", type=int, default=40)
     ap.add_argument("--rounds", type=int, default=3)
     ap.add_argument("--size", help="WIDTHxHEIGHT for every scene (default: each scene's own)")
