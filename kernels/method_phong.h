@@ -20,8 +20,8 @@ INLINE void shade_unit_normal(__global const float* a, floatV fdy, floatV rel, i
 #else
   const floatV px = 0.0f, py = 0.0f, pz = 0.0f;
 #endif
-  blinn_phong_masked(materials, (int)a[PHONG_MATERIAL_SLOT], lights, viewer, needed, (intV)(-1), nx, ny, nz, px, py, pz, r,
-                     g, b);
+  blinn_phong_masked(materials, (int)a[PHONG_MATERIAL_SLOT], lights, viewer, needed, (intV)(-1), nx, ny, nz, px, py,
+                     pz, r, g, b);
 }
 
 /* Phong at the lanes' pixels, the specular term for the lights in `needed` (the combined method's highlight

@@ -255,8 +255,8 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
         rel = select(rel, STAMP_COLUMN + (x - tris[id].x0), mine);
       }
       if (!materials_differ) {
-        shade_pixels_lanes(p, material, needed, lane_needed, convert_floatV(dy), convert_floatV(rel), &sr, &sg, &sb, lights, materials,
-                           viewer);
+        shade_pixels_lanes(p, material, needed, lane_needed, convert_floatV(dy), convert_floatV(rel), &sr, &sg, &sb,
+                           lights, materials, viewer);
         keep(won, sr, sg, sb, &cr[i], &cg[i], &cb[i]);
         continue;
       }
@@ -269,7 +269,7 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
         if (ids[k] == id) ids[k] = -1;
       __global const TriangleGeometry* t = &tris[id];
       SHADE_STAMP_PIXELS(attrs + (size_t)id * ATTR_FLOATS, convert_floatV(STAMP_ROW + (y - t->y0)),
-                      convert_floatV(STAMP_COLUMN + (x - t->x0)), &sr, &sg, &sb, lights, materials, viewer);
+                         convert_floatV(STAMP_COLUMN + (x - t->x0)), &sr, &sg, &sb, lights, materials, viewer);
       keep(mine, sr, sg, sb, &cr[i], &cg[i], &cb[i]);
     }
   }
