@@ -28,8 +28,9 @@ struct RenderOptions : FrameConfig {
   // The kernel's pixel layout where the frame allows a choice (docs/pipeline.md): 4x4 stamps (true) or
   // 1x16 row segments. The image is the same either way.
   bool stamps = true;
-  // Phong on stamps: a tile holding at least this many triangles is shaded after its walk, each pixel once by
-  // the triangle that won its depth test (docs/pipeline.md); -1: TILE * TILE / 16, 0: every tile. Same image.
+  // Phong and combined:0 on stamps: a tile holding at least this many triangles is shaded after its walk, each
+  // pixel once by the triangle that won its depth test (docs/pipeline.md); -1: TILE * TILE / 16, 0: every tile.
+  // Same image.
   int defer_min_triangles = -1;
   // A frame whose triangle records would take more bytes than this is prepared and shaded in bands of
   // tile rows (FramePipeline::begin_frame), which bounds the frame's peak memory (bench/README.md);
