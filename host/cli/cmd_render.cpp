@@ -40,10 +40,14 @@
 namespace parashade::cli {
 namespace {
 
+// --defer-min-triangles: above any tile's list on a real frame, so the largest value means "never defer".
+constexpr int kMaxDeferMinTriangles = 1 << 24;
+
 struct RenderArgs {
   std::string scene, output, method = "gouraud", device, size, report, units, arith = "float", division = "constant",
               coverage = "centre", specular = "exact", normalize = "exact", triangle_choice;
   int frames = 5, warmup = 1, tile = TILE_DEFAULT, work_items = 0;
+  int defer_min_triangles = -1;  // -1: RenderOptions' default (TILE x TILE / 16)
   // Triangle records a frame may hold at once before it streams in bands of as many (MiB); 0: never
   // streams; -1 (not given): by the frame (default_band_mib, bands of 16).
   int band_mib = -1;
@@ -236,6 +240,7 @@ int run_render(const RenderArgs& a) {
   options.float_output = a.float_output;
   options.tile_size = a.tile;
   options.work_items = a.work_items;
+  options.defer_min_triangles = a.defer_min_triangles;
   options.band_record_bytes = a.band_mib < 0    ? kBandBytesByFrame
                               : a.band_mib == 0 ? SIZE_MAX
                                                 : std::size_t(a.band_mib) << 20;
@@ -271,6 +276,8 @@ int run_render(const RenderArgs& a) {
   if (a.warmup < 0 || a.warmup > kMaxFrames)
     throw UsageError("--warmup must be 0.." + std::to_string(kMaxFrames) + " (got " + std::to_string(a.warmup) + ")");
   if (a.work_items < 0) throw UsageError("--work-items must not be negative");
+  if (a.defer_min_triangles < -1 || a.defer_min_triangles > kMaxDeferMinTriangles)
+    throw UsageError("--defer-min-triangles must be 0.." + std::to_string(kMaxDeferMinTriangles) + " (or -1, the default)");
   check_picture_options(a);
   if (!a.distribute.empty()) return run_distributed(a, options, size);
   if (!a.rank_partition.empty()) throw UsageError("--rank-partition needs --distribute sort-last");
@@ -394,6 +401,8 @@ int run_render(const RenderArgs& a) {
       {"band_mib", a.band_mib < 0 ? default_band_mib(scene.width, scene.height) : a.band_mib},
       {"tuned", tuned},
       {"work_items", renderer.work_items(frame.stats.tiles)},
+      {"defer_min_triangles",
+       options.defer_min_triangles >= 0 ? options.defer_min_triangles : options.tile_size * options.tile_size / 16},
       {"triangles", {{"in", frame.stats.geometry.triangles_in},
                      {"after_culling", frame.stats.geometry.triangles_out}}},
       {"mesh", mesh_json(scene)},
@@ -543,6 +552,10 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("--work-items", a->work_items,
                   "Kernel work-items, each rendering every N-th tile (0: " + std::to_string(WORK_ITEMS_PER_COMPUTE_UNIT) +
                       " per compute unit)")
+      ->capture_default_str();
+  cmd->add_option("--defer-min-triangles", a->defer_min_triangles,
+                  "Phong and combined:0 on the stamps: a tile of at least N triangles shades each pixel once, after "
+                  "its depth test (-1: tile x tile / 16; 0: every tile). Same image; docs/pipeline.md")
       ->capture_default_str();
   cmd->add_option("--band-mib", a->band_mib,
                   "A frame whose triangle records would exceed this many MiB is set up, binned and shaded in bands "

@@ -44,6 +44,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadOption{"negative_size", {"--size", "-64x48"}, "-64x48"},
                       BadOption{"tile_24", {"--tile", "24"}, "--tile"},
                       BadOption{"negative_work_items", {"--work-items", "-1"}, "--work-items"},
+                      BadOption{"negative_defer_min_triangles", {"--defer-min-triangles", "-2"}, "--defer-min-triangles"},
                       BadOption{"zero_frames", {"--frames", "0"}, "--frames"}),
     [](const auto& info) { return std::string(info.param.label); });
 

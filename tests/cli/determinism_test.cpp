@@ -83,6 +83,20 @@ TEST_F(CliDeterminism, WorkItemCountDoesNotChangeTheImage) {
   }
 }
 
+// A deferred tile shades each pixel once, by the triangle that won its depth test: what the walk would have kept.
+TEST_F(CliDeterminism, DeferralThresholdDoesNotChangeTheImage) {
+  for (const std::string& method : {"phong", "combined:0"}) {
+    std::vector<std::string> args = {"--method", method};
+    if (method != "phong") args.insert(args.end(), {"--triangle-choice", "bound", "--max-error", "3"});
+    const std::string reference = render_teapot(method + "-default", args);
+    for (const std::string& n : {"0", "4", "16777216"}) {
+      std::vector<std::string> with = args;
+      with.insert(with.end(), {"--defer-min-triangles", n});
+      EXPECT_TRUE(render_teapot(method + "-defer" + n, with) == reference) << method << ", --defer-min-triangles " << n;
+    }
+  }
+}
+
 // A pixel's value does not depend on which tile it falls in: coverage is per pixel centre and the span
 // values are evaluated from the triangle's planes at the pixel, in float and in fixed point.
 TEST_F(CliDeterminism, TileSizeDoesNotChangeTheImage) {
