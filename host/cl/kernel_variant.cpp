@@ -38,7 +38,7 @@ KernelVariant kernel_variant(const Scene& s, const RenderOptions& o) {
   v.division = o.division;
   v.dda_coverage = o.dda_coverage;
   v.stamps = o.stamps;
-  v.defer_min_triangles = o.defer_min_triangles;
+  v.defer_min_triangles = o.deferral_threshold();
   return v;
 }
 
@@ -100,8 +100,7 @@ std::string KernelVariant::build_options() const {
   }
   if (stamps_apply()) opt << " -D STAMPS=1";
   if (stamps_apply() && (method == Method::phong || combined))
-    opt << " -D DEFER_STAMPS=1 -D DEFER_MIN_TRIANGLES="
-        << (defer_min_triangles >= 0 ? defer_min_triangles : tile * tile / 16);
+    opt << " -D DEFER_STAMPS=1 -D DEFER_MIN_TRIANGLES=" << defer_min_triangles;
   if (plan_pass == 1) opt << " -D PLAN_PASS=1 -D PLAN_DYNAMIC=" << (plan_dynamic ? "1" : "0");
   if (plan_pass == 2) opt << " -D PLAN_PASS=2";
   return opt.str();

@@ -33,7 +33,7 @@ struct KernelVariant {
   int plan_pass = 0;
   bool plan_dynamic = false;
   bool stamps = false;  // asked for; used where the kernel has them (stamps_apply)
-  int defer_min_triangles = -1;  // Phong's stamps: RenderOptions::defer_min_triangles
+  int defer_min_triangles = 0;  // Phong's and combined:0's stamps: RenderOptions::deferral_threshold()
 
   // 4x4 stamps: the plain path only (no unit, per-span normalization, plan or float read-back), for Phong,
   // Gouraud, flat and combined:0 (Phong or Gouraud at every pixel), where they pay (docs/pipeline.md); the other

@@ -32,6 +32,8 @@ struct RenderOptions : FrameConfig {
   // pixel once by the triangle that won its depth test (docs/pipeline.md); -1: TILE * TILE / 16, 0: every tile.
   // Same image.
   int defer_min_triangles = -1;
+  // defer_min_triangles with its default resolved for this tile size.
+  int deferral_threshold() const { return defer_min_triangles >= 0 ? defer_min_triangles : tile_size * tile_size / 16; }
   // A frame whose triangle records would take more bytes than this is prepared and shaded in bands of
   // tile rows (FramePipeline::begin_frame), which bounds the frame's peak memory (bench/README.md);
   // kBandBytesByFrame: by the frame's size (default_band_mib, kDefaultBandBytes); SIZE_MAX: never.
