@@ -236,6 +236,7 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
       int needed = SPECULAR_NEEDED(a); /* the lanes' specular masks and their union */
       intV lane_needed = (intV)needed;
       floatV p[DEFER_PLANE_FLOATS];
+#pragma unroll
       for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = (floatV)a[k];
       intV dy = STAMP_ROW + (y - tris[first].y0), rel = STAMP_COLUMN + (x - tris[first].x0);
       int materials_differ = 0, pending[VEC];
@@ -250,6 +251,7 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
         const intV mine = winner[i] == id;
         needed |= SPECULAR_NEEDED(a);
         lane_needed = select(lane_needed, (intV)SPECULAR_NEEDED(a), mine);
+#pragma unroll
         for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = select(p[k], (floatV)a[k], mine);
         dy = select(dy, STAMP_ROW + (y - tris[id].y0), mine);
         rel = select(rel, STAMP_COLUMN + (x - tris[id].x0), mine);
