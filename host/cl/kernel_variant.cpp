@@ -46,6 +46,8 @@ std::vector<std::string> kernel_files(const KernelVariant& v) {
   return {"common.h", "triangle_record.h", method_header(v.method), "render_tiles.cl"};
 }
 
+bool KernelVariant::defers_tiles() const { return stamps_apply() && (method == Method::phong || combined); }
+
 bool KernelVariant::stamps_apply() const {
   // combined:0 shades every pixel by Phong or, where its triangle choice says so, by Gouraud: no segments to walk.
   const bool per_pixel_combined = combined && !combined_config.automatic && combined_config.k == 0;
@@ -99,7 +101,7 @@ std::string KernelVariant::build_options() const {
         << " -D UNIT_REGISTER_COLOUR=" << (method == Method::gouraud ? 1 : 0);
   }
   if (stamps_apply()) opt << " -D STAMPS=1";
-  if (stamps_apply() && (method == Method::phong || combined))
+  if (defers_tiles())
     opt << " -D DEFER_STAMPS=1 -D DEFER_MIN_TRIANGLES=" << defer_min_triangles;
   if (plan_pass == 1) opt << " -D PLAN_PASS=1 -D PLAN_DYNAMIC=" << (plan_dynamic ? "1" : "0");
   if (plan_pass == 2) opt << " -D PLAN_PASS=2";

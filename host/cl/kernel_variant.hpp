@@ -39,6 +39,8 @@ struct KernelVariant {
   // Gouraud, flat and combined:0 (Phong or Gouraud at every pixel), where they pay (docs/pipeline.md); the other
   // combined methods (segments along rows) stay on row segments.
   bool stamps_apply() const;
+  // Phong and combined:0 on the stamps shade a tile of at least defer_min_triangles triangles after its walk.
+  bool defers_tiles() const;
 
   std::string build_options() const;
 };

@@ -195,6 +195,11 @@ TileKernelArgs Renderer::tile_args(const cl::Buffer& tile_start, const cl::Buffe
           &out_rgba_, &out_float_, &fixed_, &tile_counters_, &leaves_, &dda_first_, &dda_rows_};
 }
 
+std::optional<int> Renderer::deferral_threshold(const Scene& scene) const {
+  if (!kernel_variant(scene, options_).defers_tiles()) return std::nullopt;
+  return options_.deferral_threshold();
+}
+
 int Renderer::work_items(int tiles) const {
   const int wanted = options_.work_items > 0 ? options_.work_items : WORK_ITEMS_PER_COMPUTE_UNIT * std::max(1, device_.info().compute_units);
   return std::max(1, std::min(tiles, wanted));

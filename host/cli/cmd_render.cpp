@@ -47,7 +47,7 @@ struct RenderArgs {
   std::string scene, output, method = "gouraud", device, size, report, units, arith = "float", division = "constant",
               coverage = "centre", specular = "exact", normalize = "exact", triangle_choice;
   int frames = 5, warmup = 1, tile = TILE_DEFAULT, work_items = 0;
-  int defer_min_triangles = -1;  // -1: RenderOptions' default (TILE x TILE / 16)
+  int defer_min_triangles = -1;  // -1: RenderOptions' default (RenderOptions::deferral_threshold)
   // Triangle records a frame may hold at once before it streams in bands of as many (MiB); 0: never
   // streams; -1 (not given): by the frame (default_band_mib, bands of 16).
   int band_mib = -1;
@@ -384,6 +384,7 @@ int run_render(const RenderArgs& a) {
   std::vector<StagedFile> pictures;
   if (ref) pictures = stage_error_pictures(a, method, *ref, frame.image, error_lines);
   const double pixels = double(scene.width) * scene.height;
+  const std::optional<int> deferral = renderer.deferral_threshold(scene);
   nlohmann::json report = {
       {"scene", scene.name},
       {"scene_file", a.scene},
@@ -401,7 +402,7 @@ int run_render(const RenderArgs& a) {
       {"band_mib", a.band_mib < 0 ? default_band_mib(scene.width, scene.height) : a.band_mib},
       {"tuned", tuned},
       {"work_items", renderer.work_items(frame.stats.tiles)},
-      {"defer_min_triangles", options.deferral_threshold()},
+      {"defer_min_triangles", deferral.has_value() ? nlohmann::json(*deferral) : nlohmann::json(nullptr)},
       {"triangles", {{"in", frame.stats.geometry.triangles_in},
                      {"after_culling", frame.stats.geometry.triangles_out}}},
       {"mesh", mesh_json(scene)},
@@ -554,7 +555,8 @@ Command add_render_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--defer-min-triangles", a->defer_min_triangles,
                   "Phong and combined:0 on the stamps: a tile of at least N triangles shades each pixel once, after "
-                  "its depth test (-1: tile x tile / 16; 0: every tile). Same image; docs/pipeline.md")
+                  "its depth test (-1: the default, every tile for Phong, tile x tile / 16 for combined:0; 0: every tile). "
+                  "Same image; docs/pipeline.md")
       ->capture_default_str();
   cmd->add_option("--band-mib", a->band_mib,
                   "A frame whose triangle records would exceed this many MiB is set up, binned and shaded in bands "

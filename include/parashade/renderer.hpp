@@ -29,11 +29,15 @@ struct RenderOptions : FrameConfig {
   // 1x16 row segments. The image is the same either way.
   bool stamps = true;
   // Phong and combined:0 on stamps: a tile holding at least this many triangles is shaded after its walk, each
-  // pixel once by the triangle that won its depth test (docs/pipeline.md); -1: TILE * TILE / 16, 0: every tile.
+  // pixel once by the triangle that won its depth test (docs/pipeline.md); -1: the default (every tile for
+  // Phong, TILE * TILE / 16 for combined:0, whose Gouraud triangles shade in the walk), 0: every tile.
   // Same image.
   int defer_min_triangles = -1;
-  // defer_min_triangles with its default resolved for this tile size.
-  int deferral_threshold() const { return defer_min_triangles >= 0 ? defer_min_triangles : tile_size * tile_size / 16; }
+  // defer_min_triangles with its default resolved for this method and tile size.
+  int deferral_threshold() const {
+    if (defer_min_triangles >= 0) return defer_min_triangles;
+    return method == Method::phong ? 0 : tile_size * tile_size / 16;
+  }
   // A frame whose triangle records would take more bytes than this is prepared and shaded in bands of
   // tile rows (FramePipeline::begin_frame), which bounds the frame's peak memory (bench/README.md);
   // kBandBytesByFrame: by the frame's size (default_band_mib, kDefaultBandBytes); SIZE_MAX: never.
@@ -69,6 +73,9 @@ class Renderer : private FrameStorage {
   void set_band(int first, int rows);
   // Work-items the kernel runs with for a frame of `tiles` tiles.
   int work_items(int tiles) const;
+  // The deferral threshold the scene's kernel uses (RenderOptions::deferral_threshold), or none where its
+  // kernel never defers (Gouraud, flat, the unit paths, span normalization, segments).
+  std::optional<int> deferral_threshold(const Scene& scene) const;
   // A planned frame's depth keys after render() (kernels/plan_key.h: per pixel, row-major, the least
   // (depth, record index) key, PLAN_NO_KEY where nothing covers it): what sort-last ranks composite.
   std::vector<std::uint64_t> plan_keys(const Scene& scene);

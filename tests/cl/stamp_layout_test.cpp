@@ -21,6 +21,8 @@ namespace {
 
 using namespace testing_support;
 
+constexpr int kNeverDefer = 1 << 24;  // a deferral threshold no tile reaches
+
 // A case of the comparison: the method, the deferral threshold, combined:0's highlight test and triangle choice
 // (bound, budget 2 levels).
 struct Variant {
@@ -44,11 +46,12 @@ std::vector<std::uint8_t> render_rgba(const Scene& scene, const Variant& v, bool
 }
 
 void expect_same_image(const Scene& scene, const std::string& what, std::initializer_list<int> tiles = {16}) {
-  // Phong's and combined:0's stamps also with every tile deferred (shaded after its walk by each pixel's winner);
+  // Phong's stamps deferred in every tile (its default: shaded after the walk by each pixel's winner) and in none;
+  // combined:0's also with every tile deferred;
   // combined:0's deferred and choosing variants at the first tile size only (each is a kernel build).
   const TriangleRule bound = TriangleRule::bound;
   for (const Variant& v :
-       {Variant{Method::phong}, Variant{Method::phong, 0}, Variant{Method::gouraud}, Variant{Method::flat},
+       {Variant{Method::phong}, Variant{Method::phong, kNeverDefer}, Variant{Method::gouraud}, Variant{Method::flat},
         Variant{Method::combined}, Variant{Method::combined, -1, true}, Variant{Method::combined, 0, true},
         Variant{Method::combined, -1, false, bound}, Variant{Method::combined, 0, false, bound}}) {
     for (int tile : tiles) {
@@ -65,7 +68,8 @@ void expect_same_image(const Scene& scene, const std::string& what, std::initial
           ++differ;
           first = std::min(first, i);
         }
-      EXPECT_EQ(differ, 0u) << what << ", " << method_name(v.method) << (v.defer_min == 0 ? " deferred" : "")
+      EXPECT_EQ(differ, 0u) << what << ", " << method_name(v.method)
+                            << (v.defer_min == 0 ? " deferred" : v.defer_min == kNeverDefer ? " never deferred" : "")
                             << (v.highlight_test ? " highlight test" : "")
                             << (v.rule == bound ? " triangle choice" : "") << ", tile " << tile
                             << ": first differing byte at pixel " << first / 4 << " (x " << (first / 4) % scene.width

@@ -1,0 +1,45 @@
+// The report's defer_min_triangles: the threshold from which the frame's kernel shades a tile after its depth
+// test (docs/pipeline.md "Deferred stamps"). Phong defers every tile by default, combined:0 tiles of at least
+// tile x tile / 16 triangles; a kernel that never defers (Gouraud, span normalization) reports null, not a
+// threshold it does not use; an asked threshold is reported as asked.
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cli_fixture.hpp"
+
+namespace parashade {
+namespace {
+
+using namespace testing_support;
+
+class CliDeferralReport : public CliTest {
+ protected:
+  nlohmann::json report_of(const std::vector<std::string>& args) {
+    const auto scene = input("ball.json", sphere_scene());
+    const RunResult run = render(scene, args);
+    EXPECT_TRUE(succeeds(run));
+    return read_report();
+  }
+};
+
+TEST_F(CliDeferralReport, DefaultsPerMethod) {
+  EXPECT_EQ(report_of({"--method", "phong"})["defer_min_triangles"], 0) << "Phong defers every tile by default";
+  const nlohmann::json combined = report_of({"--method", "combined:0", "--tile", "32"});
+  EXPECT_EQ(combined["tile_size"], 32);
+  EXPECT_EQ(combined["defer_min_triangles"], 32 * 32 / 16);
+}
+
+TEST_F(CliDeferralReport, NullWhereTheKernelNeverDefers) {
+  EXPECT_TRUE(report_of({"--method", "gouraud"})["defer_min_triangles"].is_null());
+  EXPECT_TRUE(report_of({"--method", "phong", "--normalize", "slerp"})["defer_min_triangles"].is_null());
+  EXPECT_TRUE(report_of({"--method", "combined:2"})["defer_min_triangles"].is_null());
+}
+
+TEST_F(CliDeferralReport, AskedThresholdIsReported) {
+  EXPECT_EQ(report_of({"--method", "phong", "--defer-min-triangles", "5"})["defer_min_triangles"], 5);
+}
+
+}  // namespace
+}  // namespace parashade
