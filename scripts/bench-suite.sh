@@ -143,11 +143,12 @@ span_setup() {
 }
 combined_study() {
   # shellcheck disable=SC2086
-  "$PYTHON" scripts/combined_study.py --binary "$BUILD/parashade" --scenes $PHONG_SCENES --frames 11 --rounds 3 \
+  "$PYTHON" scripts/combined_study.py --binary "$BUILD/parashade" --scenes $PHONG_SCENES --frames 11 --rounds 5 \
       --methods phong gouraud combined:2 combined:3 combined:4 combined:auto@1 combined:auto@2 combined:auto@4 \
                 "combined:auto@1 --triangle-choice none" "combined:0 --triangle-choice sources" \
                 "combined:0 --triangle-choice sources-literal" "combined:0 --highlight-test" \
                 "combined:0@2 --triangle-choice bound" "combined:0@4 --triangle-choice bound" \
+                "combined:0@8 --triangle-choice bound" \
       --json "$OUT/combined-study.json" >"$OUT/combined-study.md"
 }
 phong_methods() {
