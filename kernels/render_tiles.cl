@@ -220,14 +220,17 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
     int ids[VEC];
     vstoreV(winner[i], 0, ids);
     const int x = tile_x + (i % STAMPS_X) * STAMP, y = tile_y + (i / STAMPS_X) * STAMP;
-    int first = -1, mixed = 0;
+    /* The stamp's winners, once each, in the order their first lanes come. */
+    int winners[VEC], count = 0;
     for (int l = 0; l < VEC; ++l) {
       if (ids[l] < 0) continue;
-      if (first < 0) first = ids[l];
-      mixed |= ids[l] != first;
+      int seen = 0;
+      for (int k = 0; k < count; ++k) seen |= winners[k] == ids[l];
+      if (!seen) winners[count++] = ids[l];
     }
+    const int first = winners[0];
     floatV sr, sg, sb;
-    if (mixed) {
+    if (count > 1) {
       /* Each lane's planes from its own winner: a stamp has a few winners, so each one's record is read
        * once and blended into the lanes it won (lanes without a winner keep the first one's). Copying
        * every lane's record into a lane-major array instead compiled to a scatter per lane. */
@@ -239,13 +242,9 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
 #pragma unroll
       for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = (floatV)a[k];
       intV dy = STAMP_ROW + (y - tris[first].y0), rel = STAMP_COLUMN + (x - tris[first].x0);
-      int materials_differ = 0, pending[VEC];
-      for (int l = 0; l < VEC; ++l) pending[l] = ids[l] != first ? ids[l] : -1;
-      for (int l = 0; l < VEC; ++l) {
-        const int id = pending[l];
-        if (id < 0) continue;
-        for (int k = l; k < VEC; ++k)
-          if (pending[k] == id) pending[k] = -1;
+      int materials_differ = 0;
+      for (int w = 1; w < count; ++w) {
+        const int id = winners[w];
         a = attrs + (size_t)id * ATTR_FLOATS;
         materials_differ |= (int)a[PHONG_MATERIAL_SLOT] != material;
         const intV mine = winner[i] == id;
@@ -263,12 +262,9 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
         continue;
       }
     }
-    for (int l = 0; l < VEC; ++l) { /* each winner over its own lanes */
-      const int id = ids[l];
-      if (id < 0) continue;
+    for (int w = 0; w < count; ++w) { /* each winner over its own lanes */
+      const int id = winners[w];
       const intV mine = winner[i] == id;
-      for (int k = l; k < VEC; ++k)
-        if (ids[k] == id) ids[k] = -1;
       __global const TriangleGeometry* t = &tris[id];
       SHADE_STAMP_PIXELS(attrs + (size_t)id * ATTR_FLOATS, convert_floatV(STAMP_ROW + (y - t->y0)),
                          convert_floatV(STAMP_COLUMN + (x - t->x0)), &sr, &sg, &sb, lights, materials, viewer);
