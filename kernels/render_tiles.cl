@@ -217,9 +217,22 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
   for (int i = 0; i < TILE_VECTORS; ++i) {
     const intV won = winner[i] >= 0;
     if (!any_lanes(won)) continue;
+    const int x = tile_x + (i % STAMPS_X) * STAMP, y = tile_y + (i / STAMPS_X) * STAMP;
+    floatV sr, sg, sb;
+    const int only = winner[i].s0;
+    if (!any_lanes(winner[i] != (intV)only)) {
+      /* One triangle won every lane (inside large triangles, most stamps): shade it as the scan below would,
+       * without the scan. */
+      __global const TriangleGeometry* t = &tris[only];
+      SHADE_STAMP_PIXELS(attrs + (size_t)only * ATTR_FLOATS, convert_floatV(STAMP_ROW + (y - t->y0)),
+                         convert_floatV(STAMP_COLUMN + (x - t->x0)), &sr, &sg, &sb, lights, materials, viewer);
+      cr[i] = sr;
+      cg[i] = sg;
+      cb[i] = sb;
+      continue;
+    }
     int ids[VEC];
     vstoreV(winner[i], 0, ids);
-    const int x = tile_x + (i % STAMPS_X) * STAMP, y = tile_y + (i / STAMPS_X) * STAMP;
     /* The stamp's winners, once each, in the order their first lanes come. */
     int winners[VEC], count = 0;
     for (int l = 0; l < VEC; ++l) {
@@ -229,7 +242,6 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
       if (!seen) winners[count++] = ids[l];
     }
     const int first = winners[0];
-    floatV sr, sg, sb;
     if (count > 1) {
       /* Each lane's planes from its own winner: a stamp has a few winners, so each one's record is read
        * once and blended into the lanes it won (lanes without a winner keep the first one's). Copying
