@@ -67,6 +67,14 @@ INLINE int any_lanes(intV m) {
   return (h2.x | h2.y) < 0;
 }
 
+/* The largest of a VEC-lane vector's lanes, by halving as any_lanes. */
+INLINE int max_lane(intV v) {
+  const int8 h8 = max(v.lo, v.hi);
+  const int4 h4 = max(h8.lo, h8.hi);
+  const int2 h2 = max(h4.lo, h4.hi);
+  return max(h2.x, h2.y);
+}
+
 /* Read prefetch of the cache line at p (any address space): a hint, no effect on results. Only where the
  * kernel is compiled for the CPU itself (PoCL's CPU devices): a device that interprets or compiles for
  * another target need not know the intrinsic (Oclgrind refuses the kernel: "Undefined external function

@@ -219,16 +219,14 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
     if (!any_lanes(won)) continue;
     const int x = tile_x + (i % STAMPS_X) * STAMP, y = tile_y + (i / STAMPS_X) * STAMP;
     floatV sr, sg, sb;
-    const int only = winner[i].s0;
-    if (!any_lanes(winner[i] != (intV)only)) {
-      /* One triangle won every lane (inside large triangles, most stamps): shade it as the scan below would,
-       * without the scan. */
+    const int only = max_lane(winner[i]);
+    if (!any_lanes(won & (winner[i] != (intV)only))) {
+      /* One triangle won every lane that has a winner (inside and along the edges of large triangles, most
+       * stamps): shade it as the scan below would, without the scan. */
       __global const TriangleGeometry* t = &tris[only];
       SHADE_STAMP_PIXELS(attrs + (size_t)only * ATTR_FLOATS, convert_floatV(STAMP_ROW + (y - t->y0)),
                          convert_floatV(STAMP_COLUMN + (x - t->x0)), &sr, &sg, &sb, lights, materials, viewer);
-      cr[i] = sr;
-      cg[i] = sg;
-      cb[i] = sb;
+      keep(won, sr, sg, sb, &cr[i], &cg[i], &cb[i]);
       continue;
     }
     int ids[VEC];
