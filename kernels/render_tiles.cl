@@ -233,8 +233,9 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
     vstoreV(winner[i], 0, ids);
     /* The stamp's winners, once each, in the order their first lanes come. */
     int winners[VEC], count = 0;
-    for (int l = 0; l < VEC; ++l) {
-      if (ids[l] < 0) continue;
+    for (int l = 0, previous = -1; l < VEC; ++l) {
+      if (ids[l] < 0 || ids[l] == previous) continue; /* neighbouring lanes mostly share a winner */
+      previous = ids[l];
       int seen = 0;
       for (int k = 0; k < count; ++k) seen |= winners[k] == ids[l];
       if (!seen) winners[count++] = ids[l];
