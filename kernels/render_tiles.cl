@@ -467,13 +467,15 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
         const int sx_first = (lo + x0 - tile_x) / STAMP, sx_last = (hi + x0 - tile_x) / STAMP;
         for (int sy = sy_first; sy <= sy_last; ++sy) {
           const intV dy = STAMP_ROW + (tile_y + sy * STAMP - y0);
-          const intV rows = (dy >= row_first - y0) & (dy <= row_last - y0);
+          /* Each bound as a difference that is >= 0 inside (pixel offsets: no overflow), so the lane's tests are
+           * one sign test of their OR: on AVX2 each separate 16-lane compare was packed to bytes and back. */
+          const intV rows = (dy - (row_first - y0)) | ((row_last - y0) - dy);
           const intV r0 = small_edge_row(t, 0, dy), r1 = small_edge_row(t, 1, dy), r2 = small_edge_row(t, 2, dy);
           for (int sx = sx_first; sx <= sx_last; ++sx) {
             const intV rel = STAMP_COLUMN + (tile_x + sx * STAMP - x0);
             /* All three edges >= 0: no sign bit in their OR. */
-            const intV inside = (((r0 + t->edge_a[0] * rel) | (r1 + t->edge_a[1] * rel) | (r2 + t->edge_a[2] * rel)) >= 0) &
-                                rows & (rel >= lo) & (rel <= hi);
+            const intV inside = ((r0 + t->edge_a[0] * rel) | (r1 + t->edge_a[1] * rel) | (r2 + t->edge_a[2] * rel) | rows |
+                                 (rel - lo) | (hi - rel)) >= 0;
             shade_stamp(t, attr, dy, rel, inside, sy * STAMPS_X + sx, depth, cr, cg, cb, lights, materials, viewer
                         DEFER_ARGS);
           }
@@ -508,7 +510,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
         const intV dy = STAMP_ROW + (tile_y + r - y0);
         for (int sx = (left + x0 - tile_x) / STAMP; sx <= (right + x0 - tile_x) / STAMP; ++sx) {
           const intV rel = STAMP_COLUMN + (tile_x + sx * STAMP - x0);
-          shade_stamp(t, attr, dy, rel, (rel >= lo_s) & (rel <= hi_s), sy * STAMPS_X + sx, depth, cr, cg, cb, lights,
+          shade_stamp(t, attr, dy, rel, ((rel - lo_s) | (hi_s - rel)) >= 0, sy * STAMPS_X + sx, depth, cr, cg, cb, lights,
                       materials, viewer DEFER_ARGS);
         }
       }
