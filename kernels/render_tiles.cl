@@ -231,14 +231,13 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
     }
     int ids[VEC];
     vstoreV(winner[i], 0, ids);
-    /* The stamp's winners, once each, in the order their first lanes come. */
+    /* The stamp's winners, once each, in the order their first lanes come: the lowest lane not yet taken,
+     * then all its winner's lanes taken (one pass per winner, no scan of lanes by lanes). */
     int winners[VEC], count = 0;
-    for (int l = 0, previous = -1; l < VEC; ++l) {
-      if (ids[l] < 0 || ids[l] == previous) continue; /* neighbouring lanes mostly share a winner */
-      previous = ids[l];
-      int seen = 0;
-      for (int k = 0; k < count; ++k) seen |= winners[k] == ids[l];
-      if (!seen) winners[count++] = ids[l];
+    for (uint todo = lane_bits(won); todo != 0;) {
+      const int id = ids[31 - clz(todo & (0u - todo))];
+      winners[count++] = id;
+      todo &= ~lane_bits(winner[i] == (intV)id);
     }
     const int first = winners[0];
     if (count > 1) {
