@@ -206,10 +206,10 @@ INLINE void shade_stamp(__global const TriangleGeometry* t, __global const float
 }
 
 #if DEFER_STAMPS
-/* The deferred tile's pixels, a stamp at a time, each by its winner. A stamp whose pixels have several
- * winners of one material is shaded once with each lane's planes and specular mask gathered from its own
- * triangle (lanes without a winner repeat a covered lane's and are not kept); otherwise each winner shades its
- * own lanes from its planes, as the walk would (one shading when the stamp has one winner). */
+/* The deferred tile's pixels, a stamp at a time, each by its winner. A stamp of one winner is shaded from its
+ * planes, as the walk would. A stamp whose pixels have several winners of one material is shaded once with each
+ * lane's planes and specular mask gathered from its own triangle (lanes without a winner repeat a covered
+ * lane's and are not kept); otherwise each winner shades its own lanes from its planes. */
 #define DEFER_PLANE_FLOATS 18 /* the normal and position planes: slots 0..17 */
 INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb, __global const TriangleGeometry* tris,
                           __global const float* attrs, int tile_x, int tile_y, __constant float4* lights,
@@ -231,8 +231,8 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
     }
     int ids[VEC];
     vstoreV(winner[i], 0, ids);
-    /* The stamp's winners, once each, in the order their first lanes come: the lowest lane not yet taken,
-     * then all its winner's lanes taken (one pass per winner, no scan of lanes by lanes). */
+    /* The stamp's winners (two or more here), once each, in the order their first lanes come: the lowest lane
+     * not yet taken, then all its winner's lanes taken (one pass per winner, no scan of lanes by lanes). */
     int winners[VEC], count = 0;
     for (uint todo = lane_bits(won); todo != 0;) {
       const int id = ids[31 - clz(todo & (0u - todo))];
@@ -240,37 +240,35 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
       todo &= ~lane_bits(winner[i] == (intV)id);
     }
     const int first = winners[0];
-    if (count > 1) {
-      /* Each lane's planes from its own winner: a stamp has a few winners, so each one's record is read
-       * once and blended into the lanes it won (lanes without a winner keep the first one's). Copying
-       * every lane's record into a lane-major array instead compiled to a scatter per lane. */
-      __global const float* a = attrs + (size_t)first * ATTR_FLOATS;
-      const int material = (int)a[PHONG_MATERIAL_SLOT];
-      int needed = SPECULAR_NEEDED(a); /* the lanes' specular masks and their union */
-      intV lane_needed = (intV)needed;
-      floatV p[DEFER_PLANE_FLOATS];
+    /* Each lane's planes from its own winner: a stamp has a few winners, so each one's record is read
+     * once and blended into the lanes it won (lanes without a winner keep the first one's). Copying
+     * every lane's record into a lane-major array instead compiled to a scatter per lane. */
+    __global const float* a = attrs + (size_t)first * ATTR_FLOATS;
+    const int material = (int)a[PHONG_MATERIAL_SLOT];
+    int needed = SPECULAR_NEEDED(a); /* the lanes' specular masks and their union */
+    intV lane_needed = (intV)needed;
+    floatV p[DEFER_PLANE_FLOATS];
 #pragma unroll
-      for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = (floatV)a[k];
-      intV dy = STAMP_ROW + (y - tris[first].y0), rel = STAMP_COLUMN + (x - tris[first].x0);
-      int materials_differ = 0;
-      for (int w = 1; w < count; ++w) {
-        const int id = winners[w];
-        a = attrs + (size_t)id * ATTR_FLOATS;
-        materials_differ |= (int)a[PHONG_MATERIAL_SLOT] != material;
-        const intV mine = winner[i] == id;
-        needed |= SPECULAR_NEEDED(a);
-        lane_needed = select(lane_needed, (intV)SPECULAR_NEEDED(a), mine);
+    for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = (floatV)a[k];
+    intV dy = STAMP_ROW + (y - tris[first].y0), rel = STAMP_COLUMN + (x - tris[first].x0);
+    int materials_differ = 0;
+    for (int w = 1; w < count; ++w) {
+      const int id = winners[w];
+      a = attrs + (size_t)id * ATTR_FLOATS;
+      materials_differ |= (int)a[PHONG_MATERIAL_SLOT] != material;
+      const intV mine = winner[i] == id;
+      needed |= SPECULAR_NEEDED(a);
+      lane_needed = select(lane_needed, (intV)SPECULAR_NEEDED(a), mine);
 #pragma unroll
-        for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = select(p[k], (floatV)a[k], mine);
-        dy = select(dy, STAMP_ROW + (y - tris[id].y0), mine);
-        rel = select(rel, STAMP_COLUMN + (x - tris[id].x0), mine);
-      }
-      if (!materials_differ) {
-        shade_pixels_lanes(p, material, needed, lane_needed, convert_floatV(dy), convert_floatV(rel), &sr, &sg, &sb,
-                           lights, materials, viewer);
-        keep(won, sr, sg, sb, &cr[i], &cg[i], &cb[i]);
-        continue;
-      }
+      for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = select(p[k], (floatV)a[k], mine);
+      dy = select(dy, STAMP_ROW + (y - tris[id].y0), mine);
+      rel = select(rel, STAMP_COLUMN + (x - tris[id].x0), mine);
+    }
+    if (!materials_differ) {
+      shade_pixels_lanes(p, material, needed, lane_needed, convert_floatV(dy), convert_floatV(rel), &sr, &sg, &sb,
+                         lights, materials, viewer);
+      keep(won, sr, sg, sb, &cr[i], &cg[i], &cb[i]);
+      continue;
     }
     for (int w = 0; w < count; ++w) { /* each winner over its own lanes */
       const int id = winners[w];
