@@ -67,9 +67,9 @@ INLINE int any_lanes(intV m) {
   return (h2.x | h2.y) < 0;
 }
 
-/* A VEC-lane mask as bits (lane l: bit l), by halving as any_lanes. */
+/* A VEC-lane mask's sign bits as bits (lane l: bit l), by halving as any_lanes. */
 INLINE uint lane_bits(intV m) {
-  const uintV b = as_uintV(m) & ((uintV)1u << as_uintV(LANE_INDEX));
+  const uintV b = (as_uintV(m) >> 31) << as_uintV(LANE_INDEX);
   const uint8 h8 = b.lo | b.hi;
   const uint4 h4 = h8.lo | h8.hi;
   const uint2 h2 = h4.lo | h4.hi;

@@ -180,14 +180,17 @@ INLINE bool shaded_in_walk(__global const float* attr) {
 #endif
 }
 
-/* One stamp: columns rel (from the triangle's x0) and rows dy (from its y0) per lane; depth test, shade,
- * keep. The same operations per pixel as shade_segment's, so the same values. */
-INLINE void shade_stamp(__global const TriangleGeometry* t, __global const float* attr, intV dy, intV rel, intV inside,
+/* One stamp: columns rel (from the triangle's x0) and rows dy (from its y0) per lane, `outside` negative in the
+ * lanes the triangle does not cover; depth test, shade, keep. The same operations per pixel as shade_segment's, so
+ * the same values. The masks are sign bits, as select() and any_lanes() read them: a covered lane passes where
+ * z - depth is negative, which is z < depth for finite z (a covered pixel's), the depth infinite or not (equal
+ * values give +0). On AVX2, ANDing a compare's 16-lane mask packed it to bytes and back. */
+INLINE void shade_stamp(__global const TriangleGeometry* t, __global const float* attr, intV dy, intV rel, intV outside,
                         int slot, floatV* depth, floatV* cr, floatV* cg, floatV* cb, __constant float4* lights,
                         __constant float4* materials, float4 viewer DEFER_DECL) {
   const floatV frel = convert_floatV(rel), fdy = convert_floatV(dy);
   const floatV z = (t->z_ref + t->z_ddy * fdy) + t->z_ddx * frel;
-  const intV pass = inside & isless(z, depth[slot]);
+  const intV pass = ~outside & as_intV(z - depth[slot]);
 #if DEFER_STAMPS
   if (deferred && !shaded_in_walk(attr)) { /* two selects: cheaper than asking whether any lane passed */
     depth[slot] = select(depth[slot], z, pass);
@@ -215,12 +218,13 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
                           __global const float* attrs, int tile_x, int tile_y, __constant float4* lights,
                           __constant float4* materials, float4 viewer) {
   for (int i = 0; i < TILE_VECTORS; ++i) {
-    const intV won = winner[i] >= 0;
-    if (!any_lanes(won)) continue;
+    const int only = max_lane(winner[i]);
+    if (only < 0) continue; /* no winner: every lane -1 */
+    const intV won = ~winner[i]; /* sign bits: the lanes with a winner */
     const int x = tile_x + (i % STAMPS_X) * STAMP, y = tile_y + (i / STAMPS_X) * STAMP;
     floatV sr, sg, sb;
-    const int only = max_lane(winner[i]);
-    if (!any_lanes(won & (winner[i] != (intV)only))) {
+    /* Winners are 0..only, so a lane with another winner than `only` has winner - only < 0 and winner >= 0. */
+    if (!any_lanes(won & (winner[i] - only))) {
       /* One triangle won every lane that has a winner (inside and along the edges of large triangles, most
        * stamps): shade it as the scan below would, without the scan. */
       __global const TriangleGeometry* t = &tris[only];
@@ -470,10 +474,10 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
           const intV r0 = small_edge_row(t, 0, dy), r1 = small_edge_row(t, 1, dy), r2 = small_edge_row(t, 2, dy);
           for (int sx = sx_first; sx <= sx_last; ++sx) {
             const intV rel = STAMP_COLUMN + (tile_x + sx * STAMP - x0);
-            /* All three edges >= 0: no sign bit in their OR. */
-            const intV inside = ((r0 + t->edge_a[0] * rel) | (r1 + t->edge_a[1] * rel) | (r2 + t->edge_a[2] * rel) | rows |
-                                 (rel - lo) | (hi - rel)) >= 0;
-            shade_stamp(t, attr, dy, rel, inside, sy * STAMPS_X + sx, depth, cr, cg, cb, lights, materials, viewer
+            /* Outside where any edge or bound is negative: the sign bit of their OR. */
+            const intV outside = (r0 + t->edge_a[0] * rel) | (r1 + t->edge_a[1] * rel) | (r2 + t->edge_a[2] * rel) | rows |
+                                 (rel - lo) | (hi - rel);
+            shade_stamp(t, attr, dy, rel, outside, sy * STAMPS_X + sx, depth, cr, cg, cb, lights, materials, viewer
                         DEFER_ARGS);
           }
         }
@@ -507,7 +511,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
         const intV dy = STAMP_ROW + (tile_y + r - y0);
         for (int sx = (left + x0 - tile_x) / STAMP; sx <= (right + x0 - tile_x) / STAMP; ++sx) {
           const intV rel = STAMP_COLUMN + (tile_x + sx * STAMP - x0);
-          shade_stamp(t, attr, dy, rel, ((rel - lo_s) | (hi_s - rel)) >= 0, sy * STAMPS_X + sx, depth, cr, cg, cb, lights,
+          shade_stamp(t, attr, dy, rel, (rel - lo_s) | (hi_s - rel), sy * STAMPS_X + sx, depth, cr, cg, cb, lights,
                       materials, viewer DEFER_ARGS);
         }
       }
