@@ -89,7 +89,7 @@ class Assembler {
     const std::uint8_t* outcode = g_.outcode.data();
     const glm::ivec2* xy = g_.xy.data();
     std::uint8_t* used = needs_.color ? used_.data() : nullptr;
-    FlatLanes flat_lanes{this, obj.material, out.flat_color};
+    FlatLanes flat_lanes{this, obj.material, out.flat_color, {}, {}, {}};
     for (std::size_t t = job.first; t < job.first + job.count; ++t) {
       glm::uvec3 tri = triangles[t] + glm::uvec3(vertex_base);
       const std::uint32_t face = std::uint32_t(job.face_first + (t - job.first));
