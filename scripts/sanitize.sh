@@ -1,7 +1,8 @@
 #!/bin/sh
 # Builds parashade and its tests with AddressSanitizer and UndefinedBehaviorSanitizer into ./build-asan
-# (RelWithDebInfo, no benchmarks) and runs the whole test suite under them. The host code is
-# instrumented; kernels run on PoCL as usual. Extra arguments go to cmake's configure step.
+# (RelWithDebInfo at -O1 -g1, no benchmarks) and runs the test suite under them, but for the tests that only
+# check kernels (listed below). The host code is instrumented; kernels run on PoCL as usual. Extra arguments go
+# to cmake's configure step.
 # Installs the Debian packages it needs (as root or through sudo). Prints how long each step took.
 # Tests that need the shared meshes read PARASHADE_MESH_DIR, as with scripts/test.sh.
 # See docs/robustness.md for the sanitizer options and why they are what they are.
