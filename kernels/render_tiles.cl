@@ -241,6 +241,11 @@ INLINE void shade_winners(const intV* winner, floatV* cr, floatV* cg, floatV* cb
     for (uint todo = lane_bits(won); todo != 0;) {
       const int id = ids[31 - clz(todo & (0u - todo))];
       winners[count++] = id;
+      /* Its records are read below, after the list is complete: their loads (often misses on small
+       * triangles) start now. */
+      PREFETCH_LINE(attrs + (size_t)id * ATTR_FLOATS);
+      PREFETCH_LINE(attrs + (size_t)id * ATTR_FLOATS + PHONG_MATERIAL_SLOT);
+      PREFETCH_LINE(&tris[id].y0);
       todo &= ~lane_bits(winner[i] == (intV)id);
     }
     const int first = winners[0];
