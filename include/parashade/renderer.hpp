@@ -42,6 +42,9 @@ struct RenderOptions : FrameConfig {
   // tile rows (FramePipeline::begin_frame), which bounds the frame's peak memory (bench/README.md);
   // kBandBytesByFrame: by the frame's size (default_band_mib, kDefaultBandBytes); SIZE_MAX: never.
   std::size_t band_record_bytes = kBandBytesByFrame;
+  // Build options appended to the frame kernel's own ("-D NAME=VALUE ..."): two builds of the same kernel
+  // source told apart by a macro, for bench_kernel_ab's frame-by-frame comparison. Empty in normal use.
+  std::string kernel_defines;
 };
 
 struct Frame {

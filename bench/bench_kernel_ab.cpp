@@ -1,0 +1,158 @@
+// Two builds of the frame kernel on one scene, frame by frame in one process: A with the kernel as it is
+// (plus --a's build options), B with --b's (for example -D NAME that an #ifdef in the kernel source reads).
+// Each pair renders A and B one right after the other, in alternating order, so a noisy host slows both alike;
+// the figures are the medians of the pairs' ratios B/A. On a 2-vCPU VM whose separate runs of one binary
+// differed by up to a third, two identical builds measured this way stayed within 0.96-1.03 (bench/README.md,
+// "A kernel change on a noisy host"). The images of the two builds are compared too.
+//
+//   bench_kernel_ab SCENE --b "-D NO_WINNER_PREFETCH" [--a OPTIONS] [--method phong] [--size WxH]
+//                   [--tile N] [--pairs 200] [--same-image] [--json FILE]
+//
+// The device is PARASHADE_DEVICE's (as `render --device`), default the first. Not a Google Benchmark
+// program: Google Benchmark times one case at a time, and the host's phases then fall on one side.
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "bench_device.hpp"
+#include "parashade/combined.hpp"
+#include "parashade/errors.hpp"
+#include "parashade/method.hpp"
+#include "parashade/renderer.hpp"
+#include "parashade/report.hpp"
+#include "parashade/scene.hpp"
+#include "parashade/tile_choice.hpp"
+
+namespace parashade {
+namespace {
+
+struct Side {
+  std::vector<double> kernel_ms, frame_ms;
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+std::vector<double> ratios(const std::vector<double>& b, const std::vector<double>& a) {
+  std::vector<double> r;
+  for (std::size_t i = 0; i < a.size(); ++i) r.push_back(b[i] / a[i]);
+  return r;
+}
+
+int run(int argc, char** argv) {
+  CLI::App app{"Frame-by-frame comparison of two builds of the frame kernel (A: --a's options, B: --b's)"};
+  std::string scene_path, a_options, b_options, method_text = "phong", size, json_path;
+  int pairs = 200, tile = 0;
+  bool require_same_image = false;
+  app.add_option("scene", scene_path, "Scene file (JSON) or bare mesh")->required();
+  app.add_option("--a", a_options, "Build options added to A's kernel (default none: the kernel as it is)");
+  app.add_option("--b", b_options, "Build options added to B's kernel, e.g. \"-D NAME=1\"")->required();
+  app.add_option("--method", method_text, "Shading method, as render's --method (default phong)");
+  app.add_option("--size", size, "Resolution WIDTHxHEIGHT, overriding the scene's");
+  app.add_option("--tile", tile, "Tile size (default: render's choice for the scene)");
+  app.add_option("--pairs", pairs, "Timed pairs of frames (default 200)")->check(CLI::Range(1, 100000));
+  app.add_flag("--same-image", require_same_image, "Exit with 1 when the two builds' images differ (a lever that must not change them)");
+  app.add_option("--json", json_path, "Also write the medians and every pair's times to this JSON file");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : int(ExitCode::usage);  // --help: 0; a bad command line: 2, as parashade's
+  }
+  if (a_options == b_options) throw UsageError("--a and --b are the same build: give B other options");
+
+  Scene scene = load_scene(scene_path);
+  if (!size.empty()) {
+    int w = 0, h = 0;
+    char x = 0;
+    if (std::sscanf(size.c_str(), "%d%c%d", &w, &x, &h) != 3 || x != 'x')
+      throw UsageError("--size '" + size + "' is not of the form WIDTHxHEIGHT");
+    check_resolution(w, h, "--size");
+    scene.width = w;
+    scene.height = h;
+  }
+  RenderOptions options;
+  options.method = parse_method(method_text);
+  if (options.method == Method::combined) options.combined = parse_combined(method_text);
+  options.tile_size = tile > 0 ? tile : default_tile_size(scene, options, options.band_record_bytes);
+  RenderOptions a = options, b = options;
+  a.kernel_defines = a_options;
+  b.kernel_defines = b_options;
+  Renderer ra(bench_device(), a), rb(bench_device(), b);
+
+  // Builds, work-group compilation and allocations; then the images of the two builds.
+  for (int i = 0; i < 2; ++i) {
+    ra.render(scene);
+    rb.render(scene);
+  }
+  const auto& image_a = ra.render(scene).image.rgba;
+  const std::vector<std::uint8_t> first(image_a.begin(), image_a.end());
+  const auto& image_b = rb.render(scene).image.rgba;
+  const bool same_image = std::equal(first.begin(), first.end(), image_b.begin(), image_b.end());
+
+  Side sa, sb;
+  for (int i = 0; i < pairs; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      const bool b_now = (j == 0) == (i % 2 == 1);  // A first in even pairs, B first in odd ones
+      const Frame& f = (b_now ? rb : ra).render(scene);
+      Side& s = b_now ? sb : sa;
+      s.kernel_ms.push_back(f.timings.kernel_ms);
+      s.frame_ms.push_back(f.timings.total_ms);
+    }
+    if (pairs >= 50 && (i + 1) % (pairs / 5) == 0) std::fprintf(stderr, "  %d of %d pairs\n", i + 1, pairs);
+  }
+  const double kernel_ratio = median(ratios(sb.kernel_ms, sa.kernel_ms));
+  const double frame_ratio = median(ratios(sb.frame_ms, sa.frame_ms));
+  const DeviceInfo& d = bench_device().info();
+  std::printf("%s, %s, %dx%d, tile %d, device %s (%d compute units)\n", scene_path.c_str(), method_text.c_str(),
+              scene.width, scene.height, options.tile_size, d.name.c_str(), int(d.compute_units));
+  std::printf("A: %s\nB: %s\n", a_options.empty() ? "(the kernel as it is)" : a_options.c_str(), b_options.c_str());
+  std::printf("images: %s\n", same_image ? "identical" : "DIFFERENT");
+  std::printf("kernel ms: A %.3f, B %.3f (medians); B/A %.3f (median of %d pairs)\n", median(sa.kernel_ms),
+              median(sb.kernel_ms), kernel_ratio, pairs);
+  std::printf("frame ms:  A %.3f, B %.3f (medians); B/A %.3f\n", median(sa.frame_ms), median(sb.frame_ms), frame_ratio);
+  if (!json_path.empty()) {
+    const nlohmann::json j = {{"scene", scene_path},
+                              {"method", method_text},
+                              {"width", scene.width},
+                              {"height", scene.height},
+                              {"tile_size", options.tile_size},
+                              {"device", d.name},
+                              {"compute_units", d.compute_units},
+                              {"a_options", a_options},
+                              {"b_options", b_options},
+                              {"pairs", pairs},
+                              {"images_identical", same_image},
+                              {"kernel_ratio_median", kernel_ratio},
+                              {"frame_ratio_median", frame_ratio},
+                              {"a", {{"kernel_ms", sa.kernel_ms}, {"frame_ms", sa.frame_ms}}},
+                              {"b", {{"kernel_ms", sb.kernel_ms}, {"frame_ms", sb.frame_ms}}}};
+    write_text_atomically(json_path, j.dump(1) + "\n");
+  }
+  if (require_same_image && !same_image) {
+    std::fprintf(stderr, "bench_kernel_ab: the two builds' images differ (--same-image)\n");
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace parashade
+
+int main(int argc, char** argv) {
+  try {
+    return parashade::run(argc, argv);
+  } catch (const parashade::Error& e) {
+    std::fprintf(stderr, "bench_kernel_ab: %s\n", e.what());
+    return int(e.code());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_kernel_ab: %s\n", e.what());
+    return 1;
+  }
+}
