@@ -40,9 +40,6 @@
 namespace parashade::cli {
 namespace {
 
-// --defer-min-triangles: above any tile's list on a real frame, so the largest value means "never defer".
-constexpr int kMaxDeferMinTriangles = 1 << 24;
-
 struct RenderArgs {
   std::string scene, output, method = "gouraud", device, size, report, units, arith = "float", division = "constant",
               coverage = "centre", specular = "exact", normalize = "exact", triangle_choice;

@@ -22,6 +22,10 @@ struct KernelVariant;   // host/cl/kernel_variant.hpp
 struct TileKernelArgs;  // host/cl/tile_kernel_args.hpp
 
 // A frame's configuration (frame_config.hpp) and how the device runs it.
+// The largest RenderOptions::defer_min_triangles (render --defer-min-triangles): above any tile's list on a
+// real frame, so it means "never defer".
+constexpr int kMaxDeferMinTriangles = 1 << 24;
+
 struct RenderOptions : FrameConfig {
   bool float_output = false;  // also read back unclamped float RGB (for EXR and exact error figures)
   int work_items = 0;  // kernel work-items, each rendering every G-th tile; 0: WORK_ITEMS_PER_COMPUTE_UNIT per CU
@@ -32,7 +36,7 @@ struct RenderOptions : FrameConfig {
   // pixel once by the triangle that won its depth test (docs/pipeline.md); -1: the default (every tile for
   // Phong, TILE * TILE / 16 for combined:0, whose Gouraud triangles shade in the walk), 0: every tile.
   // Same image.
-  int defer_min_triangles = -1;
+  int defer_min_triangles = -1;  // at most kMaxDeferMinTriangles
   // defer_min_triangles with its default resolved for this method and tile size.
   int deferral_threshold() const {
     if (defer_min_triangles >= 0) return defer_min_triangles;

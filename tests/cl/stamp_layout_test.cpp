@@ -21,7 +21,7 @@ namespace {
 
 using namespace testing_support;
 
-constexpr int kNeverDefer = 1 << 24;  // a deferral threshold no tile reaches
+constexpr int kNeverDefer = kMaxDeferMinTriangles;  // a deferral threshold no tile reaches
 
 // A case of the comparison: the method, the deferral threshold, combined:0's highlight test and triangle choice
 // (bound, budget 2 levels).

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "cli_fixture.hpp"
+#include "parashade/renderer.hpp"
 
 namespace parashade {
 namespace {
@@ -89,7 +90,7 @@ TEST_F(CliDeterminism, DeferralThresholdDoesNotChangeTheImage) {
     std::vector<std::string> args = {"--method", method};
     if (method != "phong") args.insert(args.end(), {"--triangle-choice", "bound", "--max-error", "3"});
     const std::string reference = render_teapot(method + "-default", args);
-    for (const std::string& n : {"0", "4", "16777216"}) {
+    for (const std::string& n : {std::string("0"), std::string("4"), std::to_string(kMaxDeferMinTriangles)}) {
       std::vector<std::string> with = args;
       with.insert(with.end(), {"--defer-min-triangles", n});
       EXPECT_TRUE(render_teapot(method + "-defer" + n, with) == reference) << method << ", --defer-min-triangles " << n;
