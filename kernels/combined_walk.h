@@ -42,7 +42,7 @@ INLINE void shade_triangle_combined(__global const TriangleGeometry* t, __global
         for (int s = (sl_[j] + x0 - tile_x) / VEC; s <= (sr_[j] + x0 - tile_x) / VEC && !vis; ++s) {
           const intV rel = lane + (tile_x + s * VEC - x0);
           const floatV z = (floatV)(t->z_ref + t->z_ddy * (float)(py - y0)) + t->z_ddx * convert_floatV(rel);
-          vis = any((rel >= sl_[j]) & (rel <= sr_[j]) & isless(z, depth[(py - tile_y) * SEGMENTS + s]));
+          vis = any_lanes((rel >= sl_[j]) & (rel <= sr_[j]) & isless(z, depth[(py - tile_y) * SEGMENTS + s]));
         }
       }
       visible_[j] = vis;
@@ -77,7 +77,7 @@ INLINE void shade_triangle_combined(__global const TriangleGeometry* t, __global
         const intV rel = lane + (tile_x + s * VEC - x0);
         const int slot = (py - tile_y) * SEGMENTS + s;
         const intV pass = depth_test(t, py - y0, convert_floatV(rel), (rel >= row_sl) & (rel <= row_sr), &depth[slot]);
-        if (!any(pass)) continue;
+        if (!any_lanes(pass)) continue;
         const intV i = rel - row_xl;
         const intV column = (i >> kj) - first_[j];
         const floatV w = convert_floatV(i & ((1 << kj) - 1)) * step;

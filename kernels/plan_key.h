@@ -15,7 +15,7 @@ INLINE ulong plan_key(float z, uint ti) {
 
 /* Offers the key of every lane in `mask` to the pixels at row[0 .. VEC). */
 INLINE void plan_offer_keys(floatV z, intV mask, uint ti, __global ulong* row) {
-  if (!any(mask)) return;
+  if (!any_lanes(mask)) return;
   float zs[VEC];
   int ms[VEC];
   vstoreV(z, 0, zs);
@@ -26,7 +26,7 @@ INLINE void plan_offer_keys(floatV z, intV mask, uint ti, __global ulong* row) {
 
 /* The lanes (of those in `mask`) whose pixel's least key is triangle ti's. */
 INLINE intV plan_won(uint ti, __global const ulong* row, intV mask) {
-  if (!any(mask)) return (intV)0;
+  if (!any_lanes(mask)) return (intV)0;
   int ms[VEC], won[VEC];
   vstoreV(mask, 0, ms);
   for (int l = 0; l < VEC; ++l) won[l] = ms[l] && row[l] != PLAN_NO_KEY && (uint)row[l] == ti ? -1 : 0;

@@ -448,7 +448,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
           const floatV frel = convert_floatV(rel);
           const int slot = (py - tile_y) * SEGMENTS + s;
           const intV pass = depth_test(t, dy, frel, (rel >= sl) & (rel <= sr), &depth[slot] PLAN_ARGS(tile_x + s * VEC));
-          if (!any(pass)) continue;
+          if (!any_lanes(pass)) continue;
 #if REGISTER_COLOUR
           const intV i = rel - xl;
           keep(pass, unit_register(&regs, 0, i, length), unit_register(&regs, 1, i, length),
