@@ -5,7 +5,7 @@
 // differed by up to a third, two identical builds measured this way stayed within 0.96-1.03 (bench/README.md,
 // "A kernel change on a noisy host"). The images of the two builds are compared too.
 //
-//   bench_kernel_ab SCENE --b "-D NO_WINNER_PREFETCH" [--a OPTIONS] [--method phong] [--size WxH]
+//   bench_kernel_ab SCENE --b "-D NAME" [--a OPTIONS] [--method phong] [--max-error L] [--size WxH]
 //                   [--tile N] [--pairs 200] [--same-image] [--json FILE]
 //
 // The device is PARASHADE_DEVICE's (as `render --device`), default the first. Not a Google Benchmark
@@ -50,11 +50,14 @@ int run(int argc, char** argv) {
   CLI::App app{"Frame-by-frame comparison of two builds of the frame kernel (A: --a's options, B: --b's)"};
   std::string scene_path, a_options, b_options, method_text = "phong", size, json_path;
   int pairs = 200, tile = 0;
+  double max_error = -1.0;
   bool require_same_image = false;
   app.add_option("scene", scene_path, "Scene file (JSON) or bare mesh")->required();
   app.add_option("--a", a_options, "Build options added to A's kernel (default none: the kernel as it is)");
   app.add_option("--b", b_options, "Build options added to B's kernel, e.g. \"-D NAME=1\"")->required();
   app.add_option("--method", method_text, "Shading method, as render's --method (default phong)");
+  app.add_option("--max-error", max_error, "combined:auto's error budget in levels, as render's (default render's)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--size", size, "Resolution WIDTHxHEIGHT, overriding the scene's");
   app.add_option("--tile", tile, "Tile size (default: render's choice for the scene)");
   app.add_option("--pairs", pairs, "Timed pairs of frames (default 200)")->check(CLI::Range(1, 100000));
@@ -80,6 +83,10 @@ int run(int argc, char** argv) {
   RenderOptions options;
   options.method = parse_method(method_text);
   if (options.method == Method::combined) options.combined = parse_combined(method_text);
+  if (max_error > 0.0) {
+    if (!options.combined.automatic) throw UsageError("--max-error applies to combined:auto only");
+    options.combined.max_error = max_error;
+  }
   options.tile_size = tile > 0 ? tile : default_tile_size(scene, options, options.band_record_bytes);
   RenderOptions a = options, b = options;
   a.kernel_defines = a_options;
