@@ -50,13 +50,14 @@ int run(int argc, char** argv) {
   CLI::App app{"Frame-by-frame comparison of two builds of the frame kernel (A: --a's options, B: --b's)"};
   std::string scene_path, a_options, b_options, method_text = "phong", size, json_path;
   int pairs = 200, tile = 0;
-  double max_error = -1.0;
+  double max_error = 0.0;
   bool require_same_image = false;
   app.add_option("scene", scene_path, "Scene file (JSON) or bare mesh")->required();
   app.add_option("--a", a_options, "Build options added to A's kernel (default none: the kernel as it is)");
   app.add_option("--b", b_options, "Build options added to B's kernel, e.g. \"-D NAME=1\"")->required();
   app.add_option("--method", method_text, "Shading method, as render's --method (default phong)");
-  app.add_option("--max-error", max_error, "combined:auto's error budget in levels, as render's (default render's)");
+  const CLI::Option* max_error_given =
+      app.add_option("--max-error", max_error, "combined:auto's error budget in levels, as render's (default render's)");
   app.add_option("--size", size, "Resolution WIDTHxHEIGHT, overriding the scene's");
   app.add_option("--tile", tile, "Tile size (default: render's choice for the scene)");
   app.add_option("--pairs", pairs, "Timed pairs of frames (default 200)")->check(CLI::Range(1, 100000));
@@ -82,7 +83,7 @@ int run(int argc, char** argv) {
   RenderOptions options;
   options.method = parse_method(method_text);
   if (options.method == Method::combined) options.combined = parse_combined(method_text);
-  if (max_error != -1.0) {
+  if (max_error_given->count() > 0) {
     if (!options.combined.automatic) throw UsageError("--max-error applies to combined:auto only");
     if (!(max_error > 0 && max_error <= 255)) throw UsageError("--max-error must be in (0, 255] levels");
     options.combined.max_error = max_error;
