@@ -21,11 +21,11 @@ namespace parashade {
 struct KernelVariant;   // host/cl/kernel_variant.hpp
 struct TileKernelArgs;  // host/cl/tile_kernel_args.hpp
 
-// A frame's configuration (frame_config.hpp) and how the device runs it.
 // The largest RenderOptions::defer_min_triangles (render --defer-min-triangles): above any tile's list on a
 // real frame, so it means "never defer".
 constexpr int kMaxDeferMinTriangles = 1 << 24;
 
+// A frame's configuration (frame_config.hpp) and how the device runs it.
 struct RenderOptions : FrameConfig {
   bool float_output = false;  // also read back unclamped float RGB (for EXR and exact error figures)
   int work_items = 0;  // kernel work-items, each rendering every G-th tile; 0: WORK_ITEMS_PER_COMPUTE_UNIT per CU
