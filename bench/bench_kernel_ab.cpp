@@ -120,7 +120,8 @@ int run(int argc, char** argv) {
   const DeviceInfo& d = bench_device().info();
   std::printf("%s, %s, %dx%d, tile %d, device %s (%d compute units)\n", scene_path.c_str(), method_text.c_str(),
               scene.width, scene.height, options.tile_size, d.name.c_str(), int(d.compute_units));
-  std::printf("A: %s\nB: %s\n", a_options.empty() ? "(the kernel as it is)" : a_options.c_str(), b_options.c_str());
+  const auto shown = [](const std::string& o) { return o.empty() ? std::string("(the kernel as it is)") : o; };
+  std::printf("A: %s\nB: %s\n", shown(a_options).c_str(), shown(b_options).c_str());
   std::printf("images: %s\n", same_image ? "identical" : "DIFFERENT");
   std::printf("kernel ms: A %.3f, B %.3f (medians); B/A %.3f (median of %d pairs)\n", median(sa.kernel_ms),
               median(sb.kernel_ms), kernel_ratio, pairs);
