@@ -135,8 +135,11 @@ __attribute__((always_inline)) inline vf cone_gap(vf cos_n, vf sin_n, vf dx, vf 
   return gap ? vmin(splat(1.0f), cos_t * cos_r + sin_t * sin_r + 1e-5f) : splat(1.0f);
 }
 
+// Always inlined: each clone of light_lanes below then compiles it for its own target. As a function of its
+// own it was compiled once, for the default target, and light_lanes' AVX2 clone called that SSE code.
 template <bool directional>
-void light_lanes_of(const FrameLanes& f, const glm::vec3 dir, const glm::vec3 pos, LightLanes& out) {
+__attribute__((always_inline)) inline void light_lanes_of(const FrameLanes& f, const glm::vec3 dir, const glm::vec3 pos,
+                                                           LightLanes& out) {
   for (int at = 0; at < kLanes; at += kWidth) {
     const vf radius = load(f.radius, at);
     // L at the centroid, within a chord over the triangle (light_bounds.hpp).
