@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -25,6 +26,7 @@
 #include "parashade/renderer.hpp"
 #include "parashade/report.hpp"
 #include "parashade/scene.hpp"
+#include "parashade/statistics.hpp"
 #include "parashade/tile_choice.hpp"
 
 namespace parashade {
@@ -33,12 +35,6 @@ namespace {
 struct Side {
   std::vector<double> kernel_ms, frame_ms;
 };
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
 
 std::vector<double> ratios(const std::vector<double>& b, const std::vector<double>& a) {
   std::vector<double> r;
@@ -70,15 +66,11 @@ int run(int argc, char** argv) {
   }
   if (a_options == b_options) throw UsageError("--a and --b are the same build: give B other options");
 
+  const auto wh = parse_size(size);  // its syntax before the scene is read
   Scene scene = load_scene(scene_path);
-  if (!size.empty()) {
-    int w = 0, h = 0;
-    char x = 0;
-    if (std::sscanf(size.c_str(), "%d%c%d", &w, &x, &h) != 3 || x != 'x')
-      throw UsageError("--size '" + size + "' is not of the form WIDTHxHEIGHT");
-    check_resolution(w, h, "--size");
-    scene.width = w;
-    scene.height = h;
+  if (wh) {
+    std::tie(scene.width, scene.height) = *wh;
+    check_resolution(scene.width, scene.height, "--size " + size);
   }
   RenderOptions options;
   options.method = parse_method(method_text);

@@ -1,6 +1,5 @@
 #include "cli_args.hpp"
 
-#include <regex>
 #include <tuple>
 
 #include "parashade/errors.hpp"
@@ -21,14 +20,6 @@ std::vector<std::string> split_list(const std::string& list, const std::string& 
     start = comma + 1;
   }
   return items;
-}
-
-std::optional<std::pair<int, int>> parse_size(const std::string& size) {
-  if (size.empty()) return std::nullopt;
-  std::smatch m;
-  if (!std::regex_match(size, m, std::regex(R"((\d{1,9})x(\d{1,9}))")))
-    throw UsageError("--size '" + size + "' is not of the form WIDTHxHEIGHT, e.g. 1920x1080");
-  return std::make_pair(std::stoi(m[1]), std::stoi(m[2]));
 }
 
 Scene load_scene_at(const std::string& file, const std::optional<std::pair<int, int>>& size, const std::string& size_text,

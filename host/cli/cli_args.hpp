@@ -44,10 +44,6 @@ auto parse_unique_list(const std::string& list, const std::string& option, Parse
   return out;
 }
 
-// --size WIDTHxHEIGHT (nullopt when absent). Only the syntax, so that a usage error is reported before
-// the scene is read; the limit is checked with the scene's own resolution.
-std::optional<std::pair<int, int>> parse_size(const std::string& size);
-
 // The scene file, at `size` when given (--size overrides the scene's resolution); both resolutions are
 // checked against the 12-bit address limit, naming the culprit.
 // `files`, when given, receives every file read (load_scene in scene_files.hpp).

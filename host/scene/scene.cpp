@@ -1,4 +1,5 @@
 // Scene queries and the resolution limit every scene source shares.
+#include <regex>
 #include <string>
 
 #include "parashade/errors.hpp"
@@ -22,6 +23,14 @@ void check_resolution(int width, int height, const std::string& what) {
   };
   check(width, "width");
   check(height, "height");
+}
+
+std::optional<std::pair<int, int>> parse_size(const std::string& size) {
+  if (size.empty()) return std::nullopt;
+  std::smatch m;
+  if (!std::regex_match(size, m, std::regex(R"((\d{1,9})x(\d{1,9}))")))
+    throw UsageError("--size '" + size + "' is not of the form WIDTHxHEIGHT, e.g. 1920x1080");
+  return std::make_pair(std::stoi(m[1]), std::stoi(m[2]));
 }
 
 }  // namespace parashade

@@ -4,7 +4,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -84,5 +86,8 @@ Scene load_scene(const std::filesystem::path& path);
 Scene scene_for_mesh(const std::filesystem::path& mesh_path);
 // Throws InputError unless 1 <= width, height <= kMaxResolution.
 void check_resolution(int width, int height, const std::string& what);
+// --size WIDTHxHEIGHT (nullopt when absent). Only the syntax (UsageError), so that a usage error is reported
+// before the scene is read; the limit is check_resolution's, with the scene's own resolution.
+std::optional<std::pair<int, int>> parse_size(const std::string& size);
 
 }  // namespace parashade
