@@ -39,7 +39,7 @@ KernelVariant kernel_variant(const Scene& s, const RenderOptions& o) {
   v.dda_coverage = o.dda_coverage;
   v.stamps = o.stamps;
   v.defer_min_triangles = o.deferral_threshold();
-  v.extra_options = o.kernel_defines;
+  v.kernel_defines = o.kernel_defines;
   return v;
 }
 
@@ -106,7 +106,7 @@ std::string KernelVariant::build_options() const {
     opt << " -D DEFER_STAMPS=1 -D DEFER_MIN_TRIANGLES=" << defer_min_triangles;
   if (plan_pass == 1) opt << " -D PLAN_PASS=1 -D PLAN_DYNAMIC=" << (plan_dynamic ? "1" : "0");
   if (plan_pass == 2) opt << " -D PLAN_PASS=2";
-  if (!extra_options.empty()) opt << " " << extra_options;
+  if (!kernel_defines.empty()) opt << " " << kernel_defines;
   return opt.str();
 }
 

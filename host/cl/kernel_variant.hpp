@@ -34,7 +34,7 @@ struct KernelVariant {
   bool plan_dynamic = false;
   bool stamps = false;  // asked for; used where the kernel has them (stamps_apply)
   int defer_min_triangles = 0;  // Phong's and combined:0's stamps: RenderOptions::deferral_threshold()
-  std::string extra_options;  // RenderOptions::kernel_defines, appended to the build options
+  std::string kernel_defines;  // RenderOptions::kernel_defines, appended to the build options
 
   // 4x4 stamps: the plain path only (no unit, per-span normalization, plan or float read-back), for Phong,
   // Gouraud, flat and combined:0 (Phong or Gouraud at every pixel), where they pay (docs/pipeline.md); the other

@@ -1,6 +1,6 @@
 // RenderOptions::kernel_defines reach the frame kernel's build (bench_kernel_ab compares two builds told
 // apart by them): a define that the kernel turns into a compile error makes the render fail with the
-// build's own error, and an empty one leaves the build options as they were.
+// build's own error, and the defines are appended to the variant's options as they are given.
 #include <string>
 
 #include <gtest/gtest.h>
