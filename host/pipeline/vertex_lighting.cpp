@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "parashade/vertex_lanes.hpp"
+#include "parashade/vertex_power.hpp"
 
 namespace parashade {
 
@@ -41,7 +42,7 @@ glm::vec3 VertexLighting::shade(std::uint32_t material, glm::vec3 p, glm::vec3 n
     const float h_len = glm::length(h);
     if (h_len == 0.0f) continue;
     const float n_dot_h = glm::dot(n, h) / h_len;
-    if (n_dot_h > 0.0f) out += light.intensity * m.specular * std::pow(n_dot_h, m.shininess);
+    if (n_dot_h > 0.0f) out += light.intensity * m.specular * vertex_lanes::power(n_dot_h, m.shininess);
   }
   return out;
 }
@@ -93,10 +94,7 @@ __attribute__((target_clones("avx2", "default"))) void VertexLighting::shade_lan
     lit &= h_len != zero;
     const Floats n_dot_h = dot(n, h) / h_len;
     const Mask specular = lit & (n_dot_h > zero);
-    Floats power = zero;
-    for (int k = 0; k < kLanes; ++k)
-      if (specular[k]) power[k] = std::pow(n_dot_h[k], m.shininess);
-    add_where(specular, out, light.intensity * m.specular, power);
+    add_where(specular, out, light.intensity * m.specular, select(specular, power(n_dot_h, m.shininess), zero));
   }
   store3(out, out_colour);
 }

@@ -1,7 +1,8 @@
 #pragma once
 // Blinn–Phong in single precision for the vertex stage (Gouraud vertex values, flat triangle values).
-// The same formula as lighting.hpp, prepared once per frame so the per-vertex work is small; a test
-// checks it against the double-precision version.
+// The same formula as lighting.hpp, prepared once per frame so the per-vertex work is small, with x^n from
+// vertex_power.hpp (both paths, so the lanes keep shade()'s bits); a test checks it against the
+// double-precision version.
 #include <vector>
 
 #include <glm/glm.hpp>
