@@ -162,6 +162,11 @@ normalize_bench() {
       --benchmark_report_aggregates_only=true --benchmark_min_time=0.1 \
       --benchmark_out="$OUT/normalize.json" --benchmark_out_format=json
 }
+# The host's steadiness now (bench/README.md, "Is the host steady?"): recorded before and after the run.
+host_noise() {
+  if [ ! -x "$BUILD/bench/bench_host_noise" ]; then echo "bench-suite: no $BUILD/bench/bench_host_noise: skipped" >&2; return 0; fi
+  "$BUILD/bench/bench_host_noise" --json "$OUT/host-noise-$1.json"
+}
 report() {
   "$PYTHON" scripts/report.py "$OUT"/peer-*.json "$OUT"/scaling-*.json "$OUT/memory.json" \
       "$OUT/combined-study.json" "$OUT/phong-methods.json" --images "$OUT/images" -o "$OUT/report"
@@ -179,6 +184,7 @@ suite() {
     return 0
   fi
 
+  step "host noise (before)" host_noise before
   if [ "$PHONG_ONLY" = 0 ]; then
     for size in 1920x1080 512x512 3840x2160; do step "peer $size" peer_size "$size"; done
     for scene in teapot sphere; do step "scaling $scene" scaling_scene "$scene"; done
@@ -205,6 +211,7 @@ suite() {
   if [ "$PHONG_ONLY" = 0 ]; then
     step "peak memory" "$PYTHON" scripts/peak_memory.py --binary "$BUILD/parashade" -o "$OUT/memory.json"
   fi
+  step "host noise (after)" host_noise after
 
   # From here on every result is in: shard 0 alone goes on (the other shards have ended).
   final_step "best method" "$PYTHON" scripts/best_method.py --combined "$OUT/combined-study.json" \

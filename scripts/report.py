@@ -16,6 +16,7 @@ JSON, phong_methods JSON).
     scripts/report.py bench-results/*.json --images bench-results/images -o bench-results/report
 """
 import argparse
+import json
 import math
 import os
 import sys
@@ -311,6 +312,24 @@ def memory_table(memory, baseline):
                                 "Budget = 2 x (RGBA8 + 32-bit depth frame + mesh) + 64 MiB." if baseline else "")
 
 
+def steadiness_line(files):
+    """The host's steadiness before and after the run (bench_host_noise via bench-suite.sh), when its
+    host-noise-{before,after}.json lie beside the result files; else an empty string."""
+    parts = []
+    folders = sorted({os.path.dirname(os.path.abspath(f)) for f in files})
+    for when in ("before", "after"):
+        for folder in folders:
+            path = os.path.join(folder, f"host-noise-{when}.json")
+            if os.path.exists(path):
+                with open(path) as f:
+                    j = json.load(f)
+                parts.append(f"{when} the run {'steady' if j['steady'] else '**not steady**'} (p90/min of the ALU "
+                             f"loop {j['worst_alu_p90_over_min']:.3f}, of the memory sweep "
+                             f"{j['worst_memory_p90_over_min']:.3f}; steady: both at most {j['max_spread']:.2f})")
+                break
+    return ("Host steadiness (`bench_host_noise`): " + "; ".join(parts) + ".") if parts else ""
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("results", nargs="+", help="result JSON files or directories")
@@ -332,6 +351,9 @@ def main():
                f"{ctx.get('compute_units', '?')} compute units; peer `{ctx.get('gl_renderer', '-')}` "
                f"({ctx.get('gl_version', '-')}), LP_NUM_THREADS={ctx.get('lp_num_threads', '-')}; "
                f"{ctx.get('num_cpus', '?')} CPUs, load average {ctx.get('load_avg', '?')}.", ""]
+    steadiness = steadiness_line(res["files"])
+    if steadiness:
+        md += [steadiness, ""]
     if args.note:
         md += [args.note, ""]
     md += [f"Times: the {args.aggregate} over repetitions (where the run had repetitions).", ""]
