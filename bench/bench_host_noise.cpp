@@ -29,6 +29,7 @@
 #include "parashade/errors.hpp"
 #include "parashade/report.hpp"
 #include "parashade/statistics.hpp"
+#include "tool_main.hpp"
 
 namespace parashade {
 namespace {
@@ -147,14 +148,4 @@ int run(int argc, char** argv) {
 }  // namespace
 }  // namespace parashade
 
-int main(int argc, char** argv) {
-  try {
-    return parashade::run(argc, argv);
-  } catch (const parashade::Error& e) {
-    std::fprintf(stderr, "bench_host_noise: %s\n", e.what());
-    return int(e.code());
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "bench_host_noise: %s\n", e.what());
-    return 1;
-  }
-}
+int main(int argc, char** argv) { return parashade::tool_main("bench_host_noise", parashade::run, argc, argv); }

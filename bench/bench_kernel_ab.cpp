@@ -27,6 +27,7 @@
 #include "parashade/report.hpp"
 #include "parashade/scene.hpp"
 #include "parashade/statistics.hpp"
+#include "tool_main.hpp"
 #include "parashade/tile_choice.hpp"
 
 namespace parashade {
@@ -146,14 +147,4 @@ int run(int argc, char** argv) {
 }  // namespace
 }  // namespace parashade
 
-int main(int argc, char** argv) {
-  try {
-    return parashade::run(argc, argv);
-  } catch (const parashade::Error& e) {
-    std::fprintf(stderr, "bench_kernel_ab: %s\n", e.what());
-    return int(e.code());
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "bench_kernel_ab: %s\n", e.what());
-    return 1;
-  }
-}
+int main(int argc, char** argv) { return parashade::tool_main("bench_kernel_ab", parashade::run, argc, argv); }
