@@ -4,14 +4,38 @@
  *    gives the same pixels in every tile) and its part [sl, sr] in the tile;
  * 2. rows with no pixel passing the depth test are dropped (occluded triangles cost no shading);
  * 3. the exact intensity at the segment ends the tile needs, one vector of rows per end column;
- * 4. per row: depth test and the linear interpolation between the two ends of each pixel's segment. */
+ * 4. per row: depth test and the linear interpolation between the two ends of each pixel's segment.
+ * The same operations per pixel on the stamps as on row segments, so the same image; under DEFER_STAMPS a pixel
+ * shaded here leaves no winner for the deferred tile's pass. */
 #ifndef PARASHADE_COMBINED_WALK_H
 #define PARASHADE_COMBINED_WALK_H
+
+/* The walk's view of the tile: row r of the tile, its VEC pixels from column s * VEC. In the row layout that is
+ * one vector of the tile's arrays; on the stamps (STAMPS) it is lane row r % STAMP of VEC / STAMP stamps side by
+ * side, read and written four lanes at a time. (Walking the stamps themselves, each stamp's four rows
+ * from their own segment ends, was slower than this view: sphere combined:auto kernel about 1.03-1.05x,
+ * bench/README.md run AA.) */
+#if STAMPS
+INLINE floatV walk_load(const floatV* a, int r, int s) {
+  const float* f = (const float*)(a + (r / STAMP) * STAMPS_X + s * (VEC / STAMP)) + (r % STAMP) * STAMP;
+  return (floatV)(vload4(0, f), vload4(0, f + VEC), vload4(0, f + 2 * VEC), vload4(0, f + 3 * VEC));
+}
+INLINE void walk_store(floatV* a, int r, int s, floatV v) {
+  float* f = (float*)(a + (r / STAMP) * STAMPS_X + s * (VEC / STAMP)) + (r % STAMP) * STAMP;
+  vstore4(v.s0123, 0, f);
+  vstore4(v.s4567, 0, f + VEC);
+  vstore4(v.s89ab, 0, f + 2 * VEC);
+  vstore4(v.scdef, 0, f + 3 * VEC);
+}
+#else
+INLINE floatV walk_load(const floatV* a, int r, int s) { return a[r * SEGMENTS + s]; }
+INLINE void walk_store(floatV* a, int r, int s, floatV v) { a[r * SEGMENTS + s] = v; }
+#endif
 
 INLINE void shade_triangle_combined(__global const TriangleGeometry* t, __global const float* attr, int tile_x,
                                     int tile_y, int row_first, int row_last, int lo, int hi, floatV* depth,
                                     floatV* cr, floatV* cg, floatV* cb, __constant float4* lights,
-                                    __constant float4* materials, float4 viewer) {
+                                    __constant float4* materials, float4 viewer DEFER_DECL) {
   const int x0 = t->x0, y0 = t->y0;
   const intV lane = LANE_INDEX;
 #if TRIANGLE_CHOICE
@@ -42,7 +66,7 @@ INLINE void shade_triangle_combined(__global const TriangleGeometry* t, __global
         for (int s = (sl_[j] + x0 - tile_x) / VEC; s <= (sr_[j] + x0 - tile_x) / VEC && !vis; ++s) {
           const intV rel = lane + (tile_x + s * VEC - x0);
           const floatV z = (floatV)(t->z_ref + t->z_ddy * (float)(py - y0)) + t->z_ddx * convert_floatV(rel);
-          vis = any_lanes((rel >= sl_[j]) & (rel <= sr_[j]) & isless(z, depth[(py - tile_y) * SEGMENTS + s]));
+          vis = any_lanes((rel >= sl_[j]) & (rel <= sr_[j]) & isless(z, walk_load(depth, py - tile_y, s)));
         }
       }
       visible_[j] = vis;
@@ -75,9 +99,11 @@ INLINE void shade_triangle_combined(__global const TriangleGeometry* t, __global
       const float step = 1.0f / (float)(1 << kj);
       for (int s = (row_sl + x0 - tile_x) / VEC; s <= (row_sr + x0 - tile_x) / VEC; ++s) {
         const intV rel = lane + (tile_x + s * VEC - x0);
-        const int slot = (py - tile_y) * SEGMENTS + s;
-        const intV pass = depth_test(t, py - y0, convert_floatV(rel), (rel >= row_sl) & (rel <= row_sr), &depth[slot]);
+        const int r = py - tile_y;
+        floatV d = walk_load(depth, r, s);
+        const intV pass = depth_test(t, py - y0, convert_floatV(rel), (rel >= row_sl) & (rel <= row_sr), &d);
         if (!any_lanes(pass)) continue;
+        walk_store(depth, r, s, d);
         const intV i = rel - row_xl;
         const intV column = (i >> kj) - first_[j];
         const floatV w = convert_floatV(i & ((1 << kj) - 1)) * step;
@@ -94,7 +120,17 @@ INLINE void shade_triangle_combined(__global const TriangleGeometry* t, __global
           bg = select(bg, (floatV)end_g[(c + 1) * VEC + j], here);
           bb = select(bb, (floatV)end_b[(c + 1) * VEC + j], here);
         }
-        keep(pass, ar + (br - ar) * w, ag + (bg - ag) * w, ab + (bb - ab) * w, &cr[slot], &cg[slot], &cb[slot]);
+        floatV kr = walk_load(cr, r, s), kg = walk_load(cg, r, s), kb = walk_load(cb, r, s);
+        keep(pass, ar + (br - ar) * w, ag + (bg - ag) * w, ab + (bb - ab) * w, &kr, &kg, &kb);
+        walk_store(cr, r, s, kr);
+        walk_store(cg, r, s, kg);
+        walk_store(cb, r, s, kb);
+#if DEFER_STAMPS
+        if (deferred) { /* the winners (ints) through the same view: no earlier winner left at these pixels */
+          const intV left = select(as_intV(walk_load((const floatV*)winner, r, s)), (intV)(-1), pass);
+          walk_store((floatV*)winner, r, s, as_floatV(left));
+        }
+#endif
       }
     }
   }

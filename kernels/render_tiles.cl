@@ -40,9 +40,10 @@ typedef floatV colourV;
 #ifndef STAMPS
 #define STAMPS 0
 #endif
-/* The combined method has stamps only as combined:0: every pixel by Phong (with the triangle's specular mask
- * under HIGHLIGHT_TEST) or, where the per-triangle choice says so, by Gouraud's planes; no span walk. */
-#if STAMPS && (PLAN_PASS || UNIT_PATH || SHADE_SPAN || OUTPUT_FLOAT || (COMBINED && (SEG_AUTO || SEG_K != 0)))
+/* The combined method on the stamps: per pixel (Phong with the triangle's specular mask under HIGHLIGHT_TEST, or
+ * where the per-triangle choice says so Gouraud's planes) in stamps, and its segment walk (combined_walk.h) by rows
+ * of stamp lanes. */
+#if STAMPS && (PLAN_PASS || UNIT_PATH || SHADE_SPAN || OUTPUT_FLOAT)
 #error "STAMPS: the plain path only"
 #endif
 /* Stamps: STAMP x STAMP pixels, STAMPS_X of them across a tile (TILE_VECTORS in all, as row segments). */
@@ -113,9 +114,6 @@ INLINE void keep(intV pass, colourV sr, colourV sg, colourV sb, colourV* cr, col
 #define SPAN_SETUP(attr, dy, xl, xr, first, last)
 #define SPAN_ARGS
 #endif
-#if COMBINED
-#include "combined_walk.h"
-#endif
 /* The per-pixel shading of the plain path: the method's, or the combined method's choice per triangle. */
 #ifndef SHADE_PIXELS
 #define SHADE_PIXELS shade_pixels
@@ -159,6 +157,10 @@ INLINE void shade_segment(__global const TriangleGeometry* t, __global const flo
 #else
 #define DEFER_DECL
 #define DEFER_ARGS
+#endif
+
+#if COMBINED
+#include "combined_walk.h"
 #endif
 
 #if STAMPS
@@ -466,6 +468,13 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
       }
     }
 #elif STAMPS
+#if COMBINED
+    if (combined_walks(t, attr)) { /* segments: the walk by rows of stamp lanes, shaded now (not deferred) */
+      shade_triangle_combined(t, attr, tile_x, tile_y, row_first, row_last, lo, hi, depth, cr, cg, cb, lights, materials,
+                              viewer DEFER_ARGS);
+      continue;
+    }
+#endif
     {
       const int sy_first = (row_first - tile_y) / STAMP, sy_last = (row_last - tile_y) / STAMP;
       if (t->flags & TRIANGLE_SMALL) {
@@ -528,7 +537,7 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
      * choice gives to Gouraud (SHADE_PIXELS, method_combined.h). */
     if (combined_walks(t, attr)) {
       shade_triangle_combined(t, attr, tile_x, tile_y, row_first, row_last, lo, hi, depth, cr, cg, cb, lights, materials,
-                              viewer);
+                              viewer DEFER_ARGS);
       continue;
     }
 #endif

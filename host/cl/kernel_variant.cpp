@@ -50,11 +50,9 @@ std::vector<std::string> kernel_files(const KernelVariant& v) {
 bool KernelVariant::defers_tiles() const { return stamps_apply() && (method == Method::phong || combined); }
 
 bool KernelVariant::stamps_apply() const {
-  // combined:0 shades every pixel by Phong or, where its triangle choice says so, by Gouraud: no segments to walk.
-  const bool per_pixel_combined = combined && !combined_config.automatic && combined_config.k == 0;
-  const bool per_pixel_method = method == Method::phong || method == Method::gouraud || method == Method::flat;
-  return stamps && (per_pixel_method || per_pixel_combined) && !unit_path && !span_normalize && plan_pass == 0 &&
-         !float_output;
+  // The combined method's segment walk reads and writes the stamps' lanes a row at a time (combined_walk.h).
+  const bool plain_method = method == Method::phong || method == Method::gouraud || method == Method::flat || combined;
+  return stamps && plain_method && !unit_path && !span_normalize && plan_pass == 0 && !float_output;
 }
 
 std::string KernelVariant::build_options() const {

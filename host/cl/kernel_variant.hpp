@@ -33,14 +33,15 @@ struct KernelVariant {
   int plan_pass = 0;
   bool plan_dynamic = false;
   bool stamps = false;  // asked for; used where the kernel has them (stamps_apply)
-  int defer_min_triangles = 0;  // Phong's and combined:0's stamps: RenderOptions::deferral_threshold()
+  int defer_min_triangles = 0;  // Phong's and the combined method's stamps: RenderOptions::deferral_threshold()
   std::string kernel_defines;  // RenderOptions::kernel_defines, appended to the build options
 
   // 4x4 stamps: the plain path only (no unit, per-span normalization, plan or float read-back), for Phong,
-  // Gouraud, flat and combined:0 (Phong or Gouraud at every pixel), where they pay (docs/pipeline.md); the other
-  // combined methods (segments along rows) stay on row segments.
+  // Gouraud, flat and the combined method (its segment walk reads and writes the stamps a row at a time), where
+  // they pay (docs/pipeline.md).
   bool stamps_apply() const;
-  // Phong and combined:0 on the stamps shade a tile of at least defer_min_triangles triangles after its walk.
+  // Phong and the combined method on the stamps shade a tile of at least defer_min_triangles triangles after its
+  // walk (the combined method's Gouraud and segment triangles in the walk, its Phong ones after).
   bool defers_tiles() const;
 
   std::string build_options() const;

@@ -551,8 +551,9 @@ Command add_render_command(CLI::App& app) {
                       " per compute unit)")
       ->capture_default_str();
   cmd->add_option("--defer-min-triangles", a->defer_min_triangles,
-                  "Phong and combined:0 on the stamps: a tile of at least N triangles shades each pixel once, after "
-                  "its depth test (-1: the default, every tile for Phong, tile x tile / 16 for combined:0; 0: every tile). "
+                  "Phong and the combined method on the stamps: a tile of at least N triangles shades each pixel once, "
+                  "after its depth test (-1: the default, every tile for Phong, tile x tile / 16 for combined; 0: every "
+                  "tile). "
                   "Same image; docs/pipeline.md")
       ->capture_default_str();
   cmd->add_option("--band-mib", a->band_mib,

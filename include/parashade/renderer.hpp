@@ -34,7 +34,8 @@ struct RenderOptions : FrameConfig {
   bool stamps = true;
   // Phong and combined:0 on stamps: a tile holding at least this many triangles is shaded after its walk, each
   // pixel once by the triangle that won its depth test (docs/pipeline.md); -1: the default (every tile for
-  // Phong, TILE * TILE / 16 for combined:0, whose Gouraud triangles shade in the walk), 0: every tile.
+  // Phong, TILE * TILE / 16 for the combined method, whose Gouraud and segment triangles shade in the walk),
+  // 0: every tile.
   // Same image.
   int defer_min_triangles = -1;  // at most kMaxDeferMinTriangles
   // defer_min_triangles with its default resolved for this method and tile size.

@@ -1,7 +1,9 @@
-// The kernel's 4x4 stamps (RenderOptions::stamps, the plain path of Phong, Gouraud, flat and combined:0) against
-// its 1x16 row segments: the same pixels are covered and shaded with the same operations, so the images must be
-// byte-identical, for each method (combined:0 also with its highlight test, the per-triangle specular mask, and
-// with the per-triangle choice of Gouraud, whose triangles a deferred tile shades in its walk).
+// The kernel's 4x4 stamps (RenderOptions::stamps, the plain path of Phong, Gouraud, flat and the combined method)
+// against its 1x16 row segments: the same pixels are covered and shaded with the same operations, so the images
+// must be byte-identical, for each method (combined:0 also with its highlight test, the per-triangle specular
+// mask, and with the per-triangle choice of Gouraud, whose triangles a deferred tile shades in its walk; the
+// combined method's segment walk, combined:2 and combined:auto, which reads and writes the stamps a row at a time
+// and leaves no winner where it shades, deferred or not).
 // The scenes cover what the stamp walk treats apart: small triangles (per-pixel edge tests) and large
 // ones (row spans), tiles of 16, 32 and 64, a frame whose width and height are not multiples of the
 // stamp or the tile, slivers, a fan, near-plane clipping, point lights and a local viewer. (Each scene
@@ -23,20 +25,23 @@ using namespace testing_support;
 
 constexpr int kNeverDefer = kMaxDeferMinTriangles;  // a deferral threshold no tile reaches
 
-// A case of the comparison: the method, the deferral threshold, combined:0's highlight test and triangle choice
-// (bound, budget 2 levels).
+// A case of the comparison: the method, the deferral threshold, the combined method's highlight test, triangle
+// choice (bound, budget 2 levels) and segments (k = 0: none; k > 0: 2^k pixels; automatic: combined:auto).
 struct Variant {
   Method method;
   int defer_min = -1;
   bool highlight_test = false;
   TriangleRule rule = TriangleRule::none;
+  int k = 0;
+  bool automatic = false;
 };
 
 std::vector<std::uint8_t> render_rgba(const Scene& scene, const Variant& v, bool stamps, int tile) {
   RenderOptions o = render_options(v.method, false, tile);
   o.stamps = stamps;
   o.defer_min_triangles = v.defer_min;
-  o.combined.k = 0;
+  o.combined.k = v.k;
+  o.combined.automatic = v.automatic;
   o.combined.highlight_test = v.highlight_test;
   o.combined.rule = v.rule;
   o.combined.max_error = 2.0;
@@ -47,15 +52,18 @@ std::vector<std::uint8_t> render_rgba(const Scene& scene, const Variant& v, bool
 
 void expect_same_image(const Scene& scene, const std::string& what, std::initializer_list<int> tiles = {16}) {
   // Phong's stamps deferred in every tile (its default: shaded after the walk by each pixel's winner) and in none;
-  // combined:0's also with every tile deferred;
-  // combined:0's deferred and choosing variants at the first tile size only (each is a kernel build).
+  // the combined method's also with every tile deferred; its deferred, choosing and walking variants at the first
+  // tile size only (each is a kernel build).
   const TriangleRule bound = TriangleRule::bound;
   for (const Variant& v :
        {Variant{Method::phong}, Variant{Method::phong, kNeverDefer}, Variant{Method::gouraud}, Variant{Method::flat},
         Variant{Method::combined}, Variant{Method::combined, -1, true}, Variant{Method::combined, 0, true},
-        Variant{Method::combined, -1, false, bound}, Variant{Method::combined, 0, false, bound}}) {
+        Variant{Method::combined, -1, false, bound}, Variant{Method::combined, 0, false, bound},
+        Variant{Method::combined, -1, false, TriangleRule::none, 2}, Variant{Method::combined, 0, false, TriangleRule::none, 2},
+        Variant{Method::combined, -1, false, bound, 0, true}, Variant{Method::combined, 0, false, bound, 0, true}}) {
     for (int tile : tiles) {
-      const bool first_tile_only = v.method == Method::combined && (v.defer_min == 0 || v.rule == bound);
+      const bool first_tile_only =
+          v.method == Method::combined && (v.defer_min == 0 || v.rule == bound || v.k > 0 || v.automatic);
       if (first_tile_only && tile != *tiles.begin()) continue;
       const auto rows = render_rgba(scene, v, false, tile), stamps = render_rgba(scene, v, true, tile);
       ASSERT_EQ(rows.size(), stamps.size());
@@ -71,7 +79,9 @@ void expect_same_image(const Scene& scene, const std::string& what, std::initial
       EXPECT_EQ(differ, 0u) << what << ", " << method_name(v.method)
                             << (v.defer_min == 0 ? " deferred" : v.defer_min == kNeverDefer ? " never deferred" : "")
                             << (v.highlight_test ? " highlight test" : "")
-                            << (v.rule == bound ? " triangle choice" : "") << ", tile " << tile
+                            << (v.rule == bound ? " triangle choice" : "")
+                            << (v.automatic ? " segments auto" : v.k > 0 ? " segments " + std::to_string(1 << v.k) : "")
+                            << ", tile " << tile
                             << ": first differing byte at pixel " << first / 4 << " (x " << (first / 4) % scene.width
                             << ", y " << (first / 4) / scene.width << ")";
     }

@@ -1,6 +1,7 @@
 // The report's defer_min_triangles: the threshold from which the frame's kernel shades a tile after its depth
-// test (docs/pipeline.md "Deferred stamps"). Phong defers every tile by default, combined:0 tiles of at least
-// tile x tile / 16 triangles; a kernel that never defers (Gouraud, span normalization) reports null, not a
+// test (docs/pipeline.md "Deferred stamps"). Phong defers every tile by default, the combined method (combined:0,
+// and since its segment walk runs on the stamps, combined:K and combined:auto) tiles of at least tile x tile / 16
+// triangles; a kernel that never defers (Gouraud, span normalization) reports null, not a
 // threshold it does not use; an asked threshold is reported as asked.
 #include <string>
 #include <vector>
@@ -29,12 +30,12 @@ TEST_F(CliDeferralReport, DefaultsPerMethod) {
   const nlohmann::json combined = report_of({"--method", "combined:0", "--tile", "32"});
   EXPECT_EQ(combined["tile_size"], 32);
   EXPECT_EQ(combined["defer_min_triangles"], 32 * 32 / 16);
+  EXPECT_EQ(report_of({"--method", "combined:2", "--tile", "16"})["defer_min_triangles"], 16 * 16 / 16);
 }
 
 TEST_F(CliDeferralReport, NullWhereTheKernelNeverDefers) {
   EXPECT_TRUE(report_of({"--method", "gouraud"})["defer_min_triangles"].is_null());
   EXPECT_TRUE(report_of({"--method", "phong", "--normalize", "slerp"})["defer_min_triangles"].is_null());
-  EXPECT_TRUE(report_of({"--method", "combined:2"})["defer_min_triangles"].is_null());
 }
 
 TEST_F(CliDeferralReport, AskedThresholdIsReported) {
