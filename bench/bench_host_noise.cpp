@@ -3,8 +3,8 @@
 // sweep (64 MiB a CPU, past the last-level cache: a load per cache line, a store to every eighth). Each
 // probe's spread is its samples' quantiles over its fastest sample. A steady machine repeats both within a few
 // percent; a VM whose neighbours use the same memory system spreads the sweep by tens of percent while its ALU
-// loop stays steady (bench/README.md, run AA: sweep p90/min 1.31-1.61 while `render` rounds of one binary
-// differed by 0.76-1.36, ALU p90/min 1.05).
+// loop stays steady (bench/README.md, run AA: sweep p90/min 1.22-1.61 while `render` rounds of one binary
+// differed by 0.76-1.36, ALU p90/min 1.02-1.11).
 //
 //   bench_host_noise [--seconds 4] [--max-spread 1.10] [--require-steady] [--json FILE]
 //
