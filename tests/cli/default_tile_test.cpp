@@ -1,6 +1,7 @@
 // `render` without --tile (and without a tuned entry) takes the tile size that follows the frame
-// (include/parashade/tile_choice.hpp): 64 for a Gouraud or flat frame that is not streamed in bands, 32 for a
-// streamed one, for Phong and for the unit paths; --tile always wins, and the image never depends on it.
+// (include/parashade/tile_choice.hpp): 64 for a plain frame (Gouraud, flat, Phong, combined) that is not streamed
+// in bands, 32 for a streamed one, for per-span normalization and for the unit paths; --tile always wins, and the
+// image never depends on it.
 #include <string>
 
 #include <gtest/gtest.h>
@@ -29,7 +30,11 @@ TEST_F(CliDefaultTile, FollowsTheFrame) {
   EXPECT_EQ(tile_of(scene, {"--band-mib", "1"}), 32) << "a streamed frame keeps 32-pixel tiles";
   EXPECT_GT(read_report()["stats"]["bands"].get<int>(), 1);
   EXPECT_EQ(bytes_of(image()), by_default);
-  EXPECT_EQ(tile_of(scene, {"--method", "phong"}), 32);
+  EXPECT_EQ(tile_of(scene, {"--method", "phong"}), 64);
+  EXPECT_EQ(tile_of(scene, {"--method", "phong", "--band-mib", "1"}), 32) << "a streamed Phong frame";
+  EXPECT_EQ(tile_of(scene, {"--method", "combined:auto"}), 64);
+  EXPECT_EQ(tile_of(scene, {"--method", "combined:0", "--band-mib", "1"}), 32) << "records that would stream";
+  EXPECT_EQ(tile_of(scene, {"--method", "phong", "--normalize", "slerp"}), 32) << "per-span normalization";
   EXPECT_EQ(tile_of(scene, {"--units", "classic", "--arith", "fixed"}), 32) << "the unit path";
   EXPECT_EQ(tile_of(scene, {"--tile", "32"}), 32) << "--tile wins";
   EXPECT_EQ(bytes_of(image()), by_default) << "the tile size changed the image";
