@@ -409,6 +409,17 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
     const int lo = max(tile_x, x0) - x0, hi = min(tile_x + TILE - 1, (int)t->x1) - x0;
     if (row_first > row_last || lo > hi) continue;
     __global const float* attr = attrs + (size_t)ti * ATTR_FLOATS;
+#if COMBINED
+    /* Combined Gouraud/Phong (no unit path: the combinations table refuses it): by whole spans, segment ends
+     * counted from each span's left pixel, shaded now even in a deferred tile (combined_walk.h; on the stamps a row
+     * of stamp lanes at a time); narrow triangles, where it cannot save, by Phong per pixel below, and so are the
+     * triangles the per-triangle choice gives to Gouraud (SHADE_PIXELS, SHADE_STAMP_PIXELS, method_combined.h). */
+    if (combined_walks(t, attr)) {
+      shade_triangle_combined(t, attr, tile_x, tile_y, row_first, row_last, lo, hi, depth, cr, cg, cb, lights, materials,
+                              viewer DEFER_ARGS);
+      continue;
+    }
+#endif
 #if UNIT_PATH
     /* Every triangle by whole spans: a unit's registers depend on where its span starts and ends. A span
      * is counted (modeled clocks) by the tile that holds its left pixel, so each is counted once. */
@@ -468,13 +479,6 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
       }
     }
 #elif STAMPS
-#if COMBINED
-    if (combined_walks(t, attr)) { /* segments: the walk by rows of stamp lanes, shaded now (not deferred) */
-      shade_triangle_combined(t, attr, tile_x, tile_y, row_first, row_last, lo, hi, depth, cr, cg, cb, lights, materials,
-                              viewer DEFER_ARGS);
-      continue;
-    }
-#endif
     {
       const int sy_first = (row_first - tile_y) / STAMP, sy_last = (row_last - tile_y) / STAMP;
       if (t->flags & TRIANGLE_SMALL) {
@@ -531,16 +535,6 @@ void render_tiles(__global const TriangleGeometry* tris, __global const float* a
       }
     }
 #else
-#if COMBINED
-    /* Combined Gouraud/Phong: by whole spans, segment ends counted from each span's left pixel; narrow
-     * triangles, where it cannot save, by Phong per pixel below, and so are the triangles the per-triangle
-     * choice gives to Gouraud (SHADE_PIXELS, method_combined.h). */
-    if (combined_walks(t, attr)) {
-      shade_triangle_combined(t, attr, tile_x, tile_y, row_first, row_last, lo, hi, depth, cr, cg, cb, lights, materials,
-                              viewer DEFER_ARGS);
-      continue;
-    }
-#endif
     const int seg_first = (lo + x0 - tile_x) / VEC, seg_last = (hi + x0 - tile_x) / VEC;
     if (t->flags & TRIANGLE_SMALL) {
       /* Few rows: test each pixel's edge functions directly. */

@@ -50,9 +50,9 @@ std::vector<std::string> kernel_files(const KernelVariant& v) {
 bool KernelVariant::defers_tiles() const { return stamps_apply() && (method == Method::phong || combined); }
 
 bool KernelVariant::stamps_apply() const {
-  // The combined method's segment walk reads and writes the stamps' lanes a row at a time (combined_walk.h).
-  const bool plain_method = method == Method::phong || method == Method::gouraud || method == Method::flat || combined;
-  return stamps && plain_method && !unit_path && !span_normalize && plan_pass == 0 && !float_output;
+  // Every method has them on the plain path (the combined method's segment walk reads and writes the stamps'
+  // lanes a row at a time, combined_walk.h).
+  return stamps && !unit_path && !span_normalize && plan_pass == 0 && !float_output;
 }
 
 std::string KernelVariant::build_options() const {

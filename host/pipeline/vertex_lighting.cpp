@@ -94,7 +94,7 @@ __attribute__((target_clones("avx2", "default"))) void VertexLighting::shade_lan
     lit &= h_len != zero;
     const Floats n_dot_h = dot(n, h) / h_len;
     const Mask specular = lit & (n_dot_h > zero);
-    add_where(specular, out, light.intensity * m.specular, select(specular, power(n_dot_h, m.shininess), zero));
+    add_where(specular, out, light.intensity * m.specular, power(n_dot_h, m.shininess));  // other lanes unspecified
   }
   store3(out, out_colour);
 }

@@ -41,7 +41,8 @@ struct Types<Doubles4> {
   }
 };
 
-// ln 2 and the series' coefficients (constant-folded once, the same in every build).
+// ln 2; the series' coefficients below are constant expressions of it, folded at compile time alike in every
+// build and in both instantiations.
 constexpr double kLn2 = 0.69314718055994530942;
 
 template <class D>
