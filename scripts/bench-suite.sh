@@ -106,6 +106,12 @@ run_step() {
 }
 
 # The steps' commands; those whose result is their stdout write it themselves (the log keeps stderr).
+# have_bench NAME: whether the build has that benchmark program (benchmarks can be off); says so when not.
+have_bench() {
+  [ -x "$BUILD/bench/$1" ] && return 0
+  echo "bench-suite: no $BUILD/bench/$1: skipped" >&2
+  return 1
+}
 peer_quick() {
   "$BUILD/bench/bench_llvmpipe" --scenes=sphere_8k,fullscreen_quad --sizes=512x512 --images="$OUT/images" \
       --benchmark_filter='sphere_8k/512x512/(gouraud|phong)/|fullscreen_quad/512x512/gouraud/|fill_limit' \
@@ -134,7 +140,7 @@ scaling_scene() {
 }
 hw_synthesis() { BUILD="$BUILD" "$PYTHON" scripts/hw_synth.py --out "$OUT/hw" >"$OUT/hw-synthesis.txt"; }
 span_setup() {
-  if [ ! -x "$BUILD/bench/bench_span_setup" ]; then echo "bench-suite: no $BUILD/bench/bench_span_setup: skipped" >&2; return 0; fi
+  have_bench bench_span_setup || return 0
   "$BUILD/bench/bench_span_setup" --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true \
       --benchmark_report_aggregates_only=true --benchmark_min_time=0.1 \
       --benchmark_out="$OUT/span.json" --benchmark_out_format=json
@@ -157,14 +163,14 @@ phong_methods() {
       --frames 5 --json "$OUT/phong-methods.json" >"$OUT/phong-methods.md"
 }
 normalize_bench() {
-  if [ ! -x "$BUILD/bench/bench_normalize" ]; then echo "bench-suite: no $BUILD/bench/bench_normalize: skipped" >&2; return 0; fi
+  have_bench bench_normalize || return 0
   "$BUILD/bench/bench_normalize" --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true \
       --benchmark_report_aggregates_only=true --benchmark_min_time=0.1 \
       --benchmark_out="$OUT/normalize.json" --benchmark_out_format=json
 }
 # The host's steadiness now (bench/README.md, "Is the host steady?"): recorded before and after the run.
 host_noise() {
-  if [ ! -x "$BUILD/bench/bench_host_noise" ]; then echo "bench-suite: no $BUILD/bench/bench_host_noise: skipped" >&2; return 0; fi
+  have_bench bench_host_noise || return 0
   "$BUILD/bench/bench_host_noise" --json "$OUT/host-noise-$1.json"
 }
 report() {
