@@ -191,17 +191,23 @@ std::uint64_t setup_triangle_range(const ScreenGeometry& g, Method method, Trian
       }
       case Method::phong:
       case Method::combined: {  // the same planes; the kernel shades differently
+        attr[PHONG_MATERIAL_SLOT] = float(g.material[t]);
+        attr[19] = attr[20] = attr[21] = 0.0f;
+        if (gouraud && gouraud[t].method == TriangleMethod::gouraud) {
+          // The combined method's per-triangle choice: Gouraud's colour planes. Such a triangle is shaded from
+          // them alone, in the walk, never by a deferred tile's winners: no normal or position planes (a quarter
+          // of setup's time on the sphere).
+          const auto ch = colour_planes();
+          store(attr, 0, ch[0], ch[1], ch[2]);
+          std::fill(attr + 9, attr + 18, 0.0f);
+          break;
+        }
         Plane n[3], q[3];
         for (int k = 0; k < 3; ++k) {
           n[k] = plane(g.normal[vid[0]][k], g.normal[vid[1]][k], g.normal[vid[2]][k]);
           q[k] = has_position ? plane(g.world[vid[0]][k], g.world[vid[1]][k], g.world[vid[2]][k]) : Plane{0, 0, 0};
         }
-        if (gouraud && gouraud[t].method == TriangleMethod::gouraud) {  // the combined method's per-triangle choice: Gouraud's planes
-          const auto ch = colour_planes();
-          store(attr, 0, ch[0], ch[1], ch[2]);
-        } else {
-          store(attr, 0, n[0], n[1], n[2]);
-        }
+        store(attr, 0, n[0], n[1], n[2]);
         store(attr, 9, q[0], q[1], q[2]);
         if (fixed) {  // the normal's components for a unit's registers (fixed_point.h)
           for (int k = 0; k < 3; ++k) {
@@ -210,8 +216,6 @@ std::uint64_t setup_triangle_range(const ScreenGeometry& g, Method method, Trian
             fixed[rec].ddy[k] = to_plane_register(NORMAL_REGISTER_LEVELS * n[k].ddy);
           }
         }
-        attr[PHONG_MATERIAL_SLOT] = float(g.material[t]);
-        attr[19] = attr[20] = attr[21] = 0.0f;
         break;
       }
     }
