@@ -34,7 +34,7 @@ std::uint32_t* FramePipeline::HostStorage::tile_list(std::size_t entries) {
 }
 
 bool frame_can_stream(const FrameConfig& config) {
-  return !config.unit_path() && !config.plan && config.band_rows < 0 && config.method != Method::combined;
+  return config.whole_plain_frame() && config.method != Method::combined;
 }
 
 std::size_t triangle_record_bytes(Method method) {
@@ -51,8 +51,12 @@ RecordBudget record_budget(std::size_t record_bytes, int width, int height) {
   return {std::size_t(default_band_mib(width, height)) << 20, kDefaultBandBytes};
 }
 
+bool records_exceed(Method method, std::size_t screen_triangles, std::size_t record_bytes) {
+  return screen_triangles > record_bytes / triangle_record_bytes(method);
+}
+
 bool frame_streams(const FrameConfig& config, std::size_t screen_triangles, std::size_t record_bytes) {
-  return frame_can_stream(config) && screen_triangles > record_bytes / triangle_record_bytes(config.method);
+  return frame_can_stream(config) && records_exceed(config.method, screen_triangles, record_bytes);
 }
 
 const PreparedFrame& FramePipeline::prepare_frame(const Scene& scene, const FrameConfig& config) {

@@ -42,6 +42,8 @@ struct FrameConfig {
   // The unit path: spans through a modeled unit (explicit, or implied by fixed point or DDA coverage).
   bool unit_path() const { return units.has_value() || arith.fixed || dda_coverage; }
   UnitConfig unit() const { return units.value_or(UnitConfig{}); }
+  // The whole frame by the plain path: no unit, plan or split band.
+  bool whole_plain_frame() const { return !unit_path() && !plan && band_rows < 0; }
   // combined with a per-triangle choice between Gouraud, segments and Phong
   bool chooses_per_triangle() const { return method == Method::combined && combined.rule != TriangleRule::none; }
   // The sierpinski unit splits every triangle into 4^D sub-triangle records.

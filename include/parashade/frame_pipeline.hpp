@@ -68,6 +68,8 @@ struct PreparedFrame {
 bool frame_can_stream(const FrameConfig& config);
 // Bytes of one triangle's record and attributes for `method` (what a band's budget counts).
 std::size_t triangle_record_bytes(Method method);
+// Whether `screen_triangles` records of `method` take more than `record_bytes`, whether or not the frame may stream.
+bool records_exceed(Method method, std::size_t screen_triangles, std::size_t record_bytes);
 // Whether a frame of `screen_triangles` (after the geometry stage) streams in bands when its records may
 // take `record_bytes` (FramePipeline::begin_frame's rule).
 bool frame_streams(const FrameConfig& config, std::size_t screen_triangles, std::size_t record_bytes);

@@ -13,9 +13,9 @@
 
 namespace parashade {
 
-// TILE_MAX for a plain frame (Gouraud, flat, Phong without per-span normalization, combined) whose records do not
-// stream, else TILE_DEFAULT. Runs the geometry
-// stage once to count the frame's screen triangles (FramePipeline's streaming rule, frame_streams), so it
+// TILE_MAX for a whole plain frame (Gouraud, flat, Phong without per-span normalization, combined) whose records
+// stay within the streaming threshold, else TILE_DEFAULT. Runs the geometry
+// stage once to count the frame's screen triangles (FramePipeline's streaming rule, records_exceed), so it
 // costs about one frame's geometry: call it once per scene, not per frame. band_record_bytes as
 // RenderOptions' (kBandBytesByFrame: the frame's default budget).
 int default_tile_size(const Scene& scene, const FrameConfig& config, std::size_t band_record_bytes);
