@@ -28,18 +28,13 @@
 #include <nlohmann/json.hpp>
 
 #include "parashade/errors.hpp"
+#include "parashade/host_clock.hpp"
 #include "parashade/output_file.hpp"
 #include "parashade/statistics.hpp"
 #include "tool_main.hpp"
 
 namespace parashade {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
 
 // About 5 ms of dependent integer operations: no memory traffic, no frequency-sensitive vector units.
 double alu_probe() {

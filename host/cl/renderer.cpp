@@ -8,14 +8,12 @@
 
 #include "kernel_variant.hpp"
 #include "parashade/errors.hpp"
+#include "parashade/host_clock.hpp"
 #include "shading_tables.hpp"
 #include "tile_kernel_args.hpp"
 
 namespace parashade {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 double event_ms(const cl::Event& e) {
   const auto start = e.getProfilingInfo<CL_PROFILING_COMMAND_START>();

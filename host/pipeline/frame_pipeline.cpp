@@ -8,17 +8,12 @@
 #include "parashade/combined.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/highlight.hpp"
+#include "parashade/host_clock.hpp"
 #include "parashade/parallel.hpp"
 #include "parashade/setup.hpp"
 #include "parashade/sierpinski_setup.hpp"
 
 namespace parashade {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
-
-}  // namespace
 
 FrameRecords FramePipeline::HostStorage::records(std::size_t n, std::size_t attribute_floats, bool fixed, bool leaves) {
   triangles_.resize(n);
