@@ -19,7 +19,6 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
-#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -29,8 +28,8 @@
 
 #include "parashade/errors.hpp"
 #include "parashade/host_clock.hpp"
-#include "parashade/output_file.hpp"
 #include "parashade/statistics.hpp"
+#include "json_output.hpp"
 #include "tool_main.hpp"
 
 namespace parashade {
@@ -93,13 +92,7 @@ int run(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : int(ExitCode::usage);
   }
 
-  // An unwritable --json path fails now, not after the probes: its temporary file is created first.
-  install_signal_cleanup();
-  std::optional<StagedFile> json_file;
-  if (!json_path.empty()) {
-    json_file.emplace(json_path);
-    json_file->open_fd();
-  }
+  JsonOutput json(json_path);  // a bad path fails now, not after the probes
 
   const unsigned cpus = std::max(1u, std::thread::hardware_concurrency());
   std::vector<Samples> samples(cpus);
@@ -140,14 +133,11 @@ int run(int argc, char** argv) {
   }
   std::printf("%s: worst p90/min ALU %.3f, memory %.3f (steady: both at most %.2f on every CPU)\n",
               steady ? "steady" : "NOT steady", worst_alu, worst_memory, max_spread);
-  if (json_file) {
+  if (!json_path.empty()) {
     const nlohmann::json j = {{"seconds", seconds},     {"max_spread", max_spread},     {"cpus", cpus},
                               {"steady", steady},       {"worst_alu_p90_over_min", worst_alu},
                               {"worst_memory_p90_over_min", worst_memory}, {"per_cpu", per_cpu}};
-    const std::string text = j.dump(1) + "\n";
-    json_file->pwrite_all(text.data(), text.size(), 0);
-    json_file->close_fd();
-    json_file->commit();  // throws InputError naming the path if a write failed
+    json.write(j);
   }
   return require_steady && !steady ? 1 : 0;
 }

@@ -24,11 +24,11 @@
 #include "parashade/errors.hpp"
 #include "parashade/method.hpp"
 #include "parashade/renderer.hpp"
-#include "parashade/report.hpp"
 #include "parashade/scene.hpp"
 #include "parashade/statistics.hpp"
-#include "tool_main.hpp"
 #include "parashade/tile_choice.hpp"
+#include "json_output.hpp"
+#include "tool_main.hpp"
 
 namespace parashade {
 namespace {
@@ -66,6 +66,7 @@ int run(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : int(ExitCode::usage);  // --help: 0; a bad command line: 2, as parashade's
   }
   if (a_options == b_options) throw UsageError("--a and --b are the same build: give B other options");
+  JsonOutput json(json_path);  // a bad path fails now, not after the pairs
 
   const auto wh = parse_size(size);  // its syntax before the scene is read
   Scene scene = load_scene(scene_path);
@@ -135,7 +136,7 @@ int run(int argc, char** argv) {
                               {"frame_ratio_median", frame_ratio},
                               {"a", {{"kernel_ms", sa.kernel_ms}, {"frame_ms", sa.frame_ms}}},
                               {"b", {{"kernel_ms", sb.kernel_ms}, {"frame_ms", sb.frame_ms}}}};
-    write_text_atomically(json_path, j.dump(1) + "\n");
+    json.write(j);
   }
   if (require_same_image && !same_image) {
     std::fprintf(stderr, "bench_kernel_ab: the two builds' images differ (--same-image)\n");
