@@ -165,7 +165,8 @@ int run(int argc, char** argv) {
                        {"parashade_ms", c.parashade_ms},
                        {"llvmpipe_ms", c.llvmpipe_ms}});
     }
-  json.write({{"device", d.name},
+  json.write({{"schema", "parashade.peer-pairs/1"},
+              {"device", d.name},
               {"compute_units", d.compute_units},
               {"gl_renderer", gl.info().renderer},
               {"gl_version", gl.info().version},

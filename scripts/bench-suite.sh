@@ -132,6 +132,11 @@ peer_size() {
       --benchmark_out="$OUT/peer-$1.json" --benchmark_out_format=json
   "$PYTHON" scripts/check_bench_json.py "$OUT/peer-$1.json" || echo "bench-suite: check failed: see above" >&2
 }
+# The targets' scenes frame by frame against llvmpipe (bench/README.md, "Against the peer on a noisy host").
+peer_pairs() {
+  have_bench bench_peer_pairs || return 0
+  "$BUILD/bench/bench_peer_pairs" --pairs 30 --json "$OUT/paired-peer.json"
+}
 # Interpolator count -> modeled and measured speed-up and error (Gouraud on the teapot and the sphere).
 scaling_scene() {
   "$BUILD/parashade" scaling "scenes/$1.json" -q \
@@ -174,7 +179,7 @@ host_noise() {
   "$BUILD/bench/bench_host_noise" --json "$OUT/host-noise-$1.json"
 }
 report() {
-  "$PYTHON" scripts/report.py "$OUT"/peer-*.json "$OUT"/scaling-*.json "$OUT/memory.json" \
+  "$PYTHON" scripts/report.py "$OUT"/peer-*.json "$OUT"/paired-peer.json "$OUT"/scaling-*.json "$OUT/memory.json" \
       "$OUT/combined-study.json" "$OUT/phong-methods.json" --images "$OUT/images" -o "$OUT/report"
 }
 
@@ -193,6 +198,7 @@ suite() {
   step "host noise (before)" host_noise before
   if [ "$PHONG_ONLY" = 0 ]; then
     for size in 1920x1080 512x512 3840x2160; do step "peer $size" peer_size "$size"; done
+    step "peer pairs 1920x1080" peer_pairs
     for scene in teapot sphere; do step "scaling $scene" scaling_scene "$scene"; done
     # Fixed-point error of the units against the source's formulas ([Malovanyi 2019, parallel Gouraud] ch. 3).
     step "unit-error" "$BUILD/parashade" unit-error -q --report "$OUT/unit-error.json"

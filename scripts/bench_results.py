@@ -1,5 +1,5 @@
 """Reading result files for report.py and claims.py: bench_llvmpipe / bench_frame JSON (Google Benchmark),
-`parashade scaling --report` JSON, scripts/peak_memory.py JSON, and the method variants of
+`parashade scaling --report` JSON, scripts/peak_memory.py JSON, bench_peer_pairs JSON, and the method variants of
 scripts/combined_study.py (combined-study.json) and scripts/phong_methods.py (phong-methods.json), told
 apart by their "schema" field (files without one by their keys; docs/reports.md). Each Google Benchmark case becomes one
 row: {"peer", "scene", "size", "method", "name", counters...}, the median aggregate when the run had
@@ -15,7 +15,8 @@ def load_json(path):
 
 # Result files this module reads, by their "schema" field (docs/reports.md): the kind before the "/"
 # and the versions it understands.
-SCHEMAS = {"parashade.scaling": ("scaling", {1}), "parashade.memory": ("memory", {1})}
+SCHEMAS = {"parashade.scaling": ("scaling", {1}), "parashade.memory": ("memory", {1}),
+           "parashade.peer-pairs": ("peer_pairs", {1})}
 
 
 def legacy_kind(doc):
@@ -112,7 +113,7 @@ def benchmark_rows(doc, aggregate="median"):
 
 
 def load_results(paths, aggregate="median"):
-    """{"benchmark": [rows], "contexts": [context], "scaling": [docs], "memory": [rows]} from files or
+    """{"benchmark": [rows], "contexts": [context], "scaling": [docs], "memory": [rows], "peer_pairs": [docs]} from files or
     directories (every *.json in a directory)."""
     files = []
     for p in paths:
@@ -120,7 +121,8 @@ def load_results(paths, aggregate="median"):
             files += sorted(os.path.join(p, f) for f in os.listdir(p) if f.endswith(".json"))
         else:
             files.append(p)
-    out = {"benchmark": [], "contexts": [], "scaling": [], "memory": [], "variants": [], "files": files}
+    out = {"benchmark": [], "contexts": [], "scaling": [], "memory": [], "variants": [], "peer_pairs": [],
+           "files": files}
     for path in files:
         try:
             doc = load_json(path)
@@ -136,6 +138,8 @@ def load_results(paths, aggregate="median"):
         elif k == "memory":
             out["memory"] += doc["rows"]
             out["memory_baseline"] = doc.get("baseline_mib")
+        elif k == "peer_pairs":
+            out["peer_pairs"].append(doc)
         elif k in ("combined_study", "phong_methods"):
             out["variants"] += variant_rows(doc, k)
     return out

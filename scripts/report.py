@@ -312,6 +312,19 @@ def memory_table(memory, baseline):
                                 "Budget = 2 x (RGBA8 + 32-bit depth frame + mesh) + 64 MiB." if baseline else "")
 
 
+def pairs_table(doc):
+    """Markdown: bench_peer_pairs' paired frames, llvmpipe / parashade per pair: median [p10, p90]."""
+    lines = [f"{doc['pairs']} pairs a row at {doc['width']}x{doc['height']}, each one parashade frame and one "
+             f"llvmpipe frame right after each other (`bench_peer_pairs`; {doc['device']}, "
+             f"{doc['compute_units']} compute units; LP_NUM_THREADS={doc['lp_num_threads']}).", "",
+             "| scene | method | parashade ms | llvmpipe ms | x (median of the pairs) | p10 | p90 |",
+             "|---|---|---|---|---|---|---|"]
+    for c in doc["cases"]:
+        lines.append(f"| {c['scene']} | {c['method']} | {c['parashade_median_ms']:.2f} | {c['llvmpipe_median_ms']:.2f} "
+                     f"| **{c['ratio_median']:.2f}** | {c['ratio_p10']:.2f} | {c['ratio_p90']:.2f} |")
+    return "\n".join(lines)
+
+
 def steadiness_line(files):
     """The host's steadiness before and after the run (bench_host_noise via bench-suite.sh), when its
     host-noise-{before,after}.json lie beside the result files; else an empty string."""
@@ -341,7 +354,7 @@ def main():
     args = ap.parse_args()
     res = load_results(args.results, args.aggregate)
     rows = res["benchmark"]
-    if not rows and not res["scaling"]:
+    if not rows and not res["scaling"] and not res["peer_pairs"]:
         sys.exit("report: no benchmark or scaling results in " + " ".join(args.results))
     os.makedirs(args.output, exist_ok=True)
     md = ["# parashade benchmark report", ""]
@@ -365,6 +378,9 @@ def main():
                "## Large triangles against the fill limit", "", fill_table(rows), "",
                "## Pixel throughput (large triangles) and triangle throughput (small triangles)", "",
                throughput_table(rows), ""]
+    for doc in res["peer_pairs"]:
+        md += ["## Frame time against llvmpipe, frame by frame (x = llvmpipe ms / parashade ms)", "",
+               pairs_table(doc), ""]
     if res["memory"]:
         md += ["## Peak memory", "", memory_table(res["memory"], res.get("memory_baseline")), ""]
     sizes = sorted({r["size"] for r in rows if r["peer"] == "llvmpipe"}, key=lambda s: int(s.split("x")[0]))
