@@ -42,7 +42,8 @@ typedef struct {
 #define GOURAUD_ATTR_FLOATS 9  /* ref r,g,b; ddx r,g,b (the constant span increment dI_G); ddy r,g,b */
 /* Phong: normal ref xyz, ddx xyz, ddy xyz; position ref xyz, ddx xyz, ddy xyz; material; 3 spare slots
  * that the combined method's per-triangle choice uses (triangle_choice.hpp). A triangle it gives to
- * Gouraud holds its colour planes (Gouraud's layout) in slots 0..8 instead of the normal planes. */
+ * Gouraud holds its colour planes (Gouraud's layout) in slots 0..8 instead of the normal planes, and zeros in
+ * the position slots 9..17 (it is shaded from its colours alone, never by a deferred tile's winners). */
 #define PHONG_ATTR_FLOATS 22
 #define PHONG_MATERIAL_SLOT 18
 #define PHONG_HIGHLIGHT_SLOT 19 /* combined --highlight-test: lights whose specular term is evaluated (mask) */
