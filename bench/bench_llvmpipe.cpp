@@ -31,7 +31,6 @@
 #include <fstream>
 #include <map>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -39,6 +38,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_device.hpp"
+#include "comma_list.hpp"
 
 #include "parashade/device.hpp"
 #include "parashade/frame_pipeline.hpp"
@@ -210,15 +210,6 @@ void parashade_frame(benchmark::State& state, const std::string& case_name, cons
 // time, so the minimum of interleaved repetitions is the steadier estimate of a frame's own cost.
 double minimum(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); }
 
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ','))
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
-
 void register_all(const std::vector<std::string>& scenes, const std::vector<std::pair<int, int>>& sizes) {
   const char* mesh_dir = std::getenv("PARASHADE_MESH_DIR");
   const bool have_meshes = mesh_dir && *mesh_dir;
@@ -280,10 +271,10 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a.rfind("--scenes=", 0) == 0) {
-      scenes = parashade::split(a.substr(9));
+      scenes = parashade::comma_list(a.substr(9));
     } else if (a.rfind("--sizes=", 0) == 0) {
       sizes.clear();
-      for (const std::string& s : parashade::split(a.substr(8))) {
+      for (const std::string& s : parashade::comma_list(a.substr(8))) {
         int w = 0, h = 0;
         char x = 0, extra = 0;
         if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 || h < 1 ||

@@ -16,7 +16,6 @@
 #include <cstdlib>
 #include <memory>
 #include <stdexcept>
-#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -25,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench_device.hpp"
+#include "comma_list.hpp"
 #include "json_output.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/host_clock.hpp"
@@ -38,15 +38,6 @@
 
 namespace parashade {
 namespace {
-
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ','))
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
 
 struct Case {
   std::string scene;
@@ -114,7 +105,7 @@ int run(int argc, char** argv) {
   const auto [width, height] = *wh;
   check_resolution(width, height, "--size " + size);
   std::vector<Method> methods;
-  for (const std::string& m : split(methods_text)) {
+  for (const std::string& m : comma_list(methods_text)) {
     const Method method = parse_method(m);
     if (method != Method::gouraud && method != Method::phong)
       throw UsageError("--methods: the peer renders gouraud and phong, not '" + m + "'");
@@ -122,7 +113,7 @@ int run(int argc, char** argv) {
   }
   const char* mesh_dir = std::getenv("PARASHADE_MESH_DIR");
   std::vector<std::string> scenes;
-  for (const std::string& s : split(scenes_text)) {
+  for (const std::string& s : comma_list(scenes_text)) {
     if (bench::needs_mesh_dir(s) && !(mesh_dir && *mesh_dir)) {
       std::fprintf(stderr, "bench_peer_pairs: PARASHADE_MESH_DIR is not set: %s skipped\n", s.c_str());
       continue;
