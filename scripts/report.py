@@ -66,6 +66,23 @@ def point_family(r):
     return "units" if ":" in r["method"] else "parashade"
 
 
+def place_labels(fig, ax, items):
+    """Names beside points (x, y, text), each moved up or down from its point until it overlaps no name placed
+    before it (points close together, such as Phong and the combined method at the same error, would print
+    their names over each other)."""
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    placed = []
+    for x, y, text in sorted(items, key=lambda i: (i[0], -i[1])):
+        for dy in (3, -9, 12, -18, 21, -27, 30):
+            label = ax.annotate(text, (x, y), textcoords="offset points", xytext=(5, dy), fontsize=6.5)
+            box = label.get_window_extent(renderer)
+            if not any(box.overlaps(b) for b in placed) or dy == 30:
+                break
+            label.remove()  # try the next offset
+        placed.append(box)
+
+
 def speed_error_plot(rows, variants, scene, size, out_dir):
     """Frame time against NMSE vs exact Phong: the peer run's points and, from the study files (other
     runs of the same scene and size, at another load), the combined and Phong-variant points placed by
@@ -90,10 +107,6 @@ def speed_error_plot(rows, variants, scene, size, out_dir):
                        edgecolors="none", zorder=3, alpha=0.9)
     ax.scatter([p[0] for p in front], [p[1] for p in front], s=110, facecolors="none", edgecolors="black",
                linewidth=1.2, zorder=4)
-    # Names only where they matter: the Pareto front and the plain methods of both peers.
-    for t, e, fam, lab in pts:
-        if (t, e, (fam, lab)) in on_front or fam in ("llvmpipe", "parashade"):
-            ax.annotate(lab.replace("parashade ", ""), (t, e), textcoords="offset points", xytext=(5, 3), fontsize=6.5)
     ax.step([p[0] for p in front], [p[1] for p in front], where="post", color="black", linestyle="--",
             linewidth=1, label="Pareto front (circled)", zorder=2)
     ax.set_xscale("log")
@@ -113,6 +126,10 @@ def speed_error_plot(rows, variants, scene, size, out_dir):
     ax.set_xlim(min(xs) / 1.2, max(xs) * 1.5)  # room for the names on the right
     ax.set_ylim(min(es) / 1.5, max(es) * 1.5)
     fig.tight_layout()
+    # Names only where they matter: the Pareto front and the plain methods of both peers (placed last, once the
+    # axes are final, so that place_labels can see where they fall).
+    place_labels(fig, ax, [(t, e, lab.replace("parashade ", "")) for t, e, fam, lab in pts
+                           if (t, e, (fam, lab)) in on_front or fam in ("llvmpipe", "parashade")])
     name = f"speed_error_{scene}_{size}.png"
     fig.savefig(os.path.join(out_dir, name), dpi=110)
     plt.close(fig)
