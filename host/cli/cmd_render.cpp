@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -21,6 +22,7 @@
 #include "split_render_cli.hpp"
 #include "parashade/split_renderer.hpp"
 #include "parashade/sub_devices.hpp"
+#include "parashade/choice_pixels.hpp"
 #include "parashade/combined.hpp"
 #include "parashade/distributed.hpp"
 #include "parashade/errors.hpp"
@@ -92,6 +94,16 @@ ReferenceImage reference_of(const Scene& scene, Method method) {
   ScreenGeometry g;
   build_screen_geometry(scene, {method, true}, g);
   return render_reference(scene, g, method);
+}
+
+// The per-triangle choice's visible pixels per method: the choice made again on the reference's geometry (the
+// frame's triangles in the same order), counted on the reference's visibility.
+ChoicePixels choice_pixels_of(const Scene& scene, const RenderOptions& options, const ReferenceImage& ref) {
+  ScreenGeometry g;
+  build_screen_geometry(scene, {Method::combined, true, true}, g);
+  std::vector<TriangleShading> choice;
+  choose_triangle_methods(scene, g, options.combined, combined_shading_budget(options.combined), choice);
+  return visible_pixels_by_method(ref.triangle, choice);
 }
 
 // The name of the method's own ideal; combined's is Phong's (segment ends are exact Phong).
@@ -364,9 +376,11 @@ int run_render(const RenderArgs& a) {
   nlohmann::json errors = nlohmann::json::object();
   std::vector<std::string> error_lines;
   std::optional<ReferenceImage> ref;
+  std::optional<ChoicePixels> choice_pixels;
   if (!a.no_error) {
     ref = reference_of(scene, method);
     errors = error_figures(*ref, method, frame.image, error_lines);
+    if (options.chooses_per_triangle()) choice_pixels = choice_pixels_of(scene, options, *ref);
   }
   // Fixed point: the registers' wraps and saturations, from the golden models (the kernels count none).
   std::optional<RegisterEvents> registers;
@@ -418,6 +432,9 @@ int run_render(const RenderArgs& a) {
     report["combined_min_width"] = combined_min_width(options.combined);
     report["highlight_test"] = uses_highlight_mask(options.combined);
     report["triangle_choice_rule"] = triangle_rule_name(options.combined);
+    if (choice_pixels)
+      report["stats"]["triangle_choice"]["visible_pixels"] = {
+          {"gouraud", choice_pixels->gouraud}, {"segments", choice_pixels->segments}, {"phong", choice_pixels->phong}};
   }
   if (options.unit_path()) {
     report["units"] = unit_name(options.unit());
@@ -481,6 +498,14 @@ int run_render(const RenderArgs& a) {
                 triangle_rule_name(options.combined).c_str(), (unsigned long long)c->triangles,
                 (unsigned long long)c->gouraud, c->largest_expected_levels, (unsigned long long)c->segments,
                 (unsigned long long)(c->triangles - c->gouraud - c->segments), (unsigned long long)c->terminator);
+  if (choice_pixels) {
+    const ChoicePixels& p = *choice_pixels;
+    const double all = std::max(1.0, double(p.gouraud + p.segments + p.phong));
+    std::printf("visible pixels by the choice (exact reference's visibility): %.1f %% Gouraud, %.1f %% segments, "
+                "%.1f %% Phong per pixel, of %llu\n",
+                100.0 * double(p.gouraud) / all, 100.0 * double(p.segments) / all, 100.0 * double(p.phong) / all,
+                (unsigned long long)(p.gouraud + p.segments + p.phong));
+  }
   if (method == Method::combined && uses_highlight_mask(options.combined))
     std::printf("highlight test: %llu of %llu triangles without a highlight, %llu (triangle, light) specular terms skipped\n",
                 (unsigned long long)frame.stats.highlight.without_highlight,

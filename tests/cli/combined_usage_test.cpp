@@ -63,12 +63,26 @@ TEST_F(CliCombinedUsage, ReportGivesTheMix) {
   EXPECT_LE(c["largest_expected_gouraud_levels"].get<double>(), 1.5);
   // combined:0 with the bound: Gouraud within the given budget (this coarse ball's triangles need a large one),
   // else Phong per pixel, no segments.
-  ASSERT_TRUE(succeeds(render(scene_, {"--method", "combined:0", "--triangle-choice", "bound", "--max-error", "40"})));
+  ASSERT_TRUE(succeeds(render(scene_, {"--method", "combined:0", "--triangle-choice", "bound", "--max-error", "40"},
+                              ErrorFigures::compute)));
   const auto b = read_report()["stats"]["triangle_choice"];
   EXPECT_EQ(b["segments"].get<long>(), 0);
   EXPECT_GT(b["gouraud"].get<long>(), 0);
   EXPECT_LE(b["largest_expected_gouraud_levels"].get<double>(), 39.5);
   EXPECT_GT(b["largest_expected_gouraud_levels"].get<double>(), 1.5);
+  // The visible pixels per method: every pixel the error figures compare, Gouraud's and Phong's both present.
+  const auto e = read_report()["error"]["method"];
+  ASSERT_EQ(e["coverage_mismatch"].get<long>(), 0);
+  ASSERT_TRUE(b.contains("visible_pixels"));
+  const auto& v = b["visible_pixels"];
+  EXPECT_EQ(v["gouraud"].get<long>() + v["segments"].get<long>() + v["phong"].get<long>(),
+            e["pixels_compared"].get<long>());
+  EXPECT_EQ(v["segments"].get<long>(), 0);
+  EXPECT_GT(v["gouraud"].get<long>(), 0);
+  EXPECT_EQ(v["phong"].get<long>() > 0, b["phong"].get<long>() > 0);
+  // Without the exact reference there is no visibility to count them on.
+  ASSERT_TRUE(succeeds(render(scene_, {"--method", "combined:0", "--triangle-choice", "bound", "--max-error", "40"})));
+  EXPECT_FALSE(read_report()["stats"]["triangle_choice"].contains("visible_pixels"));
   ASSERT_TRUE(succeeds(render(scene_, {"--method", "combined:0", "--triangle-choice", "sources:0.95,0.01,0.02"})));
   EXPECT_EQ(read_report()["triangle_choice_rule"], "sources");
 }
