@@ -4,7 +4,10 @@ phong, gouraud, combined:K and combined:auto at several budgets through `parasha
 in rounds (methods interleaved, so load from other processes spreads over all of them), and prints a
 Markdown table with frame and kernel time, their ratio to Phong's from the same round (median over the
 rounds), and the error against Phong (the method's ideal: screen-space Phong in double) and against
-exact (perspective-correct) Phong. With --json it also writes the measurements and the source claims
+exact (perspective-correct) Phong. Where the per-triangle choice runs, it also gives the share of visible
+pixels the choice gives to Phong and a ceiling: Phong's frame over this frame with its kernel replaced by the
+cost those pixels have in Phong's and Gouraud's kernels of the same round (ceiling()). With --json it also
+writes the measurements and the source claims
 ([Romanyuk & Romanyuk, combined shading]: combined k = 2 1.3x / 1.8x, k = 3 1.48x / 2.09x) as {claim, source, measured}. Example:
 
     scripts/combined_study.py --scenes scenes/teapot.json scenes/bunny.json --frames 11 --json combined.json
@@ -38,6 +41,19 @@ def run(binary, scene, method, frames, device, tmp):
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     with open(report) as f:
         return json.load(f), " ".join(cmd[1:])
+
+
+def ceiling(r, phong, gouraud):
+    """Phong's frame over the frame this run would take if its kernel cost each visible pixel what Phong's and
+    Gouraud's kernels cost a pixel in the same round (the choice's segment pixels at Gouraud's cost), its host
+    stages unchanged: how far a faster combined kernel could take this choice. None without the choice's
+    visible pixels (render without --no-error) or a Gouraud run."""
+    pix = ((r.get("stats") or {}).get("triangle_choice") or {}).get("visible_pixels")
+    if not pix or gouraud is None or sum(pix.values()) == 0:
+        return None
+    kp, kg = phong["stages_ms"]["kernel_ms"], gouraud["stages_ms"]["kernel_ms"]
+    kernel = kg + pix["phong"] / sum(pix.values()) * (kp - kg)
+    return phong["frame_ms"] / (r["frame_ms"] - r["stages_ms"]["kernel_ms"] + kernel)
 
 
 def main():
@@ -77,6 +93,9 @@ def main():
             frame = statistics.median(r["frame_ms"] for _, r, _ in runs)
             kernel = statistics.median(r["stages_ms"]["kernel_ms"] for _, r, _ in runs)
             speed = statistics.median(base[rnd]["frame_ms"] / r["frame_ms"] for rnd, r, _ in runs)
+            gouraud = {rnd: g for rnd, g, _ in results.get((scene, "gouraud"), [])}
+            ceilings = [c for c in (ceiling(r, base[rnd], gouraud.get(rnd)) for rnd, r, _ in runs) if c is not None]
+            limit = statistics.median(ceilings) if ceilings else None
             kspeed = statistics.median(base[rnd]["stages_ms"]["kernel_ms"] / r["stages_ms"]["kernel_ms"] for rnd, r, _ in runs)
             r, cmd = runs[-1][1], runs[-1][2]
             own, exact = r["error"]["implementation"], r["error"]["method"]
@@ -84,22 +103,31 @@ def main():
             within = "" if not budget else ("yes" if own["max_abs"] <= float(budget) else "no")
             choice = (r.get("stats") or {}).get("triangle_choice")
             mix = (f"{choice['gouraud']} / {choice['segments']} / {choice['phong']}" if choice else "")
+            pix = (choice or {}).get("visible_pixels")
+            share = f"{100.0 * pix['phong'] / max(1, sum(pix.values())):.1f}" if pix else ""
             rows.append(f"| {r['scene']} | {method.replace('@', ' @')} | {frame:.1f} | {kernel:.1f} | {speed:.2f} | {kspeed:.2f} "
                         f"| {own['max_abs']:.2f} / {own['nmse']:.1e} / {own['pixels_over_1_level']} {within}"
-                        f"| {exact['max_abs']:.2f} / {exact['nmse']:.1e} | {exact.get('psnr_db', float('nan')):.2f} | {mix} |")
+                        f"| {exact['max_abs']:.2f} / {exact['nmse']:.1e} | {exact.get('psnr_db', float('nan')):.2f} | {mix} "
+                        f"| {share} | {'' if limit is None else f'{limit:.2f}'} |")
             records.append({"scene": r["scene"], "method": method, "command": "parashade " + cmd, "frame_ms": frame,
                             "kernel_ms": kernel, "speedup_vs_phong_frame": speed, "speedup_vs_phong_kernel": kspeed,
                             "error_vs_phong": own, "error_vs_exact_phong": exact, "width": r["width"],
-                            "height": r["height"], "triangle_choice": choice,
+                            "height": r["height"], "triangle_choice": choice, "ceiling_vs_phong_frame": limit,
                             "frame_ms_rounds": [x["frame_ms"] for _, x, _ in runs]})
     header = (f"Device: {device['name']} ({device['platform']}), {device['compute_units']} compute units. "
               f"Median of {args.frames} frames after 1 warm-up; ratios to Phong from "
               f"{'the Phong run right before it' if args.paired else 'the same round'}, median of {args.rounds} round(s).\n\n"
               "| scene | method | frame ms | kernel ms | speed-up vs Phong (frame) | (kernel) | vs Phong: max levels / NMSE / "
-              "px > 1 level, within budget | vs exact Phong: max / NMSE | PSNR dB | triangles Gouraud / segments / Phong |"
-              "\n|---|---|---|---|---|---|---|---|---|---|")
+              "px > 1 level, within budget | vs exact Phong: max / NMSE | PSNR dB | triangles Gouraud / segments / Phong "
+              "| visible pixels by Phong % | ceiling vs Phong (frame) |"
+              "\n|---|---|---|---|---|---|---|---|---|---|---|---|")
+    note = ("Ceiling: Phong's frame over this frame with its kernel replaced by a model, Gouraud's kernel plus the "
+            "share of visible pixels the choice gives to Phong times (Phong's kernel - Gouraud's), from the same round "
+            "(segment pixels at Gouraud's cost): what a combined kernel with no overhead of its own would reach with "
+            "this choice and these host stages.")
     print(header)
     print("\n".join(rows))
+    print("\n" + note)
     if args.json:
         claims = []
         for k, diffuse, with_linear in ((2, 1.3, 1.8), (3, 1.48, 2.09)):

@@ -1,0 +1,62 @@
+#!/usr/bin/env python3
+"""scripts/combined_study.py's ceiling: worked by hand on made-up runs, and present (and not above what the
+kernel model allows) on a real study of the sphere with Phong, Gouraud and one per-triangle choice.
+
+    combined_study_test.py SOURCE_DIR PARASHADE_BINARY
+"""
+import importlib.util
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+SOURCE, BINARY = sys.argv[1], sys.argv[2]
+spec = importlib.util.spec_from_file_location("combined_study", os.path.join(SOURCE, "scripts", "combined_study.py"))
+study = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(study)
+failures = []
+
+
+def check(ok, what):
+    if not ok:
+        failures.append(what)
+        print("FAIL: " + what)
+
+
+def run(frame, kernel, pixels=None):
+    r = {"frame_ms": frame, "stages_ms": {"kernel_ms": kernel}}
+    if pixels:
+        r["stats"] = {"triangle_choice": {"visible_pixels": pixels}}
+    return r
+
+
+# Phong: frame 4, kernel 3; Gouraud's kernel 1; the mix: frame 3, kernel 2, a quarter of the pixels by Phong.
+# The model's kernel is 1 + 0.25 * (3 - 1) = 1.5, its frame 3 - 2 + 1.5 = 2.5, the ceiling 4 / 2.5 = 1.6.
+phong, gouraud = run(4.0, 3.0), run(1.5, 1.0)
+mix = run(3.0, 2.0, {"gouraud": 60, "segments": 15, "phong": 25})
+got = study.ceiling(mix, phong, gouraud)
+check(got is not None and abs(got - 1.6) < 1e-12, "ceiling of the worked example: %r, not 1.6" % got)
+check(study.ceiling(run(3.0, 2.0), phong, gouraud) is None, "a run without visible pixels has a ceiling")
+check(study.ceiling(mix, phong, None) is None, "a ceiling without a Gouraud run")
+check(study.ceiling(run(3.0, 2.0, {"gouraud": 0, "segments": 0, "phong": 0}), phong, gouraud) is None,
+      "a ceiling from no pixels")
+
+with tempfile.TemporaryDirectory() as tmp:
+    out = os.path.join(tmp, "study.json")
+    proc = subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "combined_study.py"), "--binary", BINARY,
+                           "--scenes", os.path.join(SOURCE, "scenes", "sphere.json"), "--frames", "1", "--methods",
+                           "phong", "gouraud", "combined:0@16 --triangle-choice bound", "--json", out],
+                          capture_output=True, text=True)
+    check(proc.returncode == 0, "the study failed: %s" % proc.stderr[-2000:])
+    if proc.returncode == 0:
+        rows = {m["method"]: m for m in json.load(open(out))["measurements"]}
+        mixed = rows.get("combined:0@16 --triangle-choice bound", {})
+        c = mixed.get("ceiling_vs_phong_frame")
+        pix = (mixed.get("triangle_choice") or {}).get("visible_pixels") or {}
+        check(c is not None and c > 0, "no ceiling for the per-triangle choice: %r" % c)
+        check(rows["phong"].get("ceiling_vs_phong_frame") is None, "Phong itself has a ceiling")
+        check(pix.get("phong", 0) > 0 and pix.get("gouraud", 0) > 0, "the sphere's mix has no Phong or no Gouraud pixels: %r" % pix)
+        check("ceiling vs Phong (frame)" in proc.stdout, "the table has no ceiling column")
+
+sys.exit(1 if failures else 0)
