@@ -29,11 +29,14 @@
 #define TILE_MAX 64
 #define TILE_DEFAULT 32
 
-/* Work-items of the frame kernel per compute unit by default (--work-items 0): PoCL pays a fixed cost per
- * work-group, so a few work-items walk interleaved tiles instead of one work-group per tile; 16 per
- * compute unit (32 on the 2-core development machine) cut the kernel by a quarter against one
- * work-group per tile. */
-#define WORK_ITEMS_PER_COMPUTE_UNIT 16
+/* Work-items of the frame kernel per compute unit by default (--work-items 0; at most one per tile): each
+ * walks interleaved tiles. PoCL's pthread device hands a thread up to half the remaining work-groups at a
+ * time (at most 32 per thread), so a few work-groups split the frame almost statically and one core
+ * idles while the other finishes the busy tiles; 256 per compute unit leave it chunks of an eighth or less.
+ * Against 16 per compute unit on 64-pixel tiles (2 compute units, frames alternating in one process):
+ * 1920x1080 frames 1.00-1.10x faster, 3840x2160 1.02-1.30x (bench/README.md run AC). One work-group per
+ * 16-pixel tile is slower again: PoCL pays a fixed cost per work-group. */
+#define WORK_ITEMS_PER_COMPUTE_UNIT 256
 
 /* Small triangles (TRIANGLE_SMALL, triangle_record.h): vertex extent at most SMALL_EXTENT pixels both
  * ways. Their edge functions stay below 2^30 over their box and the 16 pixels beyond it, so the kernels

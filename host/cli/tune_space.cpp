@@ -129,7 +129,7 @@ TuneSpace default_tune_space(const std::string& method, int compute_units) {
   for (Partition p : {Partition::round_robin, Partition::lpt, Partition::tiles, Partition::dynamic})
     partitions.push_back(partition_name(p));
   s.values = {tiles,
-              distinct({0, cu, 4 * cu, 64 * cu}),
+              distinct({0, cu, 16 * cu, 64 * cu}),
               partitions,
               distinct({cu, 2 * cu, 4 * cu, 16}),
               {"16", "64", "256"},
