@@ -192,7 +192,8 @@ std::uint64_t setup_triangle_range(const ScreenGeometry& g, Method method, Trian
       case Method::phong:
       case Method::combined: {  // the same planes; the kernel shades differently
         attr[PHONG_MATERIAL_SLOT] = float(g.material[t]);
-        attr[19] = attr[20] = attr[21] = 0.0f;
+        // Filled later where the choice or the highlight test runs.
+        attr[PHONG_HIGHLIGHT_SLOT] = attr[PHONG_METHOD_SLOT] = attr[PHONG_PSI_SLOT] = 0.0f;
         if (gouraud && gouraud[t].method == TriangleMethod::gouraud) {
           // The combined method's per-triangle choice: Gouraud's colour planes. Such a triangle is shaded from
           // them alone, in the walk, never by a deferred tile's winners: no normal or position planes (a quarter
