@@ -26,7 +26,7 @@ DEFAULT_METHODS = ["phong", "gouraud", "combined:1", "combined:2", "combined:3",
                    "combined:0 --highlight-test"]
 
 
-def run(binary, scene, method, frames, device, tmp):
+def run(binary, scene, method, frames, device, tmp, size=""):
     words = method.split()
     name, _, budget = words[0].partition("@")
     report = os.path.join(tmp, "r.json")
@@ -37,6 +37,8 @@ def run(binary, scene, method, frames, device, tmp):
     cmd += words[1:]
     if device:
         cmd += ["--device", device]
+    if size:
+        cmd += ["--size", size]
     print("running:", " ".join(cmd), file=sys.stderr)
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     with open(report) as f:
@@ -66,6 +68,7 @@ def main():
     ap.add_argument("--rounds", type=int, default=1)
     ap.add_argument("--paired", action="store_true", help="run Phong right before every other method for its ratio")
     ap.add_argument("--device", default="")
+    ap.add_argument("--size", default="", help="WIDTHxHEIGHT for every render (default: each scene's own)")
     ap.add_argument("--json", default="", help="write measurements and claims here")
     args = ap.parse_args()
 
@@ -76,9 +79,9 @@ def main():
                 for method in args.methods:
                     if args.paired and method != "phong":
                         # Phong right before each method: the ratio comes from two adjacent runs.
-                        base, _ = run(args.binary, scene, "phong", args.frames, args.device, tmp)
+                        base, _ = run(args.binary, scene, "phong", args.frames, args.device, tmp, args.size)
                         pairs.setdefault((scene, method), []).append(base)
-                    r, cmd = run(args.binary, scene, method, args.frames, args.device, tmp)
+                    r, cmd = run(args.binary, scene, method, args.frames, args.device, tmp, args.size)
                     device = r["device"]
                     results.setdefault((scene, method), []).append((rnd, r, cmd))
 

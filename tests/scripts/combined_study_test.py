@@ -45,7 +45,7 @@ check(study.ceiling(run(3.0, 2.0, {"gouraud": 0, "segments": 0, "phong": 0}), ph
 with tempfile.TemporaryDirectory() as tmp:
     out = os.path.join(tmp, "study.json")
     proc = subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "combined_study.py"), "--binary", BINARY,
-                           "--scenes", os.path.join(SOURCE, "scenes", "sphere.json"), "--frames", "1", "--methods",
+                           "--scenes", os.path.join(SOURCE, "scenes", "sphere.json"), "--size", "960x540", "--frames", "1", "--methods",
                            "phong", "gouraud", "combined:0@16 --triangle-choice bound", "--json", out],
                           capture_output=True, text=True)
     check(proc.returncode == 0, "the study failed: %s" % proc.stderr[-2000:])
@@ -58,5 +58,7 @@ with tempfile.TemporaryDirectory() as tmp:
         check(rows["phong"].get("ceiling_vs_phong_frame") is None, "Phong itself has a ceiling")
         check(pix.get("phong", 0) > 0 and pix.get("gouraud", 0) > 0, "the sphere's mix has no Phong or no Gouraud pixels: %r" % pix)
         check("ceiling vs Phong (frame)" in proc.stdout, "the table has no ceiling column")
+        check(mixed.get("width") == 960 and mixed.get("height") == 540, "--size not passed to render: %r x %r"
+              % (mixed.get("width"), mixed.get("height")))
 
 sys.exit(1 if failures else 0)
