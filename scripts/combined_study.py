@@ -48,8 +48,9 @@ def run(binary, scene, method, frames, device, tmp, size=""):
 def ceiling(r, phong, gouraud):
     """Phong's frame over the frame this run would take if its kernel cost each visible pixel what Phong's and
     Gouraud's kernels cost a pixel in the same round (the choice's segment pixels at Gouraud's cost), its host
-    stages unchanged: how far a faster combined kernel could take this choice. None without the choice's
-    visible pixels (render without --no-error) or a Gouraud run."""
+    stages unchanged: how far a faster combined kernel could take this choice (a bound where every covered
+    pixel is visible; with hidden pixels an estimate). None without the choice's visible pixels (render
+    without --no-error) or a Gouraud run."""
     pix = ((r.get("stats") or {}).get("triangle_choice") or {}).get("visible_pixels")
     if not pix or gouraud is None or sum(pix.values()) == 0:
         return None
