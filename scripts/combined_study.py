@@ -45,17 +45,23 @@ def run(binary, scene, method, frames, device, tmp, size=""):
         return json.load(f), " ".join(cmd[1:])
 
 
+def phong_share(pix):
+    """The share of the visible pixels the choice gives to Phong per pixel; None without any."""
+    total = sum(pix.values()) if pix else 0
+    return pix["phong"] / total if total else None
+
+
 def ceiling(r, phong, gouraud):
     """Phong's frame over the frame this run would take if its kernel cost each visible pixel what Phong's and
     Gouraud's kernels cost a pixel in the same round (the choice's segment pixels at Gouraud's cost), its host
     stages unchanged: how far a faster combined kernel could take this choice (a bound where every covered
     pixel is visible; with hidden pixels an estimate). None without the choice's visible pixels (render
     without --no-error) or a Gouraud run."""
-    pix = ((r.get("stats") or {}).get("triangle_choice") or {}).get("visible_pixels")
-    if not pix or gouraud is None or sum(pix.values()) == 0:
+    share = phong_share(((r.get("stats") or {}).get("triangle_choice") or {}).get("visible_pixels"))
+    if share is None or gouraud is None:
         return None
     kp, kg = phong["stages_ms"]["kernel_ms"], gouraud["stages_ms"]["kernel_ms"]
-    kernel = kg + pix["phong"] / sum(pix.values()) * (kp - kg)
+    kernel = kg + share * (kp - kg)
     return phong["frame_ms"] / (r["frame_ms"] - r["stages_ms"]["kernel_ms"] + kernel)
 
 
@@ -107,8 +113,8 @@ def main():
             within = "" if not budget else ("yes" if own["max_abs"] <= float(budget) else "no")
             choice = (r.get("stats") or {}).get("triangle_choice")
             mix = (f"{choice['gouraud']} / {choice['segments']} / {choice['phong']}" if choice else "")
-            pix = (choice or {}).get("visible_pixels")
-            share = f"{100.0 * pix['phong'] / max(1, sum(pix.values())):.1f}" if pix else ""
+            share = phong_share((choice or {}).get("visible_pixels"))
+            share = "" if share is None else f"{100.0 * share:.1f}"
             rows.append(f"| {r['scene']} | {method.replace('@', ' @')} | {frame:.1f} | {kernel:.1f} | {speed:.2f} | {kspeed:.2f} "
                         f"| {own['max_abs']:.2f} / {own['nmse']:.1e} / {own['pixels_over_1_level']} {within}"
                         f"| {exact['max_abs']:.2f} / {exact['nmse']:.1e} | {exact.get('psnr_db', float('nan')):.2f} | {mix} "

@@ -89,18 +89,23 @@ FrameTimings median_timings(const std::vector<FrameTimings>& f) {
   return m;
 }
 
-// The exact reference of the scene's frame: the method's own ideal and exact Phong.
-ReferenceImage reference_of(const Scene& scene, Method method) {
+// The geometry the exact reference renders: the frame's triangles in the same order, with every attribute
+// the reference needs, and the vertex intensities too where a per-triangle choice is made on it.
+ScreenGeometry reference_geometry(const Scene& scene, Method method, bool chooses_per_triangle = false) {
   ScreenGeometry g;
-  build_screen_geometry(scene, {method, true}, g);
-  return render_reference(scene, g, method);
+  build_screen_geometry(scene, {method, true, chooses_per_triangle}, g);
+  return g;
 }
 
-// The per-triangle choice's visible pixels per method: the choice made again on the reference's geometry (the
-// frame's triangles in the same order), counted on the reference's visibility.
-ChoicePixels choice_pixels_of(const Scene& scene, const RenderOptions& options, const ReferenceImage& ref) {
-  ScreenGeometry g;
-  build_screen_geometry(scene, {Method::combined, true, true}, g);
+// The exact reference of the scene's frame: the method's own ideal and exact Phong.
+ReferenceImage reference_of(const Scene& scene, Method method) {
+  return render_reference(scene, reference_geometry(scene, method), method);
+}
+
+// The per-triangle choice's visible pixels per method: the choice made again on the reference's geometry `g`,
+// counted on the reference's visibility.
+ChoicePixels choice_pixels_of(const Scene& scene, const RenderOptions& options, const ScreenGeometry& g,
+                              const ReferenceImage& ref) {
   std::vector<TriangleShading> choice;
   choose_triangle_methods(scene, g, options.combined, combined_shading_budget(options.combined), choice);
   return visible_pixels_by_method(ref.triangle, choice);
@@ -378,9 +383,10 @@ int run_render(const RenderArgs& a) {
   std::optional<ReferenceImage> ref;
   std::optional<ChoicePixels> choice_pixels;
   if (!a.no_error) {
-    ref = reference_of(scene, method);
+    const ScreenGeometry g = reference_geometry(scene, method, options.chooses_per_triangle());
+    ref = render_reference(scene, g, method);
     errors = error_figures(*ref, method, frame.image, error_lines);
-    if (options.chooses_per_triangle()) choice_pixels = choice_pixels_of(scene, options, *ref);
+    if (options.chooses_per_triangle()) choice_pixels = choice_pixels_of(scene, options, g, *ref);
   }
   // Fixed point: the registers' wraps and saturations, from the golden models (the kernels count none).
   std::optional<RegisterEvents> registers;

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""scripts/combined_study.py's ceiling: worked by hand on made-up runs, and present (and not above what the
-kernel model allows) on a real study of the sphere with Phong, Gouraud and one per-triangle choice.
+"""scripts/combined_study.py's ceiling: worked by hand on made-up runs, and present, with both methods' pixels
+and --size passed on, in a real study of the sphere with Phong, Gouraud and one per-triangle choice.
 
     combined_study_test.py SOURCE_DIR PARASHADE_BINARY
 """
