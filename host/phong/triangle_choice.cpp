@@ -424,204 +424,253 @@ std::shared_ptr<const ChoiceTables> choice_tables(const Scene& s, const Combined
 
 }  // namespace
 
-TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry& g, const CombinedConfig& c,
-                                            double shading_budget, std::vector<TriangleShading>& out,
-                                            ChoiceArithmetic arithmetic) {
+// What every range of one frame's choice shares: the scene's tables and constants, and the counters.
+struct TriangleChooser::Shared {
+  Shared(const Scene& scene, const ScreenGeometry& geometry, const CombinedConfig& combined, double budget,
+         std::vector<TriangleShading>& shading)
+      : s(scene), g(geometry), c(combined), shading_budget(budget), out(shading) {}
+  const Scene& s;
+  const ScreenGeometry& g;
+  const CombinedConfig& c;
+  double shading_budget;
+  std::vector<TriangleShading>& out;
+  bool bound = false, masked = false, lanes = false, moving = false;
+  unsigned all_lights = 0;
+  std::size_t lights = 0;
+  int fixed_walk_width = 0;
+  std::shared_ptr<const ChoiceTables> tables;
+  GouraudFitConstants fit_constants;
+  std::atomic<std::uint64_t> gouraud{0}, segments{0}, without{0}, terminator{0}, skipped{0};
+  std::atomic<std::uint64_t> largest_bits{0};  // largest expected error among Gouraud triangles (double bits)
+};
+
+TriangleChooser::TriangleChooser(const Scene& s, const ScreenGeometry& g, const CombinedConfig& c, double shading_budget,
+                                 std::vector<TriangleShading>& out, ChoiceArithmetic arithmetic) {
   if (s.lights.size() > kChoiceMaxLights)
     throw InputError("the per-triangle choice handles at most " + std::to_string(kChoiceMaxLights) + " lights");
-  const std::size_t count = g.triangles.size();
-  out.resize(count);
-  const bool bound = c.rule == TriangleRule::bound;
-  const unsigned all_lights = (1u << s.lights.size()) - 1u;
-  const bool masked = uses_highlight_mask(c);
-  const std::size_t lights = s.lights.size();
-  const std::shared_ptr<const ChoiceTables> tables = choice_tables(s, c, shading_budget);
+  out.resize(g.triangles.size());
+  shared_ = std::make_unique<Shared>(s, g, c, shading_budget, out);
+  Shared& sh = *shared_;
+  sh.bound = c.rule == TriangleRule::bound;
+  sh.all_lights = (1u << s.lights.size()) - 1u;
+  sh.masked = uses_highlight_mask(c);
+  sh.lights = s.lights.size();
+  sh.tables = choice_tables(s, c, shading_budget);
+  sh.fixed_walk_width = combined_min_width(c);
+  sh.lanes = sh.bound && arithmetic == ChoiceArithmetic::float_lanes;
+  // combined:auto's segments under a point light or a local viewer: L or H moves along them.
+  const bool point_light = std::any_of(s.lights.begin(), s.lights.end(),
+                                       [](const Light& l) { return l.type != LightType::directional; });
+  sh.moving = sh.bound && c.automatic && ((s.viewer_is_local() && !s.lights.empty()) || point_light);
+  static const LaneTable diffuse_chord_lanes =
+      make_lane_table(kChordTableEnd, [](double u) { return gouraud_term_bound(2.0 * std::asin(u), 1.0, true); });
+  const ChoiceTables& tables = *sh.tables;
+  GouraudFitConstants& fit_constants = sh.fit_constants;
+  fit_constants.lights = sh.lights;
+  fit_constants.thresholds = tables.thresholds.data();
+  fit_constants.specular_levels = tables.specular_levels.data();
+  fit_constants.diffuse_levels = tables.diffuse_levels.data();
+  fit_constants.power = tables.power_lanes.data();
+  fit_constants.specular_chord = tables.specular_chord_lanes.data();
+  fit_constants.diffuse_chord = &diffuse_chord_lanes;
+  fit_constants.curvature = tables.curvature.data();
+  fit_constants.slope = tables.slope.data();
+  fit_constants.negligible_specular = float(c.negligible_specular);
+  fit_constants.budget = float(shading_budget);
+}
+
+TriangleChooser::~TriangleChooser() = default;
+
+void TriangleChooser::choose(std::size_t first, std::size_t last) {
+  Shared& sh = *shared_;
+  const Scene& s = sh.s;
+  const ScreenGeometry& g = sh.g;
+  const CombinedConfig& c = sh.c;
+  const double shading_budget = sh.shading_budget;
+  std::vector<TriangleShading>& out = sh.out;
+  const bool bound = sh.bound, masked = sh.masked, lanes = sh.lanes, moving = sh.moving;
+  const unsigned all_lights = sh.all_lights;
+  const std::size_t lights = sh.lights;
+  const int fixed_walk_width = sh.fixed_walk_width;
+  const ChoiceTables* tables = sh.tables.get();
   const std::vector<float>& psi = tables->psi;
   const std::vector<double>& thresholds = tables->thresholds;
   const std::vector<double>&diffuse_levels = tables->diffuse_levels, &specular_levels = tables->specular_levels;
   const std::vector<IncreasingTable>&power = tables->power, &specular_chord = tables->specular_chord;
   static const IncreasingTable diffuse_chord(0.5 * M_PI, [](double phi) { return gouraud_term_bound(phi, 1.0, true); });
   const auto chord_bound = [](const IncreasingTable& t, double phi) { return phi < 0.5 * M_PI ? t.at(phi) : 1.0; };
-  const int fixed_walk_width = combined_min_width(c);
-  std::atomic<std::uint64_t> gouraud{0}, segments{0}, without{0}, terminator{0}, skipped{0};
-  std::atomic<std::uint64_t> largest_bits{0};  // largest expected error among Gouraud triangles (double bits)
-  const bool lanes = bound && arithmetic == ChoiceArithmetic::float_lanes;
-  // combined:auto's segments under a point light or a local viewer: L or H moves along them.
-  const bool point_light = std::any_of(s.lights.begin(), s.lights.end(),
-                                       [](const Light& l) { return l.type != LightType::directional; });
-  const bool moving = bound && c.automatic && ((s.viewer_is_local() && !s.lights.empty()) || point_light);
-  static const LaneTable diffuse_chord_lanes =
-      make_lane_table(kChordTableEnd, [](double u) { return gouraud_term_bound(2.0 * std::asin(u), 1.0, true); });
-  GouraudFitConstants fit_constants;
-  fit_constants.lights = lights;
-  fit_constants.thresholds = thresholds.data();
-  fit_constants.specular_levels = specular_levels.data();
-  fit_constants.diffuse_levels = diffuse_levels.data();
-  fit_constants.power = tables->power_lanes.data();
-  fit_constants.specular_chord = tables->specular_chord_lanes.data();
-  fit_constants.diffuse_chord = &diffuse_chord_lanes;
-  fit_constants.curvature = tables->curvature.data();
-  fit_constants.slope = tables->slope.data();
-  fit_constants.negligible_specular = float(c.negligible_specular);
-  fit_constants.budget = float(shading_budget);
-  parallel_for_ranges(count, 1024, [&](std::size_t first, std::size_t last) {
-    std::uint64_t n_gouraud = 0, n_segments = 0, n_without = 0, n_terminator = 0, n_skipped = 0;
-    double largest = 0.0;
-    FrameLanes frame;
-    LightLanes light[kChoiceMaxLights];
-    GouraudFitLanes fit;
-    TriangleTerms terms;
-    for (std::size_t t = first; t < last; ++t) {
-      const int lane = int((t - first) % kLanes);
-      if (lanes && lane == 0) {  // the next kLanes triangles' bounds and Gouraud tests at once
-        frame_lanes(s, g, t, int(std::min<std::size_t>(kLanes, last - t)), frame);
-        for (std::size_t i = 0; i < lights; ++i) light_lanes(frame, s.lights[i], light[i]);
-        gouraud_fit_lanes(frame, light, fit_constants, fit);
-      }
-      TriangleShading& o = out[t];
-      o = TriangleShading{};  // the vector is reused frame to frame
-      const std::size_t mat = g.material[t];
-      const glm::uvec3 idx = g.triangles[t];
-      const double px = 1.0 / double(kSubpixel);
-      const glm::dvec2 p[3] = {glm::dvec2(g.xy[idx.x]) * px, glm::dvec2(g.xy[idx.y]) * px, glm::dvec2(g.xy[idx.z]) * px};
-      const double width = std::max({p[0].x, p[1].x, p[2].x}) - std::min({p[0].x, p[1].x, p[2].x});
-      const double* threshold = &thresholds[mat * lights];
-      // Clip-made vertices carry interpolated colours and normals: no Gouraud bound for them.
-      const bool clipped = idx.x >= g.outcode.size() || idx.y >= g.outcode.size() || idx.z >= g.outcode.size();
-      unsigned mask = all_lights;
-      bool fits = false;
-      double expected = 0.0;
-      if (!bound) {
-        // The sources' listing decides Gouraud; the mask only when --highlight-test asks for it.
-        const TriangleFrame f = triangle_frame(s, g, t);
-        terms.usable = f.usable;
-        for (int k = 0; k < 3; ++k) terms.n[k] = f.n[k];
-        terms.min_normal = f.usable ? distance_to_origin(f.n[0], f.n[1], f.n[2]) : 0.0;
-        if (masked && f.usable) {
-          mask = 0;
-          for (std::size_t i = 0; i < lights; ++i)
-            if (light_bounds(f, s.lights[i], 2.0).max_n_dot_h > threshold[i]) mask |= 1u << i;
-        }
-        fits = c.rule != TriangleRule::none && sources_choose_gouraud(s, f, c);
-      } else if (lanes) {
-        mask = fit.mask[lane];
-        fits = fit.fits[lane] && !clipped;
-        expected = fit.expected[lane];
-        terms.usable = frame.usable[lane] > 0.0f;  // the rest of terms only if the segments need it, below
-      } else {
-        reference_terms(s, triangle_frame(s, g, t), terms);
-        double spread = -1.0;  // the normals' spread, an acos computed only if a chord bound needs it
-        const auto normal_spread = [&] {
-          if (spread < 0.0) spread = std::acos(std::clamp(terms.cos_spread, -1.0, 1.0));
-          return spread;
-        };
-        if (terms.usable) {
-          mask = 0;
-          for (std::size_t i = 0; i < lights; ++i)
-            if (terms.light[i].max_n_dot_h > threshold[i]) mask |= 1u << i;
-        }
-        // Expected |Gouraud - Phong| in levels, summed term by term (largest channel each), cheapest and most
-        // often decisive first; a light whose specular term the mask drops adds at most negligible_specular.
-        expected = c.negligible_specular * double(lights - std::size_t(__builtin_popcount(mask)));
-        fits = terms.usable && !clipped && expected <= shading_budget;
-        for (std::size_t i = 0; i < lights && fits; ++i) {
-          if (!(mask & (1u << i))) continue;
-          // Both images lie in [0, peak]: the chord bound only when the peak alone does not fit.
-          const double peak = specular_levels[mat * lights + i] * power[mat].at(terms.light[i].max_n_dot_h);
-          // The chord bound takes H constant; where it moves (sin_h_radius > 0) the second-order bound.
-          const double levels = specular_levels[mat * lights + i];
-          expected += expected + peak <= shading_budget
-                          ? peak
-                          : std::min(peak, terms.light[i].sin_h_radius > 0.0
-                                               ? levels * gouraud_moving_specular(terms, terms.light[i], tables->curvature[mat],
-                                                                                  tables->slope[mat])
-                                               : levels * chord_bound(specular_chord[mat], normal_spread() + terms.light[i].h_spread()));
-          fits = expected <= shading_budget;
-        }
-        for (std::size_t i = 0; i < lights && fits; ++i) {
-          const LightTerms& l = terms.light[i];
-          expected += diffuse_levels[mat * lights + i] *
-                      (l.state != 2 ? l.diffuse : l.chord > 0.0 ? 1.0 : chord_bound(diffuse_chord, normal_spread() + l.l_spread()));
-          fits = expected <= shading_budget;
-        }
-      }
-      o.specular_mask = mask;
-      n_without += mask == 0;
-      n_skipped += lights - std::size_t(__builtin_popcount(mask));
-      if (fits) {
-        o.method = TriangleMethod::gouraud;
-        largest = std::max(largest, expected);
-      } else if (!c.automatic) {
-        o.method = width + 1.0 >= double(fixed_walk_width) ? TriangleMethod::segments : TriangleMethod::phong;
-      } else if (terms.usable && c.walk_min_k <= kCombinedMaxK && width + 1.0 >= std::ldexp(2.0, c.walk_min_k)) {
-        if (lanes) lane_terms(lights, frame, light, lane, terms);
-        // Which terms can show decides the segment limit psi (a terminator, a highlight).
-        // The segments' normals reach beyond the triangle (the last one is extrapolated, docs/combined.md):
-        // the kink-free bound holds only if the terminator stays farther than the normals can turn there.
-        const double reach = std::asin(std::min(1.0, double(psi[4 * mat + (mask || !bound ? 2 : 0)]))) + 1e-3;
-        bool crosses_any = !bound;
-        for (std::size_t i = 0; i < lights && !crosses_any; ++i)
-          crosses_any = terms.light[i].state == 2 || terms.light[i].distance <= reach;
-        n_terminator += crosses_any;
-        const int cls = (crosses_any ? 1 : 0) | (mask || !bound ? 2 : 0);
-        o.psi_limit = psi[4 * mat + cls];
-        // The segment length the kernel can use on this triangle: |dN/dx| 2^K <= psi min|N'|.
-        const glm::dvec2 e1 = p[1] - p[0], e2 = p[2] - p[0];
-        const double det = e1.x * e2.y - e2.x * e1.y;
-        const glm::dvec3 ddx = ((terms.n[1] - terms.n[0]) * e2.y - (terms.n[2] - terms.n[0]) * e1.y) * (1.0 / det);
-        const double change = glm::length(ddx);
-        bool bounded = true;
-        if (moving) {
-          // L or H moves along a segment: the old limit assumed them constant; the second-order bound replaces it.
-          const glm::dvec3 w0(g.world[idx.x]), w1(g.world[idx.y]), w2(g.world[idx.z]);
-          const glm::dvec3 dpdx = ((w1 - w0) * e2.y - (w2 - w0) * e1.y) * (1.0 / det);
-          // The kernel's normal plane is made of the vertex normals as they are (clip-made ones unnormalized).
-          const glm::dvec3 n0(g.normal[idx.x]), n1(g.normal[idx.y]), n2(g.normal[idx.z]);
-          const double kernel_change = glm::length(((n1 - n0) * e2.y - (n2 - n0) * e1.y) * (1.0 / det));
-          const MovingLimit m = moving_psi_limit(
-              s, g, t, terms, mask, shading_budget - c.negligible_specular * double(lights - std::size_t(__builtin_popcount(mask))),
-              &diffuse_levels[mat * lights], &specular_levels[mat * lights], tables->curvature[mat], tables->slope[mat],
-              kernel_change, dpdx);
-          o.psi_limit = float(m.psi);
-          n_terminator = n_terminator - std::uint64_t(crosses_any) + std::uint64_t(m.terminator);
-          bounded = m.psi > 0.0;
-        }
-        const double allowed = double(o.psi_limit) * terms.min_normal;
-        int k = 0;
-        while (k < kCombinedMaxK && change * double(2 << k) <= allowed) ++k;
-        o.method = bounded && k >= c.walk_min_k && width + 1.0 >= double(2 << k) ? TriangleMethod::segments
-                                                                                 : TriangleMethod::phong;
-      } else {
-        o.method = TriangleMethod::phong;
-      }
-      n_gouraud += o.method == TriangleMethod::gouraud;
-      n_segments += o.method == TriangleMethod::segments;
+  const GouraudFitConstants& fit_constants = sh.fit_constants;
+  std::atomic<std::uint64_t>&gouraud = sh.gouraud, &segments = sh.segments, &without = sh.without,
+  &terminator = sh.terminator, &skipped = sh.skipped, &largest_bits = sh.largest_bits;
+  std::uint64_t n_gouraud = 0, n_segments = 0, n_without = 0, n_terminator = 0, n_skipped = 0;
+  double largest = 0.0;
+  FrameLanes frame;
+  LightLanes light[kChoiceMaxLights];
+  GouraudFitLanes fit;
+  TriangleTerms terms;
+  for (std::size_t t = first; t < last; ++t) {
+    const int lane = int((t - first) % kLanes);
+    if (lanes && lane == 0) {  // the next kLanes triangles' bounds and Gouraud tests at once
+      frame_lanes(s, g, t, int(std::min<std::size_t>(kLanes, last - t)), frame);
+      for (std::size_t i = 0; i < lights; ++i) light_lanes(frame, s.lights[i], light[i]);
+      gouraud_fit_lanes(frame, light, fit_constants, fit);
     }
-    gouraud += n_gouraud;
-    segments += n_segments;
-    without += n_without;
-    terminator += n_terminator;
-    skipped += n_skipped;
-    // A positive double's bits order like the double: an atomic max on the bits.
-    std::uint64_t bits, seen = largest_bits.load();
-    std::memcpy(&bits, &largest, sizeof bits);
-    while (bits > seen && !largest_bits.compare_exchange_weak(seen, bits)) {
+    TriangleShading& o = out[t];
+    o = TriangleShading{};  // the vector is reused frame to frame
+    const std::size_t mat = g.material[t];
+    const glm::uvec3 idx = g.triangles[t];
+    const double px = 1.0 / double(kSubpixel);
+    const glm::dvec2 p[3] = {glm::dvec2(g.xy[idx.x]) * px, glm::dvec2(g.xy[idx.y]) * px, glm::dvec2(g.xy[idx.z]) * px};
+    const double width = std::max({p[0].x, p[1].x, p[2].x}) - std::min({p[0].x, p[1].x, p[2].x});
+    const double* threshold = &thresholds[mat * lights];
+    // Clip-made vertices carry interpolated colours and normals: no Gouraud bound for them.
+    const bool clipped = idx.x >= g.outcode.size() || idx.y >= g.outcode.size() || idx.z >= g.outcode.size();
+    unsigned mask = all_lights;
+    bool fits = false;
+    double expected = 0.0;
+    if (!bound) {
+      // The sources' listing decides Gouraud; the mask only when --highlight-test asks for it.
+      const TriangleFrame f = triangle_frame(s, g, t);
+      terms.usable = f.usable;
+      for (int k = 0; k < 3; ++k) terms.n[k] = f.n[k];
+      terms.min_normal = f.usable ? distance_to_origin(f.n[0], f.n[1], f.n[2]) : 0.0;
+      if (masked && f.usable) {
+        mask = 0;
+        for (std::size_t i = 0; i < lights; ++i)
+          if (light_bounds(f, s.lights[i], 2.0).max_n_dot_h > threshold[i]) mask |= 1u << i;
+      }
+      fits = c.rule != TriangleRule::none && sources_choose_gouraud(s, f, c);
+    } else if (lanes) {
+      mask = fit.mask[lane];
+      fits = fit.fits[lane] && !clipped;
+      expected = fit.expected[lane];
+      terms.usable = frame.usable[lane] > 0.0f;  // the rest of terms only if the segments need it, below
+    } else {
+      reference_terms(s, triangle_frame(s, g, t), terms);
+      double spread = -1.0;  // the normals' spread, an acos computed only if a chord bound needs it
+      const auto normal_spread = [&] {
+        if (spread < 0.0) spread = std::acos(std::clamp(terms.cos_spread, -1.0, 1.0));
+        return spread;
+      };
+      if (terms.usable) {
+        mask = 0;
+        for (std::size_t i = 0; i < lights; ++i)
+          if (terms.light[i].max_n_dot_h > threshold[i]) mask |= 1u << i;
+      }
+      // Expected |Gouraud - Phong| in levels, summed term by term (largest channel each), cheapest and most
+      // often decisive first; a light whose specular term the mask drops adds at most negligible_specular.
+      expected = c.negligible_specular * double(lights - std::size_t(__builtin_popcount(mask)));
+      fits = terms.usable && !clipped && expected <= shading_budget;
+      for (std::size_t i = 0; i < lights && fits; ++i) {
+        if (!(mask & (1u << i))) continue;
+        // Both images lie in [0, peak]: the chord bound only when the peak alone does not fit.
+        const double peak = specular_levels[mat * lights + i] * power[mat].at(terms.light[i].max_n_dot_h);
+        // The chord bound takes H constant; where it moves (sin_h_radius > 0) the second-order bound.
+        const double levels = specular_levels[mat * lights + i];
+        expected += expected + peak <= shading_budget
+                        ? peak
+                        : std::min(peak, terms.light[i].sin_h_radius > 0.0
+                                             ? levels * gouraud_moving_specular(terms, terms.light[i], tables->curvature[mat],
+                                                                                tables->slope[mat])
+                                             : levels * chord_bound(specular_chord[mat], normal_spread() + terms.light[i].h_spread()));
+        fits = expected <= shading_budget;
+      }
+      for (std::size_t i = 0; i < lights && fits; ++i) {
+        const LightTerms& l = terms.light[i];
+        expected += diffuse_levels[mat * lights + i] *
+                    (l.state != 2 ? l.diffuse : l.chord > 0.0 ? 1.0 : chord_bound(diffuse_chord, normal_spread() + l.l_spread()));
+        fits = expected <= shading_budget;
+      }
     }
-  });
+    o.specular_mask = mask;
+    n_without += mask == 0;
+    n_skipped += lights - std::size_t(__builtin_popcount(mask));
+    if (fits) {
+      o.method = TriangleMethod::gouraud;
+      largest = std::max(largest, expected);
+    } else if (!c.automatic) {
+      o.method = width + 1.0 >= double(fixed_walk_width) ? TriangleMethod::segments : TriangleMethod::phong;
+    } else if (terms.usable && c.walk_min_k <= kCombinedMaxK && width + 1.0 >= std::ldexp(2.0, c.walk_min_k)) {
+      if (lanes) lane_terms(lights, frame, light, lane, terms);
+      // Which terms can show decides the segment limit psi (a terminator, a highlight).
+      // The segments' normals reach beyond the triangle (the last one is extrapolated, docs/combined.md):
+      // the kink-free bound holds only if the terminator stays farther than the normals can turn there.
+      const double reach = std::asin(std::min(1.0, double(psi[4 * mat + (mask || !bound ? 2 : 0)]))) + 1e-3;
+      bool crosses_any = !bound;
+      for (std::size_t i = 0; i < lights && !crosses_any; ++i)
+        crosses_any = terms.light[i].state == 2 || terms.light[i].distance <= reach;
+      n_terminator += crosses_any;
+      const int cls = (crosses_any ? 1 : 0) | (mask || !bound ? 2 : 0);
+      o.psi_limit = psi[4 * mat + cls];
+      // The segment length the kernel can use on this triangle: |dN/dx| 2^K <= psi min|N'|.
+      const glm::dvec2 e1 = p[1] - p[0], e2 = p[2] - p[0];
+      const double det = e1.x * e2.y - e2.x * e1.y;
+      const glm::dvec3 ddx = ((terms.n[1] - terms.n[0]) * e2.y - (terms.n[2] - terms.n[0]) * e1.y) * (1.0 / det);
+      const double change = glm::length(ddx);
+      bool bounded = true;
+      if (moving) {
+        // L or H moves along a segment: the old limit assumed them constant; the second-order bound replaces it.
+        const glm::dvec3 w0(g.world[idx.x]), w1(g.world[idx.y]), w2(g.world[idx.z]);
+        const glm::dvec3 dpdx = ((w1 - w0) * e2.y - (w2 - w0) * e1.y) * (1.0 / det);
+        // The kernel's normal plane is made of the vertex normals as they are (clip-made ones unnormalized).
+        const glm::dvec3 n0(g.normal[idx.x]), n1(g.normal[idx.y]), n2(g.normal[idx.z]);
+        const double kernel_change = glm::length(((n1 - n0) * e2.y - (n2 - n0) * e1.y) * (1.0 / det));
+        const MovingLimit m = moving_psi_limit(
+            s, g, t, terms, mask, shading_budget - c.negligible_specular * double(lights - std::size_t(__builtin_popcount(mask))),
+            &diffuse_levels[mat * lights], &specular_levels[mat * lights], tables->curvature[mat], tables->slope[mat],
+            kernel_change, dpdx);
+        o.psi_limit = float(m.psi);
+        n_terminator = n_terminator - std::uint64_t(crosses_any) + std::uint64_t(m.terminator);
+        bounded = m.psi > 0.0;
+      }
+      const double allowed = double(o.psi_limit) * terms.min_normal;
+      int k = 0;
+      while (k < kCombinedMaxK && change * double(2 << k) <= allowed) ++k;
+      o.method = bounded && k >= c.walk_min_k && width + 1.0 >= double(2 << k) ? TriangleMethod::segments
+                                                                               : TriangleMethod::phong;
+    } else {
+      o.method = TriangleMethod::phong;
+    }
+    n_gouraud += o.method == TriangleMethod::gouraud;
+    n_segments += o.method == TriangleMethod::segments;
+  }
+  gouraud += n_gouraud;
+  segments += n_segments;
+  without += n_without;
+  terminator += n_terminator;
+  skipped += n_skipped;
+  // A positive double's bits order like the double: an atomic max on the bits.
+  std::uint64_t bits, seen = largest_bits.load();
+  std::memcpy(&bits, &largest, sizeof bits);
+  while (bits > seen && !largest_bits.compare_exchange_weak(seen, bits)) {
+  }
+}
+
+TriangleChoiceStats TriangleChooser::stats() const {
+  const Shared& sh = *shared_;
   TriangleChoiceStats st;
-  st.triangles = count;
-  st.gouraud = gouraud.load();
-  st.segments = segments.load();
-  st.without_highlight = without.load();
-  st.terminator = terminator.load();
-  st.light_terms_skipped = skipped.load();
-  const std::uint64_t bits = largest_bits.load();
+  st.triangles = sh.g.triangles.size();
+  st.gouraud = sh.gouraud.load();
+  st.segments = sh.segments.load();
+  st.without_highlight = sh.without.load();
+  st.terminator = sh.terminator.load();
+  st.light_terms_skipped = sh.skipped.load();
+  const std::uint64_t bits = sh.largest_bits.load();
   std::memcpy(&st.largest_expected_levels, &bits, sizeof bits);
   return st;
 }
 
-void apply_triangle_choice(const std::vector<TriangleShading>& choice, float* attributes, std::size_t stride) {
-  for (std::size_t t = 0; t < choice.size(); ++t) {
+TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry& g, const CombinedConfig& c,
+                                            double shading_budget, std::vector<TriangleShading>& out,
+                                            ChoiceArithmetic arithmetic) {
+  TriangleChooser chooser(s, g, c, shading_budget, out, arithmetic);
+  parallel_for_ranges(g.triangles.size(), 1024, [&](std::size_t first, std::size_t last) { chooser.choose(first, last); });
+  return chooser.stats();
+}
+
+void apply_triangle_choice(const std::vector<TriangleShading>& choice, float* attributes, std::size_t stride,
+                           std::size_t first, std::size_t last) {
+  for (std::size_t t = first; t < last; ++t) {
     float* a = attributes + t * stride;
     a[PHONG_HIGHLIGHT_SLOT] = float(choice[t].specular_mask);
     a[PHONG_METHOD_SLOT] = float(int(choice[t].method));

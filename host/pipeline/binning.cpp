@@ -47,7 +47,8 @@ void Binner::for_each_tile_of(const TriangleGeometry& t, Visit visit) const {
   }
 }
 
-void Binner::begin(const TriangleGeometry* tris, std::size_t n, int width, int height, int tile_size) {
+void Binner::begin(const TriangleGeometry* tris, std::size_t n, int width, int height, int tile_size,
+                   std::size_t min_chunk) {
   tris_ = tris;
   n_ = n;
   tile_size_ = tile_size;
@@ -56,11 +57,11 @@ void Binner::begin(const TriangleGeometry* tris, std::size_t n, int width, int h
   const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
   // Chunks are contiguous ranges of triangles; their lists are concatenated in chunk order per tile,
   // so the result is in primitive order whatever the number of threads. About four per thread (a
-  // thread slowed by other work leaves its share to the others), each of at least 2048 triangles
+  // thread slowed by other work leaves its share to the others), each of at least min_chunk triangles
   // (the per-chunk counters, tiles x 4 bytes, are summed over all chunks; setup runs in these chunks
-  // too, ~100 ns a triangle, and a chunk must be worth waking a thread for).
-  const std::size_t chunks =
-      std::max<std::size_t>(1, std::min<std::size_t>(4 * std::size_t(host_threads()), n / 2048));
+  // too, ~50 ns a triangle, and a chunk must be worth waking a thread for).
+  const std::size_t chunks = std::max<std::size_t>(
+      1, std::min<std::size_t>(4 * std::size_t(host_threads()), n / std::max<std::size_t>(1, min_chunk)));
   chunk_first_.resize(chunks + 1);
   for (std::size_t c = 0; c <= chunks; ++c) chunk_first_[c] = n * c / chunks;
   chunk_cursor_.assign(chunks * tiles, 0);
@@ -111,7 +112,8 @@ void Binner::count(const TriangleGeometry* tris, std::size_t n, int width, int h
 
 void Binner::fill(std::uint32_t* out) {
   const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
-  parallel_for(chunks(), [&](std::size_t c) {
+  // The fill alone is worth a second thread only where its records are (chunks may be smaller, for setup).
+  parallel_for_if(n_ >= 2 * kMinChunk, chunks(), [&](std::size_t c) {
     std::uint32_t* cursor = &chunk_cursor_[c * tiles];
     const std::size_t last = chunk_first_[c + 1];
     for (std::size_t i = chunk_first_[c]; i < last; ++i) {

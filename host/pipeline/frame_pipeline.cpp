@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <optional>
 
 #include "parashade/combined.hpp"
 #include "parashade/geometry_stage.hpp"
@@ -230,6 +231,7 @@ void FramePipeline::setup(const Scene& scene, const FrameConfig& config, const F
   FrameTimings& t = frame_.timings;
   FrameStats& s = frame_.stats;
   const Method method = config.method;
+  const auto setup_started = Clock::now();
   counted_ = false;
   if (config.splits_triangles()) {
     // Setup per triangle, then each record split into its sub-triangles' records.
@@ -244,37 +246,59 @@ void FramePipeline::setup(const Scene& scene, const FrameConfig& config, const F
                                          out.triangles, out.attributes, out.fixed, out.leaves);
     return;
   }
-  const bool choose = config.chooses_per_triangle();
-  if (choose) {
-    const auto c0 = Clock::now();
-    s.choice = choose_triangle_methods(scene, geometry_, config.combined, combined_shading_budget(config.combined),
-                                       choice_);
-    t.choice_ms = ms_since(c0);
-  }
-  const TriangleShading* gouraud = choose ? choice_.data() : nullptr;
+  const bool choose = config.chooses_per_triangle();  // never with streamed bands: records are the triangles
+  const double budget = combined_shading_budget(config.combined);
   counted_ = !config.dda_coverage;  // DDA coverage changes the boxes after setup
   if (counted_) {
-    // Binning's count pass runs on each range of records right after its setup, while they are in cache.
+    // Binning's count pass runs on each range of records right after its setup, while they are in cache,
+    // and the per-triangle choice right before it: one wake-up of the host threads for all three.
+    std::optional<TriangleChooser> chooser;
+    if (choose) chooser.emplace(scene, geometry_, config.combined, budget, choice_);
+    const TriangleShading* gouraud = choose ? choice_.data() : nullptr;
     const std::size_t n = frame_.records;
-    binner_.begin(out.triangles, n, scene.width, scene.height, config.tile_size);
-    std::atomic<std::uint64_t> empty{0};
+    // A chunk is worth waking a thread for at ~0.1 ms of work: the choice costs about twice setup's ~50 ns a
+    // triangle (bench_triangle_choice).
+    binner_.begin(out.triangles, n, scene.width, scene.height, config.tile_size,
+                  chooser ? Binner::kMinChunk / 3 : Binner::kMinChunk);
+    std::atomic<std::uint64_t> empty{0}, choosing_ns{0}, working_ns{0};
     parallel_for(binner_.chunks(), [&](std::size_t c) {
       constexpr std::size_t kRange = 512;  // records in L1/L2 between setup and counting
       std::uint64_t e = 0;
+      const auto c0 = Clock::now();
+      std::chrono::nanoseconds in_choice{0};
       for (std::size_t first = binner_.chunk_first(c), end = binner_.chunk_first(c + 1); first < end; first += kRange) {
         const std::size_t last = std::min(end, first + kRange);
+        if (chooser) {
+          const auto r0 = Clock::now();
+          chooser->choose(first, last);
+          in_choice += Clock::now() - r0;
+        }
         e += setup_triangle_range(geometry_, method, out.triangles, out.attributes, out.fixed, gouraud, first, last, order);
+        if (chooser) apply_triangle_choice(choice_, out.attributes, PHONG_ATTR_FLOATS, first, last);
         binner_.count_range(c, first, last);
       }
       empty += e;
+      choosing_ns += std::uint64_t(in_choice.count());
+      working_ns += std::uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - c0).count());
     });
     s.triangles_without_pixels = empty.load();
+    if (chooser) {
+      s.choice = chooser->stats();
+      // The choice's share of the threads' time in this loop, as a share of setup's wall time so far.
+      t.choice_ms = working_ns ? ms_since(setup_started) * double(choosing_ns) / double(working_ns) : 0.0;
+    }
   } else {
+    if (choose) {
+      const auto c0 = Clock::now();
+      s.choice = choose_triangle_methods(scene, geometry_, config.combined, budget, choice_);
+      t.choice_ms = ms_since(c0);
+    }
     s.triangles_without_pixels =
-        setup_triangles(geometry_, method, out.triangles, out.attributes, out.fixed, gouraud).without_pixels;
+        setup_triangles(geometry_, method, out.triangles, out.attributes, out.fixed, choose ? choice_.data() : nullptr)
+            .without_pixels;
+    if (choose) apply_triangle_choice(choice_, out.attributes, PHONG_ATTR_FLOATS, 0, choice_.size());
   }
   if (choose) {
-    apply_triangle_choice(choice_, out.attributes, PHONG_ATTR_FLOATS);
     if (uses_highlight_mask(config.combined))
       s.highlight = {s.choice->triangles, s.choice->without_highlight, s.choice->light_terms_skipped};
   } else if (method == Method::combined && config.combined.highlight_test) {

@@ -21,7 +21,10 @@ class Binner {
   // begin(), then count_range() over consecutive ranges covering every chunk (a chunk's ranges in order,
   // by one thread at a time; different chunks on any threads), then finish(). `tris` must hold the
   // records of a range by the time it is counted, and all of them at fill().
-  void begin(const TriangleGeometry* tris, std::size_t n, int width, int height, int tile_size);
+  // Chunks hold at least min_chunk records (each is worth waking a thread for: kMinChunk for setup alone).
+  static constexpr std::size_t kMinChunk = 2048;
+  void begin(const TriangleGeometry* tris, std::size_t n, int width, int height, int tile_size,
+             std::size_t min_chunk = kMinChunk);
   std::size_t chunks() const { return chunk_first_.size() - 1; }
   std::size_t chunk_first(std::size_t chunk) const { return chunk_first_[chunk]; }  // chunk_first(chunks()) == n
   void count_range(std::size_t chunk, std::size_t first, std::size_t last);

@@ -15,7 +15,9 @@
 //    differ by at most q and p between vertices; Phong otherwise. Thresholds m, q, p = 0.9, 0.004, 0.008.
 //  * sources-literal: the listing as printed, whose first test is inverted (it returns Phong when
 //    |n_i.n_j| > m, i.e. when the normals are close): Gouraud only for triangles whose normals differ.
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -65,8 +67,25 @@ TriangleChoiceStats choose_triangle_methods(const Scene& s, const ScreenGeometry
                                             double shading_budget, std::vector<TriangleShading>& out,
                                             ChoiceArithmetic arithmetic = ChoiceArithmetic::float_lanes);
 
-// Writes the choice into the Phong records (kernels/triangle_record.h: PHONG_HIGHLIGHT_SLOT,
-// PHONG_METHOD_SLOT, PHONG_PSI_SLOT). The colour planes of Gouraud triangles are setup's.
-void apply_triangle_choice(const std::vector<TriangleShading>& choice, float* attributes, std::size_t stride);
+// The same choice range by range, for a caller that runs it inside its own parallel loop: the frame's setup
+// chooses each range right before setting it up, so the two share one wake-up of the host threads.
+// choose() may run on disjoint ranges from several threads at once; stats() once every triangle is chosen.
+class TriangleChooser {
+ public:
+  TriangleChooser(const Scene& s, const ScreenGeometry& g, const CombinedConfig& c, double shading_budget,
+                  std::vector<TriangleShading>& out, ChoiceArithmetic arithmetic = ChoiceArithmetic::float_lanes);
+  ~TriangleChooser();
+  void choose(std::size_t first, std::size_t last);  // out[first .. last)
+  TriangleChoiceStats stats() const;
+
+ private:
+  struct Shared;
+  std::unique_ptr<Shared> shared_;
+};
+
+// Writes the choice of triangles first .. last - 1 into their Phong records (kernels/triangle_record.h:
+// PHONG_HIGHLIGHT_SLOT, PHONG_METHOD_SLOT, PHONG_PSI_SLOT). The colour planes of Gouraud triangles are setup's.
+void apply_triangle_choice(const std::vector<TriangleShading>& choice, float* attributes, std::size_t stride,
+                           std::size_t first, std::size_t last);
 
 }  // namespace parashade

@@ -157,6 +157,38 @@ TEST_P(TriangleChoiceBound, FloatLanesAgreeWithTheDoubleReference) {
   EXPECT_NEAR(a.largest_expected_levels, b.largest_expected_levels, 0.05 * k.budget);
 }
 
+// The frame's setup chooses range by range (TriangleChooser), in ranges of its own chunks: any ranges, in any
+// order, must give every triangle the choice and the counts of the whole at once, in both arithmetics (the
+// lanes gather kLanes triangles from each range's start, so uneven ranges move triangles between lanes).
+TEST_P(TriangleChoiceBound, RangesInAnyOrderChooseAsTheWhole) {
+  for (const ChoiceArithmetic arithmetic : {ChoiceArithmetic::float_lanes, ChoiceArithmetic::double_reference}) {
+    SCOPED_TRACE(arithmetic == ChoiceArithmetic::float_lanes ? "float lanes" : "double reference");
+    std::vector<TriangleShading> whole, ranged;
+    const TriangleChoiceStats a = choose_triangle_methods(s, g, c, k.budget, whole, arithmetic);
+    TriangleChooser chooser(s, g, c, k.budget, ranged, arithmetic);
+    std::vector<std::size_t> cuts = {0};  // ranges of 1 to 41 triangles, chosen last to first
+    for (std::size_t at = 0, step = 1; at < g.triangles.size(); step = step % 37 + 5) {
+      at = std::min(g.triangles.size(), at + step);
+      cuts.push_back(at);
+    }
+    for (std::size_t r = cuts.size() - 1; r > 0; --r) chooser.choose(cuts[r - 1], cuts[r]);
+    const TriangleChoiceStats b = chooser.stats();
+    ASSERT_EQ(ranged.size(), whole.size());
+    std::size_t differs = 0;
+    for (std::size_t t = 0; t < whole.size(); ++t)
+      differs += ranged[t].method != whole[t].method || ranged[t].specular_mask != whole[t].specular_mask ||
+                 ranged[t].psi_limit != whole[t].psi_limit;
+    EXPECT_EQ(differs, 0u) << "of " << whole.size() << " triangles";
+    EXPECT_EQ(b.triangles, a.triangles);
+    EXPECT_EQ(b.gouraud, a.gouraud);
+    EXPECT_EQ(b.segments, a.segments);
+    EXPECT_EQ(b.without_highlight, a.without_highlight);
+    EXPECT_EQ(b.terminator, a.terminator);
+    EXPECT_EQ(b.light_terms_skipped, a.light_terms_skipped);
+    EXPECT_EQ(b.largest_expected_levels, a.largest_expected_levels);
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, TriangleChoiceBound,
                          ::testing::Values(Case{1, 0.0f, 40.0f, 0.5}, Case{2, 0.0f, 40.0f, 2.0},
                                            Case{3, 0.02f, 10.0f, 1.0}, Case{4, 0.05f, 200.0f, 1.0},
