@@ -3,6 +3,7 @@
 #include "parashade/lane_vectors.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -122,99 +123,120 @@ __attribute__((target_clones("avx2", "default"))) void frame_lanes(const Scene& 
 namespace {
 
 // The per-light bounds are written on GCC's vector types (lane_vectors.hpp) rather than left to the
-// auto-vectorizer: with its many selects GCC gave up on the loop ("control flow in loop").
-using namespace lanes;
+// auto-vectorizer: with its many selects GCC gave up on the loop ("control flow in loop"). W lanes a vector.
+template <int W>
+struct LightLanesOf : lanes::Lanes<W> {
+  PARASHADE_USING_LANES(W);
 
-// cone_gap on lanes (light_bounds.cpp, by cosines): largest N.D over the normals' cone (cos_n, sin_n,
-// centre c) and D within the angle beta (sin beta = s) of the unit d.
-__attribute__((always_inline)) inline vf cone_gap(vf cos_n, vf sin_n, vf dx, vf dy, vf dz, vf cx, vf cy, vf cz, vf s) {
-  const vf cos_b = vsqrt0(1.0f - s * s);
-  const vf cos_r = cos_n * cos_b - sin_n * s, sin_r = sin_n * cos_b + cos_n * s;
-  const vf cos_t = cx * dx + cy * dy + cz * dz, sin_t = vsqrt0(1.0f - cos_t * cos_t);
-  const vi gap = (cos_n > 0.0f) & (s < 1.0f) & (cos_t < cos_r);
-  return gap ? vmin(splat(1.0f), cos_t * cos_r + sin_t * sin_r + 1e-5f) : splat(1.0f);
-}
+  // cone_gap on lanes (light_bounds.cpp, by cosines): largest N.D over the normals' cone (cos_n, sin_n,
+  // centre c) and D within the angle beta (sin beta = s) of the unit d.
+  static PARASHADE_LANE vf cone_gap(vf cos_n, vf sin_n, vf dx, vf dy, vf dz, vf cx, vf cy, vf cz, vf s) {
+    const vf cos_b = vsqrt0(1.0f - s * s);
+    const vf cos_r = cos_n * cos_b - sin_n * s, sin_r = sin_n * cos_b + cos_n * s;
+    const vf cos_t = cx * dx + cy * dy + cz * dz, sin_t = vsqrt0(1.0f - cos_t * cos_t);
+    const vi gap = (cos_n > 0.0f) & (s < 1.0f) & (cos_t < cos_r);
+    return gap ? vmin(splat(1.0f), cos_t * cos_r + sin_t * sin_r + 1e-5f) : splat(1.0f);
+  }
 
-// Always inlined: each clone of light_lanes below then compiles it for its own target. As a function of its
-// own it was compiled once, for the default target, and light_lanes' AVX2 clone called that SSE code.
-template <bool directional>
-__attribute__((always_inline)) inline void light_lanes_of(const FrameLanes& f, const glm::vec3 dir, const glm::vec3 pos,
-                                                           LightLanes& out) {
-  for (int at = 0; at < kLanes; at += kWidth) {
-    const vf radius = load(f.radius, at);
-    // L at the centroid, within a chord over the triangle (light_bounds.hpp).
-    const vf dx = pos.x - load(f.centroid[0], at), dy = pos.y - load(f.centroid[1], at), dz = pos.z - load(f.centroid[2], at);
-    const vf dist = vsqrt(dx * dx + dy * dy + dz * dz);
-    const vf inv = dist > 0.0f ? 1.0f / dist : splat(0.0f);
-    const vi near = directional ? vi{} : ~(dist > 2.0f * radius);  // also where dist is NaN
-    const vf lx = directional ? splat(dir.x) : dx * inv, ly = directional ? splat(dir.y) : dy * inv,
-             lz = directional ? splat(dir.z) : dz * inv;
-    const vf chord = directional ? splat(0.0f) : (near ? splat(2.0f) : 2.0f * radius * inv * 1.00001f);
-    store(out.chord, at, chord);
-    const vf ch = load(f.cos_half, at), sh = load(f.sin_half, at);
-    const vf ncx = load(f.normal_centre[0], at), ncy = load(f.normal_centre[1], at), ncz = load(f.normal_centre[2], at);
-    const vi usable = (load(f.usable, at) > 0.0f) & ~near;
-    const vf max_n_dot_l = usable ? cone_gap(ch, sh, lx, ly, lz, ncx, ncy, ncz, chord * vsqrt0(1.0f - 0.25f * chord * chord))
-                                  : splat(1.0f);
-    // H within asin(ratio) of normalize(c_L + c_V).
-    const vf hx = lx + load(f.view[0], at), hy = ly + load(f.view[1], at), hz = lz + load(f.view[2], at);
-    const vf hl = vsqrt(hx * hx + hy * hy + hz * hz);
-    const vi h_ok = hl > 0.0f;
-    const vf hinv = h_ok ? 1.0f / hl : splat(0.0f);
-    const vf ratio = h_ok ? (chord + load(f.view_chord, at)) * hinv * 1.00001f : splat(1.0f);
-    const vi h_bounded = usable & (ratio < 1.0f);
-    store(out.sin_h_radius, at, h_bounded ? ratio : splat(1.0f));
-    // |L + V| >= |c_L + c_V| - chord_L - chord_V, rounded down.
-    store(out.half_min, at, h_bounded ? vmax(splat(0.0f), hl * (1.0f - ratio) * 0.9999f - 1e-6f) : splat(0.0f));
-    store(out.max_n_dot_h, at, h_bounded ? cone_gap(ch, sh, hx * hinv, hy * hinv, hz * hinv, ncx, ncy, ncz, vmin(ratio, splat(1.0f)))
-                                     : splat(1.0f));
-    // The terminator: N'.D' = sum b_i b_j n_i.d_j is positive (negative) where every pair is; float
-    // rounding is kept out by a margin relative to |d|.
-    vf n[3][3];
-    for (int k = 0; k < 3; ++k)
-      for (int c = 0; c < 3; ++c) n[k][c] = load(f.n[k][c], at);
-    vf low_c = splat(1.0f), high_c = splat(-1.0f);
-    for (int k = 0; k < 3; ++k) {
-      const vf v = n[k][0] * lx + n[k][1] * ly + n[k][2] * lz;
-      low_c = vmin(low_c, v);
-      high_c = vmax(high_c, v);
-    }
-    vf lo = low_c, hi = high_c;
-    if (!directional) {  // n_i.(P - w_k) for the nine pairs
-      lo = splat(1e30f);
-      hi = splat(-1e30f);
-      for (int w = 0; w < 3; ++w) {
-        const vf qx = pos.x - load(f.w[w][0], at), qy = pos.y - load(f.w[w][1], at), qz = pos.z - load(f.w[w][2], at);
-        for (int k = 0; k < 3; ++k) {
-          const vf v = n[k][0] * qx + n[k][1] * qy + n[k][2] * qz;
-          lo = vmin(lo, v);
-          hi = vmax(hi, v);
+  template <bool directional>
+  static PARASHADE_LANE void of(const FrameLanes& f, const glm::vec3 dir, const glm::vec3 pos, LightLanes& out) {
+    for (int at = 0; at < kLanes; at += kWidth) {
+      const vf radius = load(f.radius, at);
+      // L at the centroid, within a chord over the triangle (light_bounds.hpp).
+      const vf dx = pos.x - load(f.centroid[0], at), dy = pos.y - load(f.centroid[1], at), dz = pos.z - load(f.centroid[2], at);
+      const vf dist = vsqrt(dx * dx + dy * dy + dz * dz);
+      const vf inv = dist > 0.0f ? 1.0f / dist : splat(0.0f);
+      const vi near = directional ? vi{} : ~(dist > 2.0f * radius);  // also where dist is NaN
+      const vf lx = directional ? splat(dir.x) : dx * inv, ly = directional ? splat(dir.y) : dy * inv,
+               lz = directional ? splat(dir.z) : dz * inv;
+      const vf chord = directional ? splat(0.0f) : (near ? splat(2.0f) : 2.0f * radius * inv * 1.00001f);
+      store(out.chord, at, chord);
+      const vf ch = load(f.cos_half, at), sh = load(f.sin_half, at);
+      const vf ncx = load(f.normal_centre[0], at), ncy = load(f.normal_centre[1], at), ncz = load(f.normal_centre[2], at);
+      const vi usable = (load(f.usable, at) > 0.0f) & ~near;
+      const vf max_n_dot_l = usable ? cone_gap(ch, sh, lx, ly, lz, ncx, ncy, ncz, chord * vsqrt0(1.0f - 0.25f * chord * chord))
+                                    : splat(1.0f);
+      // H within asin(ratio) of normalize(c_L + c_V).
+      const vf hx = lx + load(f.view[0], at), hy = ly + load(f.view[1], at), hz = lz + load(f.view[2], at);
+      const vf hl = vsqrt(hx * hx + hy * hy + hz * hz);
+      const vi h_ok = hl > 0.0f;
+      const vf hinv = h_ok ? 1.0f / hl : splat(0.0f);
+      const vf ratio = h_ok ? (chord + load(f.view_chord, at)) * hinv * 1.00001f : splat(1.0f);
+      const vi h_bounded = usable & (ratio < 1.0f);
+      store(out.sin_h_radius, at, h_bounded ? ratio : splat(1.0f));
+      // |L + V| >= |c_L + c_V| - chord_L - chord_V, rounded down.
+      store(out.half_min, at, h_bounded ? vmax(splat(0.0f), hl * (1.0f - ratio) * 0.9999f - 1e-6f) : splat(0.0f));
+      store(out.max_n_dot_h, at, h_bounded ? cone_gap(ch, sh, hx * hinv, hy * hinv, hz * hinv, ncx, ncy, ncz, vmin(ratio, splat(1.0f)))
+                                       : splat(1.0f));
+      // The terminator: N'.D' = sum b_i b_j n_i.d_j is positive (negative) where every pair is; float
+      // rounding is kept out by a margin relative to |d|.
+      vf n[3][3];
+      for (int k = 0; k < 3; ++k)
+        for (int c = 0; c < 3; ++c) n[k][c] = load(f.n[k][c], at);
+      vf low_c = splat(1.0f), high_c = splat(-1.0f);
+      for (int k = 0; k < 3; ++k) {
+        const vf v = n[k][0] * lx + n[k][1] * ly + n[k][2] * lz;
+        low_c = vmin(low_c, v);
+        high_c = vmax(high_c, v);
+      }
+      vf lo = low_c, hi = high_c;
+      if (!directional) {  // n_i.(P - w_k) for the nine pairs
+        lo = splat(1e30f);
+        hi = splat(-1e30f);
+        for (int w = 0; w < 3; ++w) {
+          const vf qx = pos.x - load(f.w[w][0], at), qy = pos.y - load(f.w[w][1], at), qz = pos.z - load(f.w[w][2], at);
+          for (int k = 0; k < 3; ++k) {
+            const vf v = n[k][0] * qx + n[k][1] * qy + n[k][2] * qz;
+            lo = vmin(lo, v);
+            hi = vmax(hi, v);
+          }
         }
       }
+      const vf margin = directional ? splat(1e-5f) : 1e-5f * (dist + radius + 1.0f);
+      const vi lit = usable & (lo > margin), dark = usable & (hi < -margin) & ~lit;
+      const vf lit_w = weight(lit), dark_w = weight(dark);
+      store(out.state, at, 2.0f - 2.0f * lit_w - dark_w);
+      // Lit: the three terms of docs/triangle-choice.md §2 (Gouraud - Phong), rounded up.
+      const vf c_n = vsqrt0(2.0f - 2.0f * load(f.cos_spread, at));
+      const vf c_l = vmin(splat(2.0f), 2.0f * chord);
+      const vf rho = directional ? splat(1.0f) : (dist + radius) / vmax(splat(1e-30f), dist - radius);
+      const vf min_light = vsqrt(vmax(splat(1e-6f), 1.0f - c_l * c_l / 3.0f));
+      const vf bound = c_n * c_l / 3.0f + (1.0f - load(f.min_normal, at)) * vmin(splat(1.0f), vmax(splat(0.0f), max_n_dot_l)) +
+                       (1.0f - min_light) + (rho - 1.0f) * c_l / min_light;
+      // Where the weights are 0 the products must not be NaN: vmin(x, 1) is 1 for a NaN x, vmax(x, 0) is 0.
+      store(out.diffuse, at, lit_w * vmin(bound * 1.0001f + 1e-6f, splat(1.0f)) + (1.0f - lit_w - dark_w));
+      store(out.terminator_distance, at, lit_w * vmax(low_c - chord, splat(0.0f)) + dark_w * vmax(-high_c - chord, splat(0.0f)));
     }
-    const vf margin = directional ? splat(1e-5f) : 1e-5f * (dist + radius + 1.0f);
-    const vi lit = usable & (lo > margin), dark = usable & (hi < -margin) & ~lit;
-    const vf lit_w = weight(lit), dark_w = weight(dark);
-    store(out.state, at, 2.0f - 2.0f * lit_w - dark_w);
-    // Lit: the three terms of docs/triangle-choice.md §2 (Gouraud - Phong), rounded up.
-    const vf c_n = vsqrt0(2.0f - 2.0f * load(f.cos_spread, at));
-    const vf c_l = vmin(splat(2.0f), 2.0f * chord);
-    const vf rho = directional ? splat(1.0f) : (dist + radius) / vmax(splat(1e-30f), dist - radius);
-    const vf min_light = vsqrt(vmax(splat(1e-6f), 1.0f - c_l * c_l / 3.0f));
-    const vf bound = c_n * c_l / 3.0f + (1.0f - load(f.min_normal, at)) * vmin(splat(1.0f), vmax(splat(0.0f), max_n_dot_l)) +
-                     (1.0f - min_light) + (rho - 1.0f) * c_l / min_light;
-    // Where the weights are 0 the products must not be NaN: vmin(x, 1) is 1 for a NaN x, vmax(x, 0) is 0.
-    store(out.diffuse, at, lit_w * vmin(bound * 1.0001f + 1e-6f, splat(1.0f)) + (1.0f - lit_w - dark_w));
-    store(out.terminator_distance, at, lit_w * vmax(low_c - chord, splat(0.0f)) + dark_w * vmax(-high_c - chord, splat(0.0f)));
   }
+
+  static PARASHADE_LANE void run(const FrameLanes& f, const Light& l, LightLanes& out) {
+    if (l.type == LightType::directional) of<true>(f, -glm::normalize(l.direction), glm::vec3(0.0f), out);
+    else of<false>(f, glm::vec3(0.0f), l.position, out);
+  }
+};
+
+__attribute__((target("avx2"))) void light_lanes_avx2(const FrameLanes& f, const Light& l, LightLanes& out) {
+  LightLanesOf<8>::run(f, l, out);
 }
+
+void light_lanes_sse(const FrameLanes& f, const Light& l, LightLanes& out) { LightLanesOf<4>::run(f, l, out); }
 
 }  // namespace
 
-// Cloned for AVX2 as frame_lanes.
-__attribute__((target_clones("avx2", "default"))) void light_lanes(const FrameLanes& f, const Light& l, LightLanes& out) {
-  if (l.type == LightType::directional) light_lanes_of<true>(f, -glm::normalize(l.direction), glm::vec3(0.0f), out);
-  else light_lanes_of<false>(f, glm::vec3(0.0f), l.position, out);
+namespace {
+std::atomic<bool> four_only{false};
+}  // namespace
+
+void four_float_lanes_only(bool only) { four_only = only; }
+
+bool lanes::avx2_lanes() {
+  static const bool cpu = __builtin_cpu_supports("avx2");
+  return cpu && !four_only.load(std::memory_order_relaxed);
+}
+
+void light_lanes(const FrameLanes& f, const Light& l, LightLanes& out) {
+  if (lanes::avx2_lanes()) light_lanes_avx2(f, l, out);
+  else light_lanes_sse(f, l, out);
 }
 
 }  // namespace parashade

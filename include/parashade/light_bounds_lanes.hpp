@@ -42,4 +42,9 @@ struct LightLanes {
 };
 void light_lanes(const FrameLanes& f, const Light& l, LightLanes& out);
 
+// light_lanes and gouraud_fit_lanes run on eight-float vectors where the CPU has AVX2, else on four
+// (lane_vectors.hpp); both give the same bits. true: four everywhere, so that a test can compare the two
+// (not while a choice runs).
+void four_float_lanes_only(bool only);
+
 }  // namespace parashade

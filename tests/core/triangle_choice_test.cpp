@@ -3,6 +3,7 @@
 // checked by dense sampling in double precision; the sources' listing as printed and as intended.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 
@@ -10,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "parashade/geometry_stage.hpp"
+#include "parashade/light_bounds_lanes.hpp"
 #include "parashade/lighting.hpp"
 #include "parashade/shapes.hpp"
 #include "parashade/triangle_choice.hpp"
@@ -157,6 +159,51 @@ TEST_P(TriangleChoiceBound, FloatLanesAgreeWithTheDoubleReference) {
   EXPECT_NEAR(a.largest_expected_levels, b.largest_expected_levels, 0.05 * k.budget);
 }
 
+// Choices that differ in method, mask or segment limit.
+std::size_t differing_choices(const std::vector<TriangleShading>& a, const std::vector<TriangleShading>& b) {
+  std::size_t differs = a.size() == b.size() ? 0 : std::max(a.size(), b.size());
+  for (std::size_t t = 0; t < std::min(a.size(), b.size()); ++t)
+    differs += a[t].method != b[t].method || a[t].specular_mask != b[t].specular_mask || a[t].psi_limit != b[t].psi_limit;
+  return differs;
+}
+
+void expect_same_counts(const TriangleChoiceStats& a, const TriangleChoiceStats& b) {
+  EXPECT_EQ(b.triangles, a.triangles);
+  EXPECT_EQ(b.gouraud, a.gouraud);
+  EXPECT_EQ(b.segments, a.segments);
+  EXPECT_EQ(b.without_highlight, a.without_highlight);
+  EXPECT_EQ(b.terminator, a.terminator);
+  EXPECT_EQ(b.light_terms_skipped, a.light_terms_skipped);
+  EXPECT_EQ(b.largest_expected_levels, a.largest_expected_levels);
+}
+
+// The lanes run on eight-float vectors where the CPU has AVX2 and on four elsewhere (lane_vectors.hpp): the
+// same operations lane by lane, so the same bits, per light and for the whole choice. (On a CPU without AVX2
+// both runs take four lanes.)
+TEST_P(TriangleChoiceBound, FourAndEightFloatLanesGiveTheSameBits) {
+  std::vector<TriangleShading> native, four;
+  const TriangleChoiceStats a = choose_triangle_methods(s, g, c, k.budget, native);
+  four_float_lanes_only(true);
+  const TriangleChoiceStats b = choose_triangle_methods(s, g, c, k.budget, four);
+  std::size_t lights_differ = 0;
+  for (std::size_t first = 0; first < g.triangles.size(); first += kLanes) {
+    FrameLanes f;
+    frame_lanes(s, g, first, int(std::min<std::size_t>(kLanes, g.triangles.size() - first)), f);
+    for (const Light& l : s.lights) {
+      LightLanes x, y;
+      four_float_lanes_only(false);
+      light_lanes(f, l, x);
+      four_float_lanes_only(true);
+      light_lanes(f, l, y);
+      lights_differ += std::memcmp(&x, &y, sizeof x) != 0;
+    }
+  }
+  four_float_lanes_only(false);
+  EXPECT_EQ(lights_differ, 0u);
+  EXPECT_EQ(differing_choices(native, four), 0u) << "of " << native.size() << " triangles";
+  expect_same_counts(a, b);
+}
+
 // The frame's setup chooses range by range (TriangleChooser), in ranges of its own chunks: any ranges, in any
 // order, must give every triangle the choice and the counts of the whole at once, in both arithmetics (the
 // lanes gather kLanes triangles from each range's start, so uneven ranges move triangles between lanes).
@@ -173,19 +220,8 @@ TEST_P(TriangleChoiceBound, RangesInAnyOrderChooseAsTheWhole) {
     }
     for (std::size_t r = cuts.size() - 1; r > 0; --r) chooser.choose(cuts[r - 1], cuts[r]);
     const TriangleChoiceStats b = chooser.stats();
-    ASSERT_EQ(ranged.size(), whole.size());
-    std::size_t differs = 0;
-    for (std::size_t t = 0; t < whole.size(); ++t)
-      differs += ranged[t].method != whole[t].method || ranged[t].specular_mask != whole[t].specular_mask ||
-                 ranged[t].psi_limit != whole[t].psi_limit;
-    EXPECT_EQ(differs, 0u) << "of " << whole.size() << " triangles";
-    EXPECT_EQ(b.triangles, a.triangles);
-    EXPECT_EQ(b.gouraud, a.gouraud);
-    EXPECT_EQ(b.segments, a.segments);
-    EXPECT_EQ(b.without_highlight, a.without_highlight);
-    EXPECT_EQ(b.terminator, a.terminator);
-    EXPECT_EQ(b.light_terms_skipped, a.light_terms_skipped);
-    EXPECT_EQ(b.largest_expected_levels, a.largest_expected_levels);
+    EXPECT_EQ(differing_choices(whole, ranged), 0u) << "of " << whole.size() << " triangles";
+    expect_same_counts(a, b);
   }
 }
 
