@@ -500,8 +500,12 @@ void TriangleChooser::choose(std::size_t first, std::size_t last) {
   static const IncreasingTable diffuse_chord(0.5 * M_PI, [](double phi) { return gouraud_term_bound(phi, 1.0, true); });
   const auto chord_bound = [](const IncreasingTable& t, double phi) { return phi < 0.5 * M_PI ? t.at(phi) : 1.0; };
   const GouraudFitConstants& fit_constants = sh.fit_constants;
-  std::atomic<std::uint64_t>&gouraud = sh.gouraud, &segments = sh.segments, &without = sh.without,
-  &terminator = sh.terminator, &skipped = sh.skipped, &largest_bits = sh.largest_bits;
+  std::atomic<std::uint64_t>& gouraud = sh.gouraud;
+  std::atomic<std::uint64_t>& segments = sh.segments;
+  std::atomic<std::uint64_t>& without = sh.without;
+  std::atomic<std::uint64_t>& terminator = sh.terminator;
+  std::atomic<std::uint64_t>& skipped = sh.skipped;
+  std::atomic<std::uint64_t>& largest_bits = sh.largest_bits;
   std::uint64_t n_gouraud = 0, n_segments = 0, n_without = 0, n_terminator = 0, n_skipped = 0;
   double largest = 0.0;
   FrameLanes frame;

@@ -265,7 +265,7 @@ void FramePipeline::setup(const Scene& scene, const FrameConfig& config, const F
       constexpr std::size_t kRange = 512;  // records in L1/L2 between setup and counting
       std::uint64_t e = 0;
       const auto c0 = Clock::now();
-      std::chrono::nanoseconds in_choice{0};
+      std::chrono::nanoseconds in_choice{0};  // timed only with a choice, for choice_ms
       for (std::size_t first = binner_.chunk_first(c), end = binner_.chunk_first(c + 1); first < end; first += kRange) {
         const std::size_t last = std::min(end, first + kRange);
         if (chooser) {
@@ -278,8 +278,10 @@ void FramePipeline::setup(const Scene& scene, const FrameConfig& config, const F
         binner_.count_range(c, first, last);
       }
       empty += e;
-      choosing_ns += std::uint64_t(in_choice.count());
-      working_ns += std::uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - c0).count());
+      if (chooser) {
+        choosing_ns += std::uint64_t(in_choice.count());
+        working_ns += std::uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - c0).count());
+      }
     });
     s.triangles_without_pixels = empty.load();
     if (chooser) {

@@ -2,7 +2,7 @@
 // W float lanes per GCC generic vector, for the per-triangle choice's lanes (light_bounds_lanes.hpp):
 // arithmetic, comparisons giving lane masks and selects on them compile to vector instructions without
 // branches. Four lanes (one SSE register) by default; eight (one AVX register) in the versions compiled for
-// AVX2, where they take a quarter off the choice (bench_triangle_choice). Without AVX, GCC lowers the selects
+// AVX2, where they take up to a quarter off the choice (bench_triangle_choice). Without AVX, GCC lowers the selects
 // of eight-lane vectors lane by lane (2.5x slower), hence two widths.
 // Internal to the files that include it: the vectors never cross a library interface.
 #include <cmath>
