@@ -160,6 +160,7 @@ combined_study() {
                 "combined:0 --triangle-choice sources-literal" "combined:0 --highlight-test" \
                 "combined:0@2 --triangle-choice bound" "combined:0@4 --triangle-choice bound" \
                 "combined:0@8 --triangle-choice bound" "combined:0@16 --triangle-choice bound" \
+                "combined:0@20 --triangle-choice bound" \
       --json "$OUT/combined-study.json" >"$OUT/combined-study.md"
 }
 phong_methods() {

@@ -53,12 +53,14 @@ def phong_share(pix):
 
 def ceiling(r, phong, gouraud):
     """Phong's frame over the frame this run would take if its kernel cost each visible pixel what Phong's and
-    Gouraud's kernels cost a pixel in the same round (the choice's segment pixels at Gouraud's cost), its host
-    stages unchanged: how far a faster combined kernel could take this choice (a bound where every covered
-    pixel is visible; with hidden pixels an estimate). None without the choice's visible pixels (render
-    without --no-error) or a Gouraud run."""
-    share = phong_share(((r.get("stats") or {}).get("triangle_choice") or {}).get("visible_pixels"))
-    if share is None or gouraud is None:
+    Gouraud's kernels cost a pixel in the same round, its host stages unchanged: how far a faster combined
+    kernel could take this choice (a bound where every covered pixel is visible; with hidden pixels an
+    estimate). None without the choice's visible pixels (render without --no-error), without a Gouraud run,
+    and where the choice walks segments (combined:auto): no run here prices a segment pixel, and at Gouraud's
+    price the figure would be no ceiling."""
+    pix = ((r.get("stats") or {}).get("triangle_choice") or {}).get("visible_pixels")
+    share = phong_share(pix)
+    if share is None or gouraud is None or pix.get("segments", 0) > 0:
         return None
     kp, kg = phong["stages_ms"]["kernel_ms"], gouraud["stages_ms"]["kernel_ms"]
     kernel = kg + share * (kp - kg)
@@ -132,9 +134,9 @@ def main():
               "| visible pixels by Phong % | ceiling vs Phong (frame) |"
               "\n|---|---|---|---|---|---|---|---|---|---|---|---|")
     note = ("Ceiling: Phong's frame over this frame with its kernel replaced by a model, Gouraud's kernel plus the "
-            "share of visible pixels the choice gives to Phong times (Phong's kernel - Gouraud's), from the same round "
-            "(segment pixels at Gouraud's cost): what a combined kernel with no overhead of its own would reach with "
-            "this choice and these host stages.")
+            "share of visible pixels the choice gives to Phong times (Phong's kernel - Gouraud's), from the same round: "
+            "what a combined kernel with no overhead of its own would reach with this choice and these host stages "
+            "(none where the choice walks segments, whose pixels no run here prices).")
     print(header)
     print("\n".join(rows))
     print("\n" + note)

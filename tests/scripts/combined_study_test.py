@@ -34,11 +34,13 @@ def run(frame, kernel, pixels=None):
 # Phong: frame 4, kernel 3; Gouraud's kernel 1; the mix: frame 3, kernel 2, a quarter of the pixels by Phong.
 # The model's kernel is 1 + 0.25 * (3 - 1) = 1.5, its frame 3 - 2 + 1.5 = 2.5, the ceiling 4 / 2.5 = 1.6.
 phong, gouraud = run(4.0, 3.0), run(1.5, 1.0)
-mix = run(3.0, 2.0, {"gouraud": 60, "segments": 15, "phong": 25})
+mix = run(3.0, 2.0, {"gouraud": 75, "segments": 0, "phong": 25})
 got = study.ceiling(mix, phong, gouraud)
 check(got is not None and abs(got - 1.6) < 1e-12, "ceiling of the worked example: %r, not 1.6" % got)
 check(study.ceiling(run(3.0, 2.0), phong, gouraud) is None, "a run without visible pixels has a ceiling")
 check(study.ceiling(mix, phong, None) is None, "a ceiling without a Gouraud run")
+check(study.ceiling(run(3.0, 2.0, {"gouraud": 60, "segments": 15, "phong": 25}), phong, gouraud) is None,
+      "a ceiling that prices segment pixels at Gouraud's cost")
 check(study.ceiling(run(3.0, 2.0, {"gouraud": 0, "segments": 0, "phong": 0}), phong, gouraud) is None,
       "a ceiling from no pixels")
 
