@@ -434,10 +434,8 @@ struct TriangleChooser::Shared {
   const CombinedConfig& c;
   double shading_budget;
   std::vector<TriangleShading>& out;
-  bool bound = false, masked = false, lanes = false, moving = false;
-  unsigned all_lights = 0;
-  std::size_t lights = 0;
-  int fixed_walk_width = 0;
+  // What the scene and the config do not say by themselves: the arithmetic, and whether L or H moves.
+  bool lanes = false, moving = false;
   std::shared_ptr<const ChoiceTables> tables;
   GouraudFitConstants fit_constants;
   std::atomic<std::uint64_t> gouraud{0}, segments{0}, without{0}, terminator{0}, skipped{0};
@@ -451,22 +449,18 @@ TriangleChooser::TriangleChooser(const Scene& s, const ScreenGeometry& g, const 
   out.resize(g.triangles.size());
   shared_ = std::make_unique<Shared>(s, g, c, shading_budget, out);
   Shared& sh = *shared_;
-  sh.bound = c.rule == TriangleRule::bound;
-  sh.all_lights = (1u << s.lights.size()) - 1u;
-  sh.masked = uses_highlight_mask(c);
-  sh.lights = s.lights.size();
+  const bool bound = c.rule == TriangleRule::bound;
   sh.tables = choice_tables(s, c, shading_budget);
-  sh.fixed_walk_width = combined_min_width(c);
-  sh.lanes = sh.bound && arithmetic == ChoiceArithmetic::float_lanes;
+  sh.lanes = bound && arithmetic == ChoiceArithmetic::float_lanes;
   // combined:auto's segments under a point light or a local viewer: L or H moves along them.
   const bool point_light = std::any_of(s.lights.begin(), s.lights.end(),
                                        [](const Light& l) { return l.type != LightType::directional; });
-  sh.moving = sh.bound && c.automatic && ((s.viewer_is_local() && !s.lights.empty()) || point_light);
+  sh.moving = bound && c.automatic && ((s.viewer_is_local() && !s.lights.empty()) || point_light);
   static const LaneTable diffuse_chord_lanes =
       make_lane_table(kChordTableEnd, [](double u) { return gouraud_term_bound(2.0 * std::asin(u), 1.0, true); });
   const ChoiceTables& tables = *sh.tables;
   GouraudFitConstants& fit_constants = sh.fit_constants;
-  fit_constants.lights = sh.lights;
+  fit_constants.lights = s.lights.size();
   fit_constants.thresholds = tables.thresholds.data();
   fit_constants.specular_levels = tables.specular_levels.data();
   fit_constants.diffuse_levels = tables.diffuse_levels.data();
@@ -488,10 +482,10 @@ void TriangleChooser::choose(std::size_t first, std::size_t last) {
   const CombinedConfig& c = sh.c;
   const double shading_budget = sh.shading_budget;
   std::vector<TriangleShading>& out = sh.out;
-  const bool bound = sh.bound, masked = sh.masked, lanes = sh.lanes, moving = sh.moving;
-  const unsigned all_lights = sh.all_lights;
-  const std::size_t lights = sh.lights;
-  const int fixed_walk_width = sh.fixed_walk_width;
+  const bool bound = c.rule == TriangleRule::bound, masked = uses_highlight_mask(c), lanes = sh.lanes, moving = sh.moving;
+  const std::size_t lights = s.lights.size();
+  const unsigned all_lights = (1u << lights) - 1u;
+  const int fixed_walk_width = combined_min_width(c);
   const ChoiceTables* tables = sh.tables.get();
   const std::vector<float>& psi = tables->psi;
   const std::vector<double>& thresholds = tables->thresholds;
