@@ -1,16 +1,15 @@
 // How steady the host is right now, before its timings are believed. On every CPU at once (one pinned thread
 // each) two fixed probes alternate for a few seconds: an ALU loop (a xorshift chain, no memory) and a memory
 // sweep (64 MiB a CPU, past the last-level cache: a load per cache line, a store to every eighth). Each
-// probe's spread is its samples' quantiles over its fastest sample. A steady machine repeats both within a few
-// percent; a VM whose neighbours use the same memory system spreads the sweep by tens of percent while its ALU
-// loop stays steady (bench/README.md, run AA: sweep p90/min 1.22-1.61 while `render` rounds of one binary
-// differed by 0.76-1.36, ALU p90/min 1.02-1.11).
+// probe's spread is its samples' quantiles over its fastest sample.
 //
-//   bench_host_noise [--seconds 4] [--max-spread 1.10] [--require-steady] [--json FILE]
+//   bench_host_noise [--seconds 4] [--max-alu-spread 1.10] [--max-memory-spread 2.00] [--require-steady] [--json FILE]
 //
-// "steady" means every CPU's p90/min is at most --max-spread for both probes. The default 1.10 is a first
-// choice, not yet calibrated on a quiet machine. Exit 0 (with --require-steady: 1 when not steady), 2 on a
-// bad command line.
+// "steady" means every CPU's p90/min is at most the probe's threshold. The thresholds are calibrated on the
+// 2-vCPU VMs this project runs on (bench/README.md, "Is the host steady?"): idle, a fresh VM's ALU loop reads
+// 1.02-1.03 and its memory sweep 1.35-1.87 (the two CPUs' sweeps share one memory system; one CPU alone reads
+// 1.13-1.26); with one other busy process the ALU loop reads 1.8-2.7 and the sweep 3.1-3.3. Exit 0 (with
+// --require-steady: 1 when not steady), 2 on a bad command line.
 #include <pthread.h>
 #include <sched.h>
 
@@ -78,11 +77,14 @@ nlohmann::json to_json(const Spread& s, std::size_t n) {
 
 int run(int argc, char** argv) {
   CLI::App app{"How steady the host's timings are now: an ALU loop and a memory sweep on every CPU at once"};
-  double seconds = 4.0, max_spread = 1.10;
+  double seconds = 4.0, max_alu_spread = 1.10, max_memory_spread = 2.00;
   bool require_steady = false;
   std::string json_path;
   app.add_option("--seconds", seconds, "How long the probes run (default 4)")->check(CLI::Range(0.1, 600.0));
-  app.add_option("--max-spread", max_spread, "Largest p90/min of a steady probe (default 1.10)")
+  app.add_option("--max-alu-spread", max_alu_spread, "Largest p90/min of a steady ALU loop (default 1.10)")
+      ->check(CLI::Range(1.0, 100.0));
+  app.add_option("--max-memory-spread", max_memory_spread,
+                 "Largest p90/min of a steady memory sweep (default 2.00; an idle 2-vCPU VM reads 1.35-1.87)")
       ->check(CLI::Range(1.0, 100.0));
   app.add_flag("--require-steady", require_steady, "Exit with 1 when the host is not steady");
   app.add_option("--json", json_path, "Also write every CPU's spreads to this JSON file");
@@ -123,7 +125,7 @@ int run(int argc, char** argv) {
     const Spread alu = spread_of(samples[c].alu), memory = spread_of(samples[c].memory);
     worst_alu = std::max(worst_alu, alu.p90);
     worst_memory = std::max(worst_memory, memory.p90);
-    steady = steady && alu.p90 <= max_spread && memory.p90 <= max_spread;
+    steady = steady && alu.p90 <= max_alu_spread && memory.p90 <= max_memory_spread;
     std::printf("cpu %u: ALU loop %.2f ms, median/min %.3f, p90/min %.3f, max/min %.3f | memory sweep %.2f ms, "
                 "median/min %.3f, p90/min %.3f, max/min %.3f\n",
                 c, alu.min_ms, alu.median, alu.p90, alu.max, memory.min_ms, memory.median, memory.p90, memory.max);
@@ -131,12 +133,18 @@ int run(int argc, char** argv) {
                        {"alu", to_json(alu, samples[c].alu.size())},
                        {"memory", to_json(memory, samples[c].memory.size())}});
   }
-  std::printf("%s: worst p90/min ALU %.3f, memory %.3f (steady: both at most %.2f on every CPU)\n",
-              steady ? "steady" : "NOT steady", worst_alu, worst_memory, max_spread);
+  std::printf("%s: worst p90/min ALU %.3f, memory %.3f (steady: ALU at most %.2f and memory at most %.2f on every "
+              "CPU)\n",
+              steady ? "steady" : "NOT steady", worst_alu, worst_memory, max_alu_spread, max_memory_spread);
   if (!json_path.empty()) {
-    const nlohmann::json j = {{"seconds", seconds},     {"max_spread", max_spread},     {"cpus", cpus},
-                              {"steady", steady},       {"worst_alu_p90_over_min", worst_alu},
-                              {"worst_memory_p90_over_min", worst_memory}, {"per_cpu", per_cpu}};
+    const nlohmann::json j = {{"seconds", seconds},
+                              {"max_alu_spread", max_alu_spread},
+                              {"max_memory_spread", max_memory_spread},
+                              {"cpus", cpus},
+                              {"steady", steady},
+                              {"worst_alu_p90_over_min", worst_alu},
+                              {"worst_memory_p90_over_min", worst_memory},
+                              {"per_cpu", per_cpu}};
     json.write(j);
   }
   return require_steady && !steady ? 1 : 0;
