@@ -78,8 +78,8 @@ def variant_rows(doc, k):
         for r in doc["rows"]:
             if r["normalize"] == "exact" and r["specular"] == "exact":
                 continue
-            label = (f"n {r['normalize']}" if r["specular"] == "exact" else
-                     f"s {r['specular']}" if r["normalize"] == "exact" else f"n {r['normalize']}, s {r['specular']}")
+            # Spelled as render's options, as the combined points are.
+            label = " ".join(f"--{option} {r[option]}" for option in ("normalize", "specular") if r[option] != "exact")
             out.append({"scene": STUDY_SCENE_NAMES.get(r["scene"], r["scene"]), "size": r["size"],
                         "family": "phong variants", "label": label, "frame_ms": r["frame_ms"],
                         "phong_ms": phong.get(r["scene"]), "nmse": r["nmse"]})
