@@ -14,6 +14,8 @@
 #include "commands.hpp"
 #include "device_option.hpp"
 #include "error_pictures.hpp"
+#include "frame_medians.hpp"
+#include "against_frames.hpp"
 #include "plan_cli.hpp"
 #include "progress.hpp"
 #include "register_events_cli.hpp"
@@ -45,6 +47,7 @@ namespace {
 struct RenderArgs {
   std::string scene, output, method = "gouraud", device, size, report, units, arith = "float", division = "constant",
               coverage = "centre", specular = "exact", normalize = "exact", triangle_choice;
+  std::string against;  // --against: a plain method whose frames alternate with this one's
   int frames = 5, warmup = 1, tile = TILE_DEFAULT, work_items = 0;
   int defer_min_triangles = -1;  // -1: RenderOptions' default (RenderOptions::deferral_threshold)
   // Triangle records a frame may hold at once before it streams in bands of as many (MiB); 0: never
@@ -61,33 +64,6 @@ struct RenderArgs {
   bool no_tuned = false, explicit_config = false, keep_going = false;  // explicit: --tile, --work-items, --cu or --partition given
   bool tile_given = false;  // --tile given: else default_tile_size (tile_choice.hpp) on one device
 };
-
-// Median of each stage over the timed frames.
-FrameTimings median_timings(const std::vector<FrameTimings>& f) {
-  const auto med = [&](double FrameTimings::*field) {
-    std::vector<double> v;
-    for (const auto& t : f) v.push_back(t.*field);
-    return median(v);
-  };
-  FrameTimings m;
-  m.geometry_ms = med(&FrameTimings::geometry_ms);
-  m.setup_ms = med(&FrameTimings::setup_ms);
-  m.choice_ms = med(&FrameTimings::choice_ms);
-  m.binning_ms = med(&FrameTimings::binning_ms);
-  m.kernel_ms = med(&FrameTimings::kernel_ms);
-  m.launch_ms = med(&FrameTimings::launch_ms);
-  m.readback_ms = med(&FrameTimings::readback_ms);
-  m.total_ms = med(&FrameTimings::total_ms);
-  m.planning_ms = med(&FrameTimings::planning_ms);
-  m.unit_pass_ms = med(&FrameTimings::unit_pass_ms);
-  m.key_merge_ms = med(&FrameTimings::key_merge_ms);
-  for (std::size_t k = 0; !f.empty() && k < f.front().unit_pass_share_ms.size(); ++k) {
-    std::vector<double> v;
-    for (const auto& t : f) v.push_back(k < t.unit_pass_share_ms.size() ? t.unit_pass_share_ms[k] : 0.0);
-    m.unit_pass_share_ms.push_back(median(v));
-  }
-  return m;
-}
 
 // The geometry the exact reference renders: the frame's triangles in the same order, with every attribute
 // the reference needs, and the vertex intensities too where a per-triangle choice is made on it.
@@ -293,6 +269,10 @@ int run_render(const RenderArgs& a) {
   if (a.defer_min_triangles < -1 || a.defer_min_triangles > kMaxDeferMinTriangles)
     throw UsageError("--defer-min-triangles must be 0.." + std::to_string(kMaxDeferMinTriangles) + " (or -1, the default)");
   check_picture_options(a);
+  if (!a.against.empty()) AgainstFrames::check_method(a.against);
+  if (!a.against.empty() && (!a.distribute.empty() || is_device_list(a.device)))
+    throw UsageError("--against pairs frames of two renderers on one device in one process; not with --distribute "
+                     "or a device list ('" + (a.distribute.empty() ? a.device : "--distribute " + a.distribute) + "')");
   if (!a.distribute.empty()) return run_distributed(a, options, size);
   if (!a.rank_partition.empty()) throw UsageError("--rank-partition needs --distribute sort-last");
   if (!a.read_scene.empty()) throw UsageError("--read-scene needs --distribute (how MPI ranks get the scene)");
@@ -357,19 +337,24 @@ int run_render(const RenderArgs& a) {
   }
   if (!a.tile_given && tuned.is_null()) options.tile_size = default_tile_size(scene, options, options.band_record_bytes);
   Renderer renderer(*device, options, unit_devices);
+  std::optional<AgainstFrames> against;
+  if (!a.against.empty()) against.emplace(*device, scene, a.against, options.band_record_bytes);
   if (!a.quiet)
     std::cerr << "rendering " << scene.name << " (" << scene.width << "x" << scene.height << ", "
               << scene.triangle_count() << " triangles, " << method_name(method) << ") on " << dev.name << " ...\n";
   FrameProgress progress(a.warmup + a.frames, a.quiet);
   for (int i = 0; i < a.warmup; ++i) {
     renderer.render(scene);  // builds programs, compiles work-group functions
+    if (against) against->warm_up(scene);
     progress.step(i + 1);
   }
   std::vector<FrameTimings> timings;
   std::vector<double> frame_samples_ms;
   const Frame* last = nullptr;
   for (int i = 0; i < a.frames; ++i) {
+    if (against && AgainstFrames::first_in_pair(i)) against->frame(scene);
     last = &renderer.render(scene);
+    if (against && !AgainstFrames::first_in_pair(i)) against->frame(scene);
     timings.push_back(last->timings);
     frame_samples_ms.push_back(last->timings.total_ms);
     progress.step(a.warmup + i + 1);
@@ -432,6 +417,7 @@ int run_render(const RenderArgs& a) {
       {"mtriangle_per_s", double(frame.stats.geometry.triangles_in) / (med.total_ms * 1e3)},
       {"stats", to_json(frame.stats)},
       {"error", errors}};
+  if (against) report["against"] = against->summary(timings);
   if (method == Method::combined) {
     report["method"] = combined_name(options.combined);
     if (options.combined.automatic) report["max_error_levels"] = options.combined.max_error;
@@ -472,6 +458,7 @@ int run_render(const RenderArgs& a) {
               med.readback_ms, 1e3 / med.total_ms, pixels / (med.total_ms * 1e3),
               double(frame.stats.geometry.triangles_in) / (med.total_ms * 1e3));
   if (med.choice_ms > 0.0) std::printf("setup includes the per-triangle method choice: %.3f ms\n", med.choice_ms);
+  if (against) std::printf("%s\n", AgainstFrames::line(report["against"]).c_str());
   if (options.unit_path()) {
     const ModeledClocks& c = frame.stats.clocks;
     std::printf("unit %s, %s arithmetic, span increment %s: %llu modeled clocks (%llu spans, %llu span pixels, %.3f pixels per clock)\n",
@@ -617,6 +604,11 @@ Command add_render_command(CLI::App& app) {
                   "sources-literal[:M,Q,P] (its listing as printed), none (combined:K's default); docs/triangle-choice.md");
   cmd->add_flag("--highlight-test", a->highlight_test,
                 "combined:*: skip the specular term per triangle and light where no highlight can fall ([Dembitsky 2025, software/hardware rendering] ch. 3)");
+  cmd->add_option("--against", a->against,
+                  "Also render METHOD (flat, gouraud or phong, its defaults) in the same process, its frames "
+                  "alternating with this method's, and report the median of the pairs' frame ratios: a comparison "
+                  "that a host whose speed drifts between processes cannot bias (bench/README.md)")
+      ->type_name("METHOD");
   cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
   cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");
   cmd->add_option("--reference-image", a->reference_image,

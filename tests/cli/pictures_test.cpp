@@ -35,7 +35,7 @@ RenderedImage ramp(bool changed) {
   return im;
 }
 
-const std::uint8_t* pixel(const RenderedImage& im, int x, int y) {
+const std::uint8_t* rgba_at(const RenderedImage& im, int x, int y) {
   return &im.rgba[4 * (std::size_t(y) * std::size_t(im.width) + std::size_t(x))];
 }
 bool is_colour(const std::uint8_t* p, const std::array<std::uint8_t, 3>& c) {
@@ -95,7 +95,7 @@ TEST_F(CliCompare, DiffMapHasTheTopColourOnlyAtTheLargestError) {
   ASSERT_GT(map.width, W);
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
-      const std::uint8_t* p = pixel(map, x, y);
+      const std::uint8_t* p = rgba_at(map, x, y);
       if (x == 12 && y == 7) EXPECT_TRUE(is_colour(p, kViridis[255]));
       else if (x == 3 && y == 4) EXPECT_TRUE(is_colour(p, kViridis[115])) << "255 * 9 / 20 = 114.75";
       else if (x == 5 && y == 13) EXPECT_TRUE(is_colour(p, kViridis[26])) << "255 * 2 / 20 = 25.5";
@@ -166,7 +166,7 @@ TEST_F(CliTest, ErrorMapOfARenderHasItsTopColourWhereTheErrorIsTheReportsMax) {
   int top_coloured = 0, compared = 0;
   for (int y = 0; y < 48; ++y)
     for (int x = 0; x < 64; ++x) {
-      const std::uint8_t* p = pixel(map, x, y);
+      const std::uint8_t* p = rgba_at(map, x, y);
       if (is_colour(p, {255, 255, 255})) continue;  // not covered: not compared
       ++compared;
       const double err = e[std::size_t(y) * 64 + std::size_t(x)];

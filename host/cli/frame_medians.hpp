@@ -1,0 +1,11 @@
+#pragma once
+// Median of each stage over timed frames (render's report, and --against's).
+#include <vector>
+
+#include "parashade/renderer.hpp"
+
+namespace parashade::cli {
+
+FrameTimings median_timings(const std::vector<FrameTimings>& f);
+
+}  // namespace parashade::cli

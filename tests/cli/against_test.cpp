@@ -1,0 +1,56 @@
+// render --against METHOD (host/cli/against_frames.hpp): a second renderer's frames alternate with the
+// rendered method's in one process, and the report holds both medians and the pairs' ratios. The ratio
+// figures are checked against the frame times the report gives for the same frames, not against a speed.
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cli_fixture.hpp"
+
+namespace parashade {
+namespace {
+
+using namespace testing_support;
+
+class CliAgainst : public CliTest {};
+
+TEST_F(CliAgainst, ReportsPairsOfBothRenderers) {
+  const auto scene = input("ball.json", sphere_scene());
+  std::vector<std::string> args = render_args(scene, {"--method", "gouraud", "--against", "phong"});
+  *(std::find(args.begin(), args.end(), "--frames") + 1) = "7";  // the fixture times one frame
+  ASSERT_TRUE(succeeds(run_parashade(args)));
+  const nlohmann::json r = read_report();
+  const nlohmann::json& a = r["against"];
+  EXPECT_EQ(a["method"], "phong");
+  EXPECT_EQ(a["pairs"], 7) << "one against frame per timed frame";
+  EXPECT_GT(a["frame_ms"].get<double>(), 0.0);
+  const double lo = a["frame_ratio"]["p10"], mid = a["frame_ratio"]["median"], hi = a["frame_ratio"]["p90"];
+  EXPECT_LE(lo, mid);
+  EXPECT_LE(mid, hi);
+  // The ratios are the against frame over this method's frame of the same pair.
+  const std::vector<double> mine = r["timing"]["samples_ms"], theirs = a["samples_ms"];
+  ASSERT_EQ(mine.size(), theirs.size());
+  std::vector<double> ratios;
+  for (std::size_t i = 0; i < mine.size(); ++i) ratios.push_back(theirs[i] / mine[i]);
+  std::sort(ratios.begin(), ratios.end());
+  EXPECT_DOUBLE_EQ(mid, ratios[ratios.size() / 2]);
+  EXPECT_EQ(r["method"], "gouraud") << "the rendered method is still the one reported";
+}
+
+TEST_F(CliAgainst, OnlyPlainMethods) {
+  const auto scene = input("ball.json", sphere_scene());
+  EXPECT_TRUE(fails_with(render(scene, {"--against", "combined:2"}), kUsage, {"--against", "combined:2"}));
+  EXPECT_TRUE(fails_with(render(scene, {"--against", "blinn"}), kUsage, {"--against", "blinn"}));
+  EXPECT_TRUE(nothing_written());
+}
+
+TEST_F(CliAgainst, NotAcrossDevices) {
+  const auto scene = input("ball.json", sphere_scene());
+  EXPECT_TRUE(fails_with(render(scene, {"--against", "phong", "--device", "all"}), kUsage, {"--against", "'all'"}));
+  EXPECT_TRUE(nothing_written());
+}
+
+}  // namespace
+}  // namespace parashade
