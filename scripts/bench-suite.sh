@@ -155,6 +155,7 @@ span_setup() {
 combined_study() {
   # shellcheck disable=SC2086
   "$PYTHON" scripts/combined_study.py --binary "$BUILD/parashade" --scenes $PHONG_SCENES --frames 11 --rounds 5 \
+      --pairing in-process \
       --methods phong gouraud combined:2 combined:3 combined:4 combined:auto@1 combined:auto@2 combined:auto@4 \
                 "combined:auto@1 --triangle-choice none" "combined:0 --triangle-choice sources" \
                 "combined:0 --triangle-choice sources-literal" "combined:0 --highlight-test" \
@@ -166,7 +167,7 @@ combined_study() {
 phong_methods() {
   # shellcheck disable=SC2086
   "$PYTHON" scripts/phong_methods.py --binary "$BUILD/parashade" --scenes $PHONG_SCENES \
-      --frames 5 --json "$OUT/phong-methods.json" >"$OUT/phong-methods.md"
+      --frames 11 --json "$OUT/phong-methods.json" >"$OUT/phong-methods.md"
 }
 normalize_bench() {
   have_bench bench_normalize || return 0

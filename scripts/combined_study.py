@@ -2,13 +2,18 @@
 """Speed against error of the combined Gouraud/Phong method (docs/combined.md): renders each scene with
 phong, gouraud, combined:K and combined:auto at several budgets through `parashade render --report`,
 in rounds (methods interleaved, so load from other processes spreads over all of them), and prints a
-Markdown table with frame and kernel time, their ratio to Phong's from the same round (median over the
-rounds), and the error against Phong (the method's ideal: screen-space Phong in double) and against
+Markdown table with frame and kernel time, their ratio to Phong's (median over the rounds), and the error
+against Phong (the method's ideal: screen-space Phong in double) and against
 exact (perspective-correct) Phong. Where the per-triangle choice runs, it also gives the share of visible
 pixels the choice gives to Phong and a ceiling: Phong's frame over this frame with its kernel replaced by the
 cost those pixels have in Phong's and Gouraud's kernels of the same round (ceiling()). With --json it also
 writes the measurements and the source claims
-([Romanyuk & Romanyuk, combined shading]: combined k = 2 1.3x / 1.8x, k = 3 1.48x / 2.09x) as {claim, source, measured}. Example:
+([Romanyuk & Romanyuk, combined shading]: combined k = 2 1.3x / 1.8x, k = 3 1.48x / 2.09x) as {claim, source, measured}.
+
+The ratio to Phong comes, by --pairing, from Phong's run in the same round (rounds, the default), from a
+Phong run right before (adjacent), or from Phong's frames alternating with the method's in the same process
+(in-process: `render --against phong`, the median of the pairs' ratios). On a host whose speed changes from
+one process to the next only the last compares like with like (bench/README.md, run AE). Example:
 
     scripts/combined_study.py --scenes scenes/teapot.json scenes/bunny.json --frames 11 --json combined.json
 """
@@ -26,7 +31,7 @@ DEFAULT_METHODS = ["phong", "gouraud", "combined:1", "combined:2", "combined:3",
                    "combined:0 --highlight-test"]
 
 
-def run(binary, scene, method, frames, device, tmp, size=""):
+def run(binary, scene, method, frames, device, tmp, size="", against=""):
     words = method.split()
     name, _, budget = words[0].partition("@")
     report = os.path.join(tmp, "r.json")
@@ -35,6 +40,8 @@ def run(binary, scene, method, frames, device, tmp, size=""):
     if budget:
         cmd += ["--max-error", budget]
     cmd += words[1:]
+    if against:
+        cmd += ["--against", against]
     if device:
         cmd += ["--device", device]
     if size:
@@ -43,6 +50,20 @@ def run(binary, scene, method, frames, device, tmp, size=""):
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     with open(report) as f:
         return json.load(f), " ".join(cmd[1:])
+
+
+PAIRING_TEXT = {"rounds": "the same round", "adjacent": "the Phong run right before it",
+                "in-process": "Phong's frames alternating with its own in one process (median of the pairs' ratios)"}
+
+
+def pair_ratio(r, base, what):
+    """Phong's time over the method's, frame or kernel: the median of the pairs' ratios where Phong ran in the
+    same process (render --against: base is r's "against"), else the ratio of the two runs' medians."""
+    if base is r.get("against"):
+        return base[what + "_ratio"]["median"]
+    if what == "frame":
+        return base["frame_ms"] / r["frame_ms"]
+    return base["stages_ms"]["kernel_ms"] / r["stages_ms"]["kernel_ms"]
 
 
 def phong_share(pix):
@@ -75,22 +96,29 @@ def main():
                     help="method[@max-error][ extra render options], e.g. 'combined:auto@2 --highlight-test'")
     ap.add_argument("--frames", type=int, default=11)
     ap.add_argument("--rounds", type=int, default=1)
-    ap.add_argument("--paired", action="store_true", help="run Phong right before every other method for its ratio")
+    ap.add_argument("--pairing", choices=["rounds", "adjacent", "in-process"], default="rounds",
+                    help="where a method's ratio to Phong comes from: Phong's run in the same round, a Phong run "
+                         "right before it, or Phong's frames alternating with it in one process (render --against)")
+    ap.add_argument("--paired", action="store_true", help="the same as --pairing adjacent")
     ap.add_argument("--device", default="")
     ap.add_argument("--size", default="", help="WIDTHxHEIGHT for every render (default: each scene's own)")
     ap.add_argument("--json", default="", help="write measurements and claims here")
     args = ap.parse_args()
+    if args.paired:
+        args.pairing = "adjacent"
+    in_process = args.pairing == "in-process"
 
     results, pairs, device = {}, {}, None
     with tempfile.TemporaryDirectory() as tmp:
         for scene in args.scenes:
             for rnd in range(args.rounds):
                 for method in args.methods:
-                    if args.paired and method != "phong":
+                    if args.pairing == "adjacent" and method != "phong":
                         # Phong right before each method: the ratio comes from two adjacent runs.
                         base, _ = run(args.binary, scene, "phong", args.frames, args.device, tmp, args.size)
                         pairs.setdefault((scene, method), []).append(base)
-                    r, cmd = run(args.binary, scene, method, args.frames, args.device, tmp, args.size)
+                    against = "phong" if in_process and method != "phong" else ""
+                    r, cmd = run(args.binary, scene, method, args.frames, args.device, tmp, args.size, against)
                     device = r["device"]
                     results.setdefault((scene, method), []).append((rnd, r, cmd))
 
@@ -98,17 +126,19 @@ def main():
     for scene in args.scenes:
         for method in args.methods:
             runs = results[(scene, method)]
-            if args.paired and method != "phong":
+            if args.pairing == "adjacent" and method != "phong":
                 base = {rnd: b for (rnd, _, _), b in zip(runs, pairs[(scene, method)])}
+            elif in_process and method != "phong":
+                base = {rnd: r["against"] for rnd, r, _ in runs}  # Phong's medians in the method's own process
             else:
                 base = {rnd: r for rnd, r, _ in results[(scene, "phong")]}
             frame = statistics.median(r["frame_ms"] for _, r, _ in runs)
             kernel = statistics.median(r["stages_ms"]["kernel_ms"] for _, r, _ in runs)
-            speed = statistics.median(base[rnd]["frame_ms"] / r["frame_ms"] for rnd, r, _ in runs)
+            speed = statistics.median(pair_ratio(r, base[rnd], "frame") for rnd, r, _ in runs)
             gouraud = {rnd: g for rnd, g, _ in results.get((scene, "gouraud"), [])}
             ceilings = [c for c in (ceiling(r, base[rnd], gouraud.get(rnd)) for rnd, r, _ in runs) if c is not None]
             limit = statistics.median(ceilings) if ceilings else None
-            kspeed = statistics.median(base[rnd]["stages_ms"]["kernel_ms"] / r["stages_ms"]["kernel_ms"] for rnd, r, _ in runs)
+            kspeed = statistics.median(pair_ratio(r, base[rnd], "kernel") for rnd, r, _ in runs)
             r, cmd = runs[-1][1], runs[-1][2]
             own, exact = r["error"]["implementation"], r["error"]["method"]
             budget = method.split()[0].partition("@")[2]
@@ -127,14 +157,15 @@ def main():
                             "height": r["height"], "triangle_choice": choice, "ceiling_vs_phong_frame": limit,
                             "frame_ms_rounds": [x["frame_ms"] for _, x, _ in runs]})
     header = (f"Device: {device['name']} ({device['platform']}), {device['compute_units']} compute units. "
-              f"Median of {args.frames} frames after 1 warm-up; ratios to Phong from "
-              f"{'the Phong run right before it' if args.paired else 'the same round'}, median of {args.rounds} round(s).\n\n"
+              f"Median of {args.frames} frames after 1 warm-up; ratios to Phong from {PAIRING_TEXT[args.pairing]}, "
+              f"median of {args.rounds} round(s).\n\n"
               "| scene | method | frame ms | kernel ms | speed-up vs Phong (frame) | (kernel) | vs Phong: max levels / NMSE / "
               "px > 1 level, within budget | vs exact Phong: max / NMSE | PSNR dB | triangles Gouraud / segments / Phong "
               "| visible pixels by Phong % | ceiling vs Phong (frame) |"
               "\n|---|---|---|---|---|---|---|---|---|---|---|---|")
     note = ("Ceiling: Phong's frame over this frame with its kernel replaced by a model, Gouraud's kernel plus the "
-            "share of visible pixels the choice gives to Phong times (Phong's kernel - Gouraud's), from the same round: "
+            "share of visible pixels the choice gives to Phong times (Phong's kernel - Gouraud's), Gouraud's from the same "
+            "round, Phong's from where the ratio's Phong comes from: "
             "what a combined kernel with no overhead of its own would reach with this choice and these host stages "
             "(none where the choice walks segments, whose pixels no run here prices).")
     print(header)
@@ -150,7 +181,7 @@ def main():
                                    "scene": rec["scene"], "measured_figure": rec["speedup_vs_phong_frame"],
                                    "measured_kernel_figure": rec["speedup_vs_phong_kernel"],
                                    "note": "speed-up of the whole frame (and of the kernel) against --method phong, "
-                                           + ("the Phong run right before" if args.paired else "same round")
+                                           + PAIRING_TEXT[args.pairing]
                                            + "; shared, loaded machine"})
         # The sources' adaptive Gouraud/Phong listing ([Dembitsky 2025, software/hardware rendering] ch. 3), as printed and as intended, and the
         # per-triangle choice of combined:auto against its budget (issue 4: faster than Phong, within budget).
@@ -177,7 +208,8 @@ def main():
                                "gouraud_fraction": choice["gouraud"] / max(1, choice["triangles"]) if choice else None,
                                "note": "combined:auto --max-error B (per-triangle choice, bound rule) against --method phong"})
         with open(args.json, "w") as f:
-            json.dump({"device": device, "frames": args.frames, "rounds": args.rounds, "paired": args.paired,
+            json.dump({"device": device, "frames": args.frames, "rounds": args.rounds,
+                       "paired": args.pairing == "adjacent", "pairing": args.pairing,
                        "measurements": records,
                        "claims": claims}, f, indent=2)
 

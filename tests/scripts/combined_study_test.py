@@ -44,6 +44,34 @@ check(study.ceiling(run(3.0, 2.0, {"gouraud": 60, "segments": 15, "phong": 25}),
 check(study.ceiling(run(3.0, 2.0, {"gouraud": 0, "segments": 0, "phong": 0}), phong, gouraud) is None,
       "a ceiling from no pixels")
 
+# The ratio to Phong: the median of the pairs' ratios where Phong ran in the same process (render --against),
+# else the ratio of the two runs' medians.
+same = {"frame_ms": 2.0, "stages_ms": {"kernel_ms": 1.0},
+        "against": {"frame_ms": 5.0, "stages_ms": {"kernel_ms": 4.0}, "frame_ratio": {"median": 1.7},
+                    "kernel_ratio": {"median": 3.5}}}
+check(study.pair_ratio(same, same["against"], "frame") == 1.7, "in-process frame ratio not the pairs' median")
+check(study.pair_ratio(same, same["against"], "kernel") == 3.5, "in-process kernel ratio not the pairs' median")
+check(study.pair_ratio(same, phong, "frame") == 2.0, "ratio of two runs' frames: %r" % study.pair_ratio(same, phong, "frame"))
+check(study.pair_ratio(same, phong, "kernel") == 3.0, "ratio of two runs' kernels")
+
+with tempfile.TemporaryDirectory() as tmp:
+    out = os.path.join(tmp, "paired.json")
+    proc = subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "combined_study.py"), "--binary", BINARY,
+                           "--scenes", os.path.join(SOURCE, "scenes", "sphere.json"), "--size", "480x270", "--frames", "3",
+                           "--pairing", "in-process", "--methods", "phong", "gouraud",
+                           "combined:0@16 --triangle-choice bound", "--json", out],
+                          capture_output=True, text=True)
+    check(proc.returncode == 0, "the in-process study failed: %s" % proc.stderr[-2000:])
+    if proc.returncode == 0:
+        doc = json.load(open(out))
+        check(doc.get("pairing") == "in-process", "pairing not recorded: %r" % doc.get("pairing"))
+        rows = {m["method"]: m for m in doc["measurements"]}
+        check("--against phong" in rows["gouraud"]["command"], "Gouraud not rendered against Phong: " + rows["gouraud"]["command"])
+        check("--against" not in rows["phong"]["command"], "Phong rendered against itself")
+        check(rows["combined:0@16 --triangle-choice bound"].get("ceiling_vs_phong_frame") is not None,
+              "no ceiling with in-process pairs")
+        check("alternating with its own in one process" in proc.stdout, "the table does not say where its ratios come from")
+
 with tempfile.TemporaryDirectory() as tmp:
     out = os.path.join(tmp, "study.json")
     proc = subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "combined_study.py"), "--binary", BINARY,
