@@ -12,8 +12,8 @@ writes the measurements and the source claims
 
 The ratio to Phong comes, by --pairing, from Phong's run in the same round (rounds, the default), from a
 Phong run right before (adjacent), or from Phong's frames alternating with the method's in the same process
-(in-process: `render --against phong`, the median of the pairs' ratios). On a host whose speed changes from
-one process to the next only the last compares like with like (bench/README.md, run AE). Example:
+(in-process: `render --against phong`, the median of the pairs' ratios). On a host whose speed changes for
+seconds at a time only the last compares like with like (bench/README.md, run AE). Example:
 
     scripts/combined_study.py --scenes scenes/teapot.json scenes/bunny.json --frames 11 --json combined.json
 """
