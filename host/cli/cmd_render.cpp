@@ -269,10 +269,12 @@ int run_render(const RenderArgs& a) {
   if (a.defer_min_triangles < -1 || a.defer_min_triangles > kMaxDeferMinTriangles)
     throw UsageError("--defer-min-triangles must be 0.." + std::to_string(kMaxDeferMinTriangles) + " (or -1, the default)");
   check_picture_options(a);
-  if (!a.against.empty()) AgainstFrames::check_method(a.against);
-  if (!a.against.empty() && (!a.distribute.empty() || is_device_list(a.device)))
-    throw UsageError("--against pairs frames of two renderers on one device in one process; not with --distribute "
-                     "or a device list ('" + (a.distribute.empty() ? a.device : "--distribute " + a.distribute) + "')");
+  if (!a.against.empty()) {
+    AgainstFrames::check_method(a.against);
+    if (!a.distribute.empty() || is_device_list(a.device))
+      throw UsageError("--against pairs frames of two renderers on one device in one process; not with --distribute "
+                       "or a device list ('" + (a.distribute.empty() ? a.device : "--distribute " + a.distribute) + "')");
+  }
   if (!a.distribute.empty()) return run_distributed(a, options, size);
   if (!a.rank_partition.empty()) throw UsageError("--rank-partition needs --distribute sort-last");
   if (!a.read_scene.empty()) throw UsageError("--read-scene needs --distribute (how MPI ranks get the scene)");

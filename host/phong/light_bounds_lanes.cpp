@@ -221,10 +221,8 @@ __attribute__((target("avx2"))) void light_lanes_avx2(const FrameLanes& f, const
 
 void light_lanes_sse(const FrameLanes& f, const Light& l, LightLanes& out) { LightLanesOf<4>::run(f, l, out); }
 
-}  // namespace
-
-namespace {
 std::atomic<bool> four_only{false};
+
 }  // namespace
 
 void four_float_lanes_only(bool only) { four_only = only; }

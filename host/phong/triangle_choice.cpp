@@ -494,12 +494,6 @@ void TriangleChooser::choose(std::size_t first, std::size_t last) {
   static const IncreasingTable diffuse_chord(0.5 * M_PI, [](double phi) { return gouraud_term_bound(phi, 1.0, true); });
   const auto chord_bound = [](const IncreasingTable& t, double phi) { return phi < 0.5 * M_PI ? t.at(phi) : 1.0; };
   const GouraudFitConstants& fit_constants = sh.fit_constants;
-  std::atomic<std::uint64_t>& gouraud = sh.gouraud;
-  std::atomic<std::uint64_t>& segments = sh.segments;
-  std::atomic<std::uint64_t>& without = sh.without;
-  std::atomic<std::uint64_t>& terminator = sh.terminator;
-  std::atomic<std::uint64_t>& skipped = sh.skipped;
-  std::atomic<std::uint64_t>& largest_bits = sh.largest_bits;
   std::uint64_t n_gouraud = 0, n_segments = 0, n_without = 0, n_terminator = 0, n_skipped = 0;
   double largest = 0.0;
   FrameLanes frame;
@@ -632,15 +626,15 @@ void TriangleChooser::choose(std::size_t first, std::size_t last) {
     n_gouraud += o.method == TriangleMethod::gouraud;
     n_segments += o.method == TriangleMethod::segments;
   }
-  gouraud += n_gouraud;
-  segments += n_segments;
-  without += n_without;
-  terminator += n_terminator;
-  skipped += n_skipped;
+  sh.gouraud += n_gouraud;
+  sh.segments += n_segments;
+  sh.without += n_without;
+  sh.terminator += n_terminator;
+  sh.skipped += n_skipped;
   // A positive double's bits order like the double: an atomic max on the bits.
-  std::uint64_t bits, seen = largest_bits.load();
+  std::uint64_t bits, seen = sh.largest_bits.load();
   std::memcpy(&bits, &largest, sizeof bits);
-  while (bits > seen && !largest_bits.compare_exchange_weak(seen, bits)) {
+  while (bits > seen && !sh.largest_bits.compare_exchange_weak(seen, bits)) {
   }
 }
 
