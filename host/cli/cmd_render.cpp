@@ -59,6 +59,7 @@ struct RenderArgs {
   PlanArgs plan;
   std::string tune_cache;
   std::string reference_image, error_map, error_reference = "ideal";  // the pictures of the error
+  std::string triangle_map;  // the reference's visible triangle per pixel
   std::string distribute, rank_partition, read_scene;  // --distribute: MPI ranks (docs/distributed.md)
   std::string device_origin = "--device";  // or PARASHADE_DEVICE (device_option.hpp)
   bool no_tuned = false, explicit_config = false, keep_going = false;  // explicit: --tile, --work-items, --cu or --partition given
@@ -106,7 +107,26 @@ nlohmann::json error_figures(const ReferenceImage& ref, Method method, const Ren
 }
 
 // --reference-image and --error-map were given.
-bool wants_pictures(const RenderArgs& a) { return !a.reference_image.empty() || !a.error_map.empty(); }
+bool wants_pictures(const RenderArgs& a) {
+  return !a.reference_image.empty() || !a.error_map.empty() || !a.triangle_map.empty();
+}
+
+// The first picture option given, for messages.
+std::string picture_option(const RenderArgs& a) {
+  return !a.error_map.empty() ? "--error-map" : !a.reference_image.empty() ? "--reference-image" : "--triangle-map";
+}
+
+// Every output destination is writable and none overwrites an input or another output (before any work).
+void check_destinations(const RenderArgs& a, const std::vector<std::filesystem::path>& inputs) {
+  check_distinct_files({{"-o", a.output}, {"--report", a.report}, {"--reference-image", a.reference_image},
+                        {"--error-map", a.error_map}, {"--triangle-map", a.triangle_map}},
+                       inputs);
+  check_image_destination(a.output);
+  if (!a.report.empty()) check_report_destination(a.report);
+  if (!a.reference_image.empty()) check_image_destination(a.reference_image);
+  if (!a.error_map.empty()) check_image_destination(a.error_map);
+  if (!a.triangle_map.empty()) check_triangle_map_destination(a.triangle_map);
+}
 
 // The pictures' options make sense together with the rest of the command line (before any work).
 void check_picture_options(const RenderArgs& a) {
@@ -114,8 +134,7 @@ void check_picture_options(const RenderArgs& a) {
     throw UsageError("--error-reference must be ideal (the method's own ideal) or exact (exact Phong), not '" +
                      a.error_reference + "'");
   if (wants_pictures(a) && a.no_error)
-    throw UsageError(std::string(a.error_map.empty() ? "--reference-image" : "--error-map") +
-                     " needs the exact reference, which --no-error skips");
+    throw UsageError(picture_option(a) + " needs the exact reference, which --no-error skips");
 }
 
 // --reference-image and --error-map against the reference --error-reference names, staged: the caller
@@ -133,6 +152,10 @@ std::vector<StagedFile> stage_error_pictures(const RenderArgs& a, Method method,
   if (!a.error_map.empty()) {
     files.push_back(stage_error_map(a.error_map, image, ref.covered, values, lines));
     lines.back() += ", against " + name;
+  }
+  if (!a.triangle_map.empty()) {
+    files.push_back(stage_image(a.triangle_map, triangle_map_image(ref.triangle, ref.width, ref.height)));
+    lines.push_back("triangle map " + a.triangle_map + ": the reference's visible triangle + 1 per pixel (R high byte)");
   }
   return files;
 }
@@ -192,13 +215,7 @@ int run_distributed_checked(const RenderArgs& a, RenderOptions options, const st
     return scene;
   };
   job.check_destinations = [&] {
-    check_distinct_files({{"-o", a.output}, {"--report", a.report}, {"--reference-image", a.reference_image},
-                          {"--error-map", a.error_map}},
-                         {a.scene});
-    check_image_destination(a.output);
-    if (!a.report.empty()) check_report_destination(a.report);
-    if (!a.reference_image.empty()) check_image_destination(a.reference_image);
-    if (!a.error_map.empty()) check_image_destination(a.error_map);
+    check_destinations(a, {a.scene});
   };
   const Method method = options.method;
   // Rank 0 holds the whole image and scene here; the pictures are written at once, before the image.
@@ -290,17 +307,11 @@ int run_render(const RenderArgs& a) {
   std::vector<std::filesystem::path> inputs;  // the scene file and its meshes
   Scene scene = load_scene_at(a.scene, size, a.size, &inputs);
   for (const std::string& w : scene.warnings) std::cerr << "parashade: warning: " << w << "\n";
-  check_distinct_files({{"-o", a.output}, {"--report", a.report}, {"--reference-image", a.reference_image},
-                        {"--error-map", a.error_map}},
-                       inputs);
   // Fail on an unwritable output before the work, not after it.
+  check_destinations(a, inputs);
   const std::filesystem::path out_path(a.output);
-  check_image_destination(out_path);
-  if (!a.report.empty()) check_report_destination(a.report);
-  if (!a.reference_image.empty()) check_image_destination(a.reference_image);
-  if (!a.error_map.empty()) check_image_destination(a.error_map);
   if (wants_pictures(a) && is_device_list(a.device) && !units_on_sub_devices)
-    throw UsageError("--reference-image and --error-map need the error figures, which a frame split across devices ('" +
+    throw UsageError(picture_option(a) + " needs the error figures, which a frame split across devices ('" +
                      a.device + "') does not compute; render on one device");
 
   if (a.keep_going && units_on_sub_devices)
@@ -619,6 +630,9 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("--error-map", a->error_map,
                   "Also write the per-pixel error (levels, largest channel difference, as the report's max) as a "
                   "viridis colour map with its scale; white: not compared (docs/pictures.md)");
+  cmd->add_option("--triangle-map", a->triangle_map,
+                  "Also write the exact reference's visible triangle per pixel (its index + 1 in 24 bits, R the high "
+                  "byte, B the low; 0 where none) as a png, tif or ppm: an ID buffer for studies (docs/pictures.md)");
   cmd->add_option("--error-reference", a->error_reference,
                   "Reference of --reference-image and --error-map: ideal (the method's own ideal, the report's "
                   "'implementation' error) or exact (exact Phong, the report's 'method' error)")

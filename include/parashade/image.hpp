@@ -54,4 +54,14 @@ RenderedImage read_image(const std::filesystem::path& path, int* channels = null
 // Throws InputError when `levels` does not hold width x height values.
 RenderedImage levels_image(const std::vector<glm::dvec3>& levels, int width, int height);
 
+// An ID buffer: each pixel's visible triangle (`triangle`: an index per pixel, -1 where none, as
+// ReferenceImage::triangle) plus one in 24 bits, R the high byte and B the low, 0 where none; alpha 255.
+// Lossless only in lossless formats (triangle_map_destination checks). Throws InputError when `triangle`
+// does not hold width x height indices or an index does not fit in 24 bits.
+RenderedImage triangle_map_image(const std::vector<std::int32_t>& triangle, int width, int height);
+
+// Throws InputError unless `path` names a format that keeps 8-bit channels exactly (png, tif, tiff, ppm):
+// a lossy one would change the triangles' numbers.
+void check_triangle_map_destination(const std::filesystem::path& path);
+
 }  // namespace parashade
