@@ -614,7 +614,9 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("--triangle-choice", a->triangle_choice,
                   "combined:*: per triangle Gouraud or the segments: bound (combined:auto's default: Gouraud where its "
                   "expected error meets --max-error), sources[:M,Q,P] (the thesis's thresholds 0.9,0.004,0.008), "
-                  "sources-literal[:M,Q,P] (its listing as printed), none (combined:K's default); docs/triangle-choice.md");
+                  "sources-literal[:M,Q,P] (its listing as printed), list:FILE (Phong for the screen triangles FILE names, "
+                  "Gouraud for the rest: a choice made elsewhere, e.g. scripts/mix_oracle.py's), none (combined:K's "
+                  "default); docs/triangle-choice.md");
   cmd->add_flag("--highlight-test", a->highlight_test,
                 "combined:*: skip the specular term per triangle and light where no highlight can fall ([Dembitsky 2025, software/hardware rendering] ch. 3)");
   cmd->add_option("--against", a->against,

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <limits>
 
 #include "parashade/errors.hpp"
 
@@ -28,14 +30,44 @@ CombinedConfig parse_combined(const std::string& text) {
   return c;
 }
 
+namespace {
+
+// list:FILE's triangles: whitespace-separated indices, each below 2^31.
+std::shared_ptr<const std::vector<std::uint8_t>> read_phong_list(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError("--triangle-choice list: cannot read '" + file + "'");
+  auto listed = std::make_shared<std::vector<std::uint8_t>>();
+  std::string word;
+  while (in >> word) {
+    char* end = nullptr;
+    const long long t = std::strtoll(word.c_str(), &end, 10);
+    if (word.empty() || *end != '\0' || t < 0 || t > std::numeric_limits<std::int32_t>::max())
+      throw InputError("--triangle-choice list: '" + file + "' holds '" + word + "', not a triangle index");
+    if (std::size_t(t) >= listed->size()) listed->resize(std::size_t(t) + 1, 0);
+    (*listed)[std::size_t(t)] = 1;
+  }
+  if (in.bad()) throw InputError("--triangle-choice list: reading '" + file + "' failed");
+  return listed;
+}
+
+}  // namespace
+
 void parse_triangle_rule(const std::string& text, CombinedConfig& c) {
   const std::size_t colon = text.find(':');
   const std::string name = text.substr(0, colon);
+  if (name == "list") {
+    if (colon == std::string::npos || colon + 1 == text.size())
+      throw UsageError("triangle choice '" + text + "': list needs a file, list:FILE");
+    c.list_file = text.substr(colon + 1);
+    c.phong_list = read_phong_list(c.list_file);
+    c.rule = TriangleRule::list;
+    return;
+  }
   if (name == "none") c.rule = TriangleRule::none;
   else if (name == "bound") c.rule = TriangleRule::bound;
   else if (name == "sources") c.rule = TriangleRule::sources;
   else if (name == "sources-literal") c.rule = TriangleRule::sources_literal;
-  else throw UsageError("triangle choice '" + text + "': expected none, bound, sources[:M,Q,P] or sources-literal[:M,Q,P]");
+  else throw UsageError("triangle choice '" + text + "': expected none, bound, sources[:M,Q,P], sources-literal[:M,Q,P] or list:FILE");
   if (colon == std::string::npos) return;
   const bool sources = c.rule == TriangleRule::sources || c.rule == TriangleRule::sources_literal;
   double v[3];
@@ -55,6 +87,7 @@ std::string triangle_rule_name(const CombinedConfig& c) {
     case TriangleRule::bound: return "bound";
     case TriangleRule::sources: return "sources";
     case TriangleRule::sources_literal: return "sources-literal";
+    case TriangleRule::list: return "list";
   }
   return "none";
 }

@@ -446,6 +446,9 @@ TriangleChooser::TriangleChooser(const Scene& s, const ScreenGeometry& g, const 
                                  std::vector<TriangleShading>& out, ChoiceArithmetic arithmetic) {
   if (s.lights.size() > kChoiceMaxLights)
     throw InputError("the per-triangle choice handles at most " + std::to_string(kChoiceMaxLights) + " lights");
+  if (c.rule == TriangleRule::list && c.phong_list && c.phong_list->size() > g.triangles.size())
+    throw InputError("--triangle-choice list: '" + c.list_file + "' names triangle " +
+                     std::to_string(c.phong_list->size() - 1) + ", the frame has " + std::to_string(g.triangles.size()));
   out.resize(g.triangles.size());
   shared_ = std::make_unique<Shared>(s, g, c, shading_budget, out);
   Shared& sh = *shared_;
@@ -494,6 +497,8 @@ void TriangleChooser::choose(std::size_t first, std::size_t last) {
   static const IncreasingTable diffuse_chord(0.5 * M_PI, [](double phi) { return gouraud_term_bound(phi, 1.0, true); });
   const auto chord_bound = [](const IncreasingTable& t, double phi) { return phi < 0.5 * M_PI ? t.at(phi) : 1.0; };
   const GouraudFitConstants& fit_constants = sh.fit_constants;
+  // list:FILE (only with that rule): the triangles it gives to Phong.
+  const auto listed_phong = [&c](std::size_t t) { return t < c.phong_list->size() && (*c.phong_list)[t] != 0; };
   std::uint64_t n_gouraud = 0, n_segments = 0, n_without = 0, n_terminator = 0, n_skipped = 0;
   double largest = 0.0;
   FrameLanes frame;
@@ -520,8 +525,11 @@ void TriangleChooser::choose(std::size_t first, std::size_t last) {
     unsigned mask = all_lights;
     bool fits = false;
     double expected = 0.0;
-    if (!bound) {
-      // The sources' listing decides Gouraud; the mask only when --highlight-test asks for it.
+    if (c.rule == TriangleRule::list && !masked && !c.automatic) {
+      // A list alone decides, and nothing below needs the triangle's frame: the choice costs next to nothing.
+      fits = !clipped && !listed_phong(t);
+    } else if (!bound) {
+      // The sources' listing or a list decides Gouraud; the mask only when --highlight-test asks for it.
       const TriangleFrame f = triangle_frame(s, g, t);
       terms.usable = f.usable;
       for (int k = 0; k < 3; ++k) terms.n[k] = f.n[k];
@@ -531,7 +539,11 @@ void TriangleChooser::choose(std::size_t first, std::size_t last) {
         for (std::size_t i = 0; i < lights; ++i)
           if (light_bounds(f, s.lights[i], 2.0).max_n_dot_h > threshold[i]) mask |= 1u << i;
       }
-      fits = c.rule != TriangleRule::none && sources_choose_gouraud(s, f, c);
+      if (c.rule == TriangleRule::list) {
+        fits = !clipped && !listed_phong(t);
+      } else {
+        fits = c.rule != TriangleRule::none && sources_choose_gouraud(s, f, c);
+      }
     } else if (lanes) {
       mask = fit.mask[lane];
       fits = fit.fits[lane] && !clipped;

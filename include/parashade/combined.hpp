@@ -2,14 +2,17 @@
 // Combined Gouraud/Phong shading on digital segments ([Romanyuk & Romanyuk, combined shading], docs/combined.md): exact Blinn–Phong
 // at the ends of segments of 2^k pixels along each span, linear interpolation inside. Here: the
 // method's parameters and the worst-case error bounds that `combined:auto` chooses k from.
+#include <cstdint>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "parashade/scene.hpp"
 
 namespace parashade {
 
 // Per-triangle choice between Gouraud and the segments (triangle_choice.hpp).
-enum class TriangleRule { none, bound, sources, sources_literal };
+enum class TriangleRule { none, bound, sources, sources_literal, list };
 
 struct CombinedConfig {
   int k = 2;               // segment length 2^k pixels (fixed k)
@@ -24,12 +27,18 @@ struct CombinedConfig {
   // Per-triangle Gouraud choice: none for combined:K unless asked, bound for combined:auto.
   TriangleRule rule = TriangleRule::none;
   double source_m = 0.9, source_q = 0.004, source_p = 0.008;  // the sources' thresholds
+  // list: a choice made elsewhere (scripts/mix_oracle.py's): 1 for each screen triangle that goes by Phong, the
+  // rest by Gouraud; read from list_file, screen triangle indices as render --triangle-map numbers them minus one.
+  std::shared_ptr<const std::vector<std::uint8_t>> phong_list;
+  std::string list_file;
   // combined:auto with a choice: triangles whose segments could not reach 2^walk_min_k pixels go by Phong
   // per pixel (the walk's fixed costs exceed what shorter segments save); above kCombinedMaxK: none walk.
   int walk_min_k = 2;
 };
 
-// "none", "bound", "sources[:M,Q,P]", "sources-literal[:M,Q,P]"; throws UsageError naming the text.
+// "none", "bound", "sources[:M,Q,P]", "sources-literal[:M,Q,P]", "list:FILE" (FILE: whitespace-separated screen
+// triangle indices to shade by Phong); throws UsageError naming the text, InputError for an unreadable or
+// malformed FILE.
 void parse_triangle_rule(const std::string& text, CombinedConfig& c);
 std::string triangle_rule_name(const CombinedConfig& c);
 
