@@ -169,6 +169,12 @@ phong_methods() {
   "$PYTHON" scripts/phong_methods.py --binary "$BUILD/parashade" --scenes $PHONG_SCENES \
       --frames 11 --json "$OUT/phong-methods.json" >"$OUT/phong-methods.md"
 }
+# Any Gouraud/Phong mix within NMSE 1e-4 against an oracle's (docs/triangle-choice.md §8), on the target scenes.
+mix_oracle() {
+  # shellcheck disable=SC2086
+  "$PYTHON" scripts/mix_oracle.py --binary "$BUILD/parashade" --scenes $ORACLE_SCENES --frames 30 --budgets 8 16 20 \
+      --json "$OUT/mix-oracle.json" --markdown "$OUT/mix-oracle.md" >/dev/null
+}
 normalize_bench() {
   have_bench bench_normalize || return 0
   "$BUILD/bench/bench_normalize" --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true \
@@ -186,7 +192,11 @@ report() {
 }
 
 PHONG_SCENES="scenes/sphere.json scenes/teapot.json scenes/robot.json"
-if [ -n "${PARASHADE_MESH_DIR:-}" ]; then PHONG_SCENES="$PHONG_SCENES scenes/bunny.json"; fi
+ORACLE_SCENES="scenes/sphere.json scenes/teapot.json"
+if [ -n "${PARASHADE_MESH_DIR:-}" ]; then
+  PHONG_SCENES="$PHONG_SCENES scenes/bunny.json"
+  ORACLE_SCENES="$ORACLE_SCENES scenes/bunny.json"
+fi
 
 suite() {
   if [ "$QUICK" = 1 ]; then
@@ -221,6 +231,7 @@ suite() {
   step "phong-study" "$BUILD/parashade" phong-study -q --report "$OUT/phong-study.json"
   step "combined study" combined_study
   step "phong methods" phong_methods
+  step "mix oracle" mix_oracle
   step "normalize bench" normalize_bench
   if [ "$PHONG_ONLY" = 0 ]; then
     step "peak memory" "$PYTHON" scripts/peak_memory.py --binary "$BUILD/parashade" -o "$OUT/memory.json"
