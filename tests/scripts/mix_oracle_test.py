@@ -53,6 +53,18 @@ check(near(s["phong_share_per_triangle"], 0.375), "per-triangle share %r, not 3/
 check(s["oracle_triangles"] == [2] and near(s["oracle_predicted_nmse"], 0.005),
       "whole-triangle oracle %r, predicted NMSE %r: not triangle 2 and 300 / 60000" % (s["oracle_triangles"],
                                                                                        s["oracle_predicted_nmse"]))
+# The centroid rule: three triangles of three pixels in a row each (reference 0, 100, 200; spread 3 x 3 x 20000),
+# Gouraud off at the middle pixel only in triangle 0 (10: 300) and 2 (5: 75), at both ends only in triangle 1 (20:
+# 2400). All-Gouraud 2775; at most 0.005 (900) leaves 1875 to remove. The samples rank 0, 2, 1: all nine pixels
+# before enough is removed, where the oracle takes 1875 / 2400 of triangle 1 (its three pixels counted in part).
+R3 = np.repeat(np.tile([0.0, 100.0, 200.0], 3)[:, None], 3, axis=1)
+G3 = R3 + np.repeat(np.array([0, 10, 0, 20, 0, 20, 0, 5, 0.0])[:, None], 3, axis=1)
+ids3, x3, y3 = np.array([0, 0, 0, 1, 1, 1, 2, 2, 2]), np.arange(9.0), np.zeros(9)
+s3 = oracle.oracle_shares(G3, R3.copy(), R3, ids3, 0.005, x3, y3)
+check(near(s3["phong_share_centroid_rule"], 1.0) and near(s3["phong_share_per_triangle"], 1875 / 2400 * 3 / 9),
+      "centroid rule %r (not 1) against the oracle's %r (not 0.26)" % (s3["phong_share_centroid_rule"],
+                                                                     s3["phong_share_per_triangle"]))
+check(s["phong_share_centroid_rule"] is None, "a centroid share without positions")
 # Phong 4 ms (kernel 3), Gouraud 2 ms (kernel 1): a quarter of the pixels by Phong costs 0.5 ms more, 4 / 2.5.
 check(near(oracle.bound(4.0, 2.0, 3.0, 1.0, 0.25), 1.6), "bound of the worked example")
 check(near(oracle.allowed_share(4.0, 2.0, 3.0, 1.0, 1.6), 0.25), "share the target allows")
@@ -73,6 +85,8 @@ with tempfile.TemporaryDirectory() as tmp:
         check(pp is not None and pt is not None and 0 < pp <= pt <= 1,
               "per-pixel share %r should be positive and at most the per-triangle %r" % (pp, pt))
         check(row["bound_per_pixel"] >= row["bound_per_triangle"], "fewer Phong pixels gave a lower bound")
+        check(row["phong_share_centroid_rule"] is not None and row["phong_share_centroid_rule"] >= pt,
+              "the centroid rule's share %r below the per-triangle oracle's %r" % (row["phong_share_centroid_rule"], pt))
         rule = row["rules"][0]
         check(rule["max_error"] == 2 and (rule["nmse"] > row["max_nmse"] or rule["phong_share"] >= pt),
               "the bound rule's share %r below the per-triangle oracle's %r" % (rule["phong_share"], pt))
