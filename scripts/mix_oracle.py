@@ -208,6 +208,12 @@ def oracle_run(binary, scene, size, shares, max_nmse, frames, tmp):
 
 
 def study(binary, scene, size, max_nmse, frames, target, budgets, tmp):
+    row = measure(binary, scene, size, max_nmse, frames, target, budgets, tmp)
+    row.pop("oracle_triangles")  # thousands of ids; the rendered choice keeps their count
+    return row
+
+
+def measure(binary, scene, size, max_nmse, frames, target, budgets, tmp):
     g = render(binary, scene, ["--method", "gouraud", "--frames", "1", "--triangle-map", os.path.join(tmp, "ids.png"),
                                "--reference-image", os.path.join(tmp, "ref.exr"), "--error-reference", "exact"],
                tmp, "gouraud", size)
