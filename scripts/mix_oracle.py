@@ -22,10 +22,11 @@ the triangles differently, and the study stops).
 
 Then `render --method gouraud --against phong` (frames alternating in one process) gives both frames and kernels,
 and the bound is Phong's frame over Gouraud's frame plus the share s of the visible pixels at Phong's extra kernel
-cost per pixel:  P / (G + s (K_P - K_G)), per pair of frames, the median over the pairs.  It assumes an oracle that costs nothing and a kernel that costs each
-pixel what its own method's kernel costs; the host stages are Gouraud's (a mix needs Phong's normals too). So it
-is optimistic: a real mix is slower. It also prints the largest share the --target ratio allows, and with --budgets the share and NMSE of
-the bound rule's choice (`combined:0 --triangle-choice bound --max-error B`) for comparison.
+cost per pixel: P / (G + s (K_P - K_G)), per pair of frames, the median over the pairs. It assumes an oracle that
+costs nothing and a kernel that costs each pixel what its own method's kernel costs; the host stages are Gouraud's
+(a mix needs Phong's normals too). So it is optimistic: a real mix is slower. It also prints the largest share the
+--target ratio allows, and with --budgets the bound rule's choice (`combined:0 --triangle-choice bound
+--max-error B`) rendered the same way, for comparison.
 
     scripts/mix_oracle.py --scenes scenes/teapot.json scenes/bunny.json --json oracle.json --markdown oracle.md
 """
@@ -76,15 +77,21 @@ def triangle_ids(path):
     return (m[..., 0] << 16) | (m[..., 1] << 8) | m[..., 2]
 
 
+def by_gain_per_weight(gain, weight, excess):
+    """The items in order of gain per unit of weight, and k: the first k + 1 of them remove `excess` (k = len when
+    even all do not)."""
+    order = np.argsort(-(gain / weight), kind="stable")
+    cum = np.cumsum(gain[order])
+    return order, cum, int(np.searchsorted(cum, excess))
+
+
 def fewest_phong(gain, weight, excess):
     """The least weight whose gain reaches `excess`, items taken by gain per unit of weight (fractional knapsack:
     the last item counts in part, which makes it a lower bound for whole items). 0 when nothing is needed;
     None when even everything is not enough."""
     if excess <= 0:
         return 0.0
-    order = np.argsort(-(gain / weight), kind="stable")
-    cum = np.cumsum(gain[order])
-    k = int(np.searchsorted(cum, excess))
+    order, cum, k = by_gain_per_weight(gain, weight, excess)
     if k >= len(order):
         return None
     before = cum[k - 1] if k > 0 else 0.0
@@ -92,9 +99,10 @@ def fewest_phong(gain, weight, excess):
 
 
 def sampled_rule_share(ids, x, y, G, P, t_gain, excess):
-    """What a practical rule could do: whole triangles by Phong in order of |Gouraud - Phong|^2 at one pixel, the
-    visible pixel nearest the triangle's visible centroid (ties: the first), until the excess is removed; the number of
-    pixels (None if never). A rule on the host would sample the triangle's own centroid, so this is an estimate."""
+    """What a one-sample rule could do (built and measured in docs/triangle-choice.md §8: it reaches these shares,
+    not the speed): whole triangles by Phong in order of |Gouraud - Phong|^2 at one pixel, the visible pixel
+    nearest the triangle's visible centroid (ties: the first), until the excess is removed; the number of pixels
+    (None if never). A rule on the host samples the triangle's own centroid, so this is an estimate."""
     if excess <= 0:
         return 0.0
     n = np.bincount(ids).astype(np.float64)
@@ -135,9 +143,7 @@ def oracle_shares(G, P, R, ids, max_nmse, x=None, y=None):
     listed, predicted = [], eg.sum()
     if excess > 0:
         ids_useful = np.nonzero(useful)[0]
-        order = np.argsort(-(t_gain[useful] / t_pixels[useful]), kind="stable")
-        cum = np.cumsum(t_gain[useful][order])
-        k = int(np.searchsorted(cum, excess))
+        order, cum, k = by_gain_per_weight(t_gain[useful], t_pixels[useful], excess)
         if k < len(order):
             listed = [int(i) for i in ids_useful[order[:k + 1]]]
             predicted = eg.sum() - cum[k]
@@ -208,12 +214,12 @@ def oracle_run(binary, scene, size, shares, max_nmse, frames, tmp):
 
 
 def study(binary, scene, size, max_nmse, frames, target, budgets, tmp):
-    row = measure(binary, scene, size, max_nmse, frames, target, budgets, tmp)
+    row = measure_scene(binary, scene, size, max_nmse, frames, target, budgets, tmp)
     row.pop("oracle_triangles")  # thousands of ids; the rendered choice keeps their count
     return row
 
 
-def measure(binary, scene, size, max_nmse, frames, target, budgets, tmp):
+def measure_scene(binary, scene, size, max_nmse, frames, target, budgets, tmp):
     g = render(binary, scene, ["--method", "gouraud", "--frames", "1", "--triangle-map", os.path.join(tmp, "ids.png"),
                                "--reference-image", os.path.join(tmp, "ref.exr"), "--error-reference", "exact"],
                tmp, "gouraud", size)

@@ -106,7 +106,7 @@ nlohmann::json error_figures(const ReferenceImage& ref, Method method, const Ren
   return errors;
 }
 
-// --reference-image and --error-map were given.
+// --reference-image, --error-map or --triangle-map was given.
 bool wants_pictures(const RenderArgs& a) {
   return !a.reference_image.empty() || !a.error_map.empty() || !a.triangle_map.empty();
 }
@@ -137,8 +137,8 @@ void check_picture_options(const RenderArgs& a) {
     throw UsageError(picture_option(a) + " needs the exact reference, which --no-error skips");
 }
 
-// --reference-image and --error-map against the reference --error-reference names, staged: the caller
-// commits them with its other outputs.
+// --reference-image and --error-map against the reference --error-reference names, and --triangle-map, staged:
+// the caller commits them with its other outputs.
 std::vector<StagedFile> stage_error_pictures(const RenderArgs& a, Method method, const ReferenceImage& ref,
                                              const RenderedImage& image, std::vector<std::string>& lines) {
   const bool exact = a.error_reference == "exact";

@@ -41,7 +41,7 @@ std::shared_ptr<const std::vector<std::uint8_t>> read_phong_list(const std::stri
   while (in >> word) {
     char* end = nullptr;
     const long long t = std::strtoll(word.c_str(), &end, 10);
-    if (word.empty() || *end != '\0' || t < 0 || t > std::numeric_limits<std::int32_t>::max())
+    if (*end != '\0' || t < 0 || t > std::numeric_limits<std::int32_t>::max())
       throw InputError("--triangle-choice list: '" + file + "' holds '" + word + "', not a triangle index");
     if (std::size_t(t) >= listed->size()) listed->resize(std::size_t(t) + 1, 0);
     (*listed)[std::size_t(t)] = 1;
