@@ -187,10 +187,15 @@ def main():
             ])
             error_pictures(tmp, "sort-last")
         elif GROUP == "sort-first":
+            # --triangle-choice list:FILE numbers the whole frame's triangles: each band's rank must see the same.
+            phong_list = os.path.join(tmp, "phong-triangles.txt")
+            with open(phong_list, "w") as f:
+                f.write(" ".join(str(t) for t in range(0, 6320, 3)))
             identity(tmp, "sort-first", [
                 ("gouraud float", SCENE, [], [(1, []), (2, []), (3, []), (4, [])]),
                 ("depth ties", tie, [], [(3, [])]),
                 ("combined:2", SCENE, ["--method", "combined:2"], [(3, [])]),
+                ("combined:0 list", SCENE, ["--method", "combined:0", "--triangle-choice", "list:" + phong_list], [(3, [])]),
                 ("dda fixed", SCENE, ["--coverage", "dda", "--arith", "fixed"], [(2, [])]),
                 ("sierpinski:1", SCENE, ["--units", "sierpinski:1"], [(3, [])]),
                 ("phong slerp", SCENE, ["--method", "phong", "--normalize", "slerp"], [(2, [])]),
