@@ -4,24 +4,16 @@ and --size passed on, in a real study of the sphere with Phong, Gouraud and one 
 
     combined_study_test.py SOURCE_DIR PARASHADE_BINARY
 """
-import importlib.util
 import json
 import os
 import subprocess
 import sys
 import tempfile
 
+from checks import check, finish, load_script
+
 SOURCE, BINARY = sys.argv[1], sys.argv[2]
-spec = importlib.util.spec_from_file_location("combined_study", os.path.join(SOURCE, "scripts", "combined_study.py"))
-study = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(study)
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL: " + what)
+study = load_script(SOURCE, "combined_study")
 
 
 def run(frame, kernel, pixels=None):
@@ -91,4 +83,4 @@ with tempfile.TemporaryDirectory() as tmp:
         check(mixed.get("width") == 960 and mixed.get("height") == 540, "--size not passed to render: %r x %r"
               % (mixed.get("width"), mixed.get("height")))
 
-sys.exit(1 if failures else 0)
+finish()

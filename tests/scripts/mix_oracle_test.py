@@ -4,7 +4,6 @@ sphere at 320x180 whose own check (its NMSE of all-Gouraud and all-Phong equal t
 
     mix_oracle_test.py SOURCE_DIR PARASHADE_BINARY
 """
-import importlib.util
 import json
 import os
 import subprocess
@@ -13,17 +12,10 @@ import tempfile
 
 import numpy as np
 
+from checks import check, finish, load_script
+
 SOURCE, BINARY = sys.argv[1], sys.argv[2]
-spec = importlib.util.spec_from_file_location("mix_oracle", os.path.join(SOURCE, "scripts", "mix_oracle.py"))
-oracle = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(oracle)
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL: " + what)
+oracle = load_script(SOURCE, "mix_oracle")
 
 
 def near(a, b):
@@ -91,6 +83,4 @@ with tempfile.TemporaryDirectory() as tmp:
         check(rule["max_error"] == 2 and (rule["nmse"] > row["max_nmse"] or rule["phong_share"] >= pt),
               "the bound rule's share %r below the per-triangle oracle's %r" % (rule["phong_share"], pt))
 
-if failures:
-    sys.exit("%d failure(s)" % len(failures))
-print("ok")
+finish()

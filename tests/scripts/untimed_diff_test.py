@@ -10,14 +10,9 @@ import subprocess
 import sys
 import tempfile
 
+from checks import check, finish
+
 SCRIPT = os.path.join(sys.argv[1], "scripts", "untimed_diff.py")
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("FAIL: " + what)
 
 
 def write(d, files):
@@ -59,4 +54,4 @@ with tempfile.TemporaryDirectory() as tmp:
     rc, out = run(a, b)
     check(rc == 1 and "s.json: only in" in out, "a missing file: exit %d\n%s" % (rc, out))
 
-sys.exit(1 if failures else 0)
+finish()
