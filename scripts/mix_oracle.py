@@ -171,7 +171,8 @@ def paired_bound(phong_frames, gouraud_frames, phong_kernel, gouraud_kernel, sha
     both frames of a pair, so the pairs' median holds where the two medians would not."""
     if share is None:
         return None
-    return statistics.median(bound(p, g, phong_kernel, gouraud_kernel, share) for p, g in zip(phong_frames, gouraud_frames))
+    return statistics.median(bound(p, g, phong_kernel, gouraud_kernel, share)
+                             for p, g in zip(phong_frames, gouraud_frames))
 
 
 def allowed_share(phong_frame, gouraud_frame, phong_kernel, gouraud_kernel, target):
@@ -192,7 +193,8 @@ def mix_run(binary, scene, size, choice, frames, tmp):
     total = v["gouraud"] + v["segments"] + v["phong"]
     return {"phong_share": v["phong"] / total if total else None, "nmse": r["error"]["method"]["nmse"],
             "frame_ratio": r["against"]["frame_ratio"]["median"], "frame_ratio_p10": r["against"]["frame_ratio"]["p10"],
-            "frame_ratio_p90": r["against"]["frame_ratio"]["p90"], "kernel_ratio": r["against"]["kernel_ratio"]["median"],
+            "frame_ratio_p90": r["against"]["frame_ratio"]["p90"],
+            "kernel_ratio": r["against"]["kernel_ratio"]["median"],
             "choice_ms": r["stages_ms"].get("choice_ms", 0.0), "frame_ms": r["frame_ms"]}
 
 
@@ -280,7 +282,8 @@ def markdown(rows):
             fmt(r["bound_per_pixel"], ".2f") + "x", fmt(r["bound_per_triangle"], ".2f") + "x"))
     lines += ["", "Rendered (`combined:0`, frames alternating with exact Phong's; ratio = Phong / this, median of the "
               "pairs, p10-p90):", "",
-              "| scene | size | choice | Phong share of visible pixels | NMSE | frame ratio | kernel ratio | choice ms |",
+              "| scene | size | choice | Phong share of visible pixels | NMSE | frame ratio | kernel ratio "
+              "| choice ms |",
               "|---|---|---|---|---|---|---|---|"]
     for r in rows:
         runs = ([("oracle (`list`, %d triangles)" % r["oracle_choice"]["triangles"], r["oracle_choice"])]

@@ -35,7 +35,8 @@ void check_triangle_map_destination(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   if (ext != ".png" && ext != ".tif" && ext != ".tiff" && ext != ".ppm")
-    throw InputError("cannot write " + path.string() + ": a triangle map needs a lossless 8-bit format (png, tif, ppm)");
+    throw InputError("cannot write " + path.string() +
+                     ": a triangle map needs a lossless 8-bit format (png, tif, ppm)");
   check_image_destination(path);
 }
 

@@ -25,7 +25,8 @@ class CliTriangleList : public CliTest {
   }
   std::string rendered_as(const std::string& method, const std::string& name) const {
     const fs::path out = out_dir() / name;
-    const RunResult r = run_parashade({"render", scene_.string(), "-o", out.string(), "--method", method, "--no-error", "-q"});
+    const RunResult r =
+        run_parashade({"render", scene_.string(), "-o", out.string(), "--method", method, "--no-error", "-q"});
     EXPECT_EQ(r.exit_code, kOk) << r;
     return bytes_of(out);
   }

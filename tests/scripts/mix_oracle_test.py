@@ -78,7 +78,8 @@ with tempfile.TemporaryDirectory() as tmp:
               "per-pixel share %r should be positive and at most the per-triangle %r" % (pp, pt))
         check(row["bound_per_pixel"] >= row["bound_per_triangle"], "fewer Phong pixels gave a lower bound")
         check(row["phong_share_centroid_rule"] is not None and row["phong_share_centroid_rule"] >= pt,
-              "the centroid rule's share %r below the per-triangle oracle's %r" % (row["phong_share_centroid_rule"], pt))
+              "the centroid rule's share %r below the per-triangle oracle's %r"
+              % (row["phong_share_centroid_rule"], pt))
         rule = row["rules"][0]
         check(rule["max_error"] == 2 and (rule["nmse"] > row["max_nmse"] or rule["phong_share"] >= pt),
               "the bound rule's share %r below the per-triangle oracle's %r" % (rule["phong_share"], pt))
