@@ -33,20 +33,21 @@ CombinedConfig parse_combined(const std::string& text) {
 namespace {
 
 // list:FILE's triangles: whitespace-separated indices, each below 2^31.
-std::shared_ptr<const std::vector<std::uint8_t>> read_phong_list(const std::string& file) {
+std::shared_ptr<const std::vector<std::uint32_t>> read_phong_list(const std::string& file) {
   std::ifstream in(file);
   if (!in) throw InputError("--triangle-choice list: cannot read '" + file + "'");
-  auto listed = std::make_shared<std::vector<std::uint8_t>>();
+  auto listed = std::make_shared<std::vector<std::uint32_t>>();
   std::string word;
   while (in >> word) {
     char* end = nullptr;
     const long long t = std::strtoll(word.c_str(), &end, 10);
     if (*end != '\0' || t < 0 || t > std::numeric_limits<std::int32_t>::max())
       throw InputError("--triangle-choice list: '" + file + "' holds '" + word + "', not a triangle index");
-    if (std::size_t(t) >= listed->size()) listed->resize(std::size_t(t) + 1, 0);
-    (*listed)[std::size_t(t)] = 1;
+    listed->push_back(std::uint32_t(t));
   }
   if (in.bad()) throw InputError("--triangle-choice list: reading '" + file + "' failed");
+  std::sort(listed->begin(), listed->end());
+  listed->erase(std::unique(listed->begin(), listed->end()), listed->end());
   return listed;
 }
 

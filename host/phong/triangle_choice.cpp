@@ -438,6 +438,7 @@ struct TriangleChooser::Shared {
   bool lanes = false, moving = false;
   std::shared_ptr<const ChoiceTables> tables;
   GouraudFitConstants fit_constants;
+  std::vector<std::uint8_t> listed;  // list:FILE: 1 for each triangle the list gives to Phong
   std::atomic<std::uint64_t> gouraud{0}, segments{0}, without{0}, terminator{0}, skipped{0};
   std::atomic<std::uint64_t> largest_bits{0};  // largest expected error among Gouraud triangles (double bits)
 };
@@ -446,12 +447,16 @@ TriangleChooser::TriangleChooser(const Scene& s, const ScreenGeometry& g, const 
                                  std::vector<TriangleShading>& out, ChoiceArithmetic arithmetic) {
   if (s.lights.size() > kChoiceMaxLights)
     throw InputError("the per-triangle choice handles at most " + std::to_string(kChoiceMaxLights) + " lights");
-  if (c.rule == TriangleRule::list && c.phong_list && c.phong_list->size() > g.triangles.size())
+  if (c.rule == TriangleRule::list && !c.phong_list->empty() && c.phong_list->back() >= g.triangles.size())
     throw InputError("--triangle-choice list: '" + c.list_file + "' names triangle " +
-                     std::to_string(c.phong_list->size() - 1) + ", the frame has " + std::to_string(g.triangles.size()));
+                     std::to_string(c.phong_list->back()) + ", the frame has " + std::to_string(g.triangles.size()));
   out.resize(g.triangles.size());
   shared_ = std::make_unique<Shared>(s, g, c, shading_budget, out);
   Shared& sh = *shared_;
+  if (c.rule == TriangleRule::list) {
+    sh.listed.assign(g.triangles.size(), 0);
+    for (const std::uint32_t t : *c.phong_list) sh.listed[t] = 1;
+  }
   const bool bound = c.rule == TriangleRule::bound;
   sh.tables = choice_tables(s, c, shading_budget);
   sh.lanes = bound && arithmetic == ChoiceArithmetic::float_lanes;
@@ -497,8 +502,7 @@ void TriangleChooser::choose(std::size_t first, std::size_t last) {
   static const IncreasingTable diffuse_chord(0.5 * M_PI, [](double phi) { return gouraud_term_bound(phi, 1.0, true); });
   const auto chord_bound = [](const IncreasingTable& t, double phi) { return phi < 0.5 * M_PI ? t.at(phi) : 1.0; };
   const GouraudFitConstants& fit_constants = sh.fit_constants;
-  // list:FILE (only with that rule): the triangles it gives to Phong.
-  const auto listed_phong = [&c](std::size_t t) { return t < c.phong_list->size() && (*c.phong_list)[t] != 0; };
+  const auto listed_phong = [&sh](std::size_t t) { return sh.listed[t] != 0; };  // list:FILE only
   std::uint64_t n_gouraud = 0, n_segments = 0, n_without = 0, n_terminator = 0, n_skipped = 0;
   double largest = 0.0;
   FrameLanes frame;

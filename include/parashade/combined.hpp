@@ -27,9 +27,10 @@ struct CombinedConfig {
   // Per-triangle Gouraud choice: none for combined:K unless asked, bound for combined:auto.
   TriangleRule rule = TriangleRule::none;
   double source_m = 0.9, source_q = 0.004, source_p = 0.008;  // the sources' thresholds
-  // list: a choice made elsewhere (scripts/mix_oracle.py's): 1 for each screen triangle that goes by Phong, the
-  // rest by Gouraud; read from list_file, screen triangle indices as render --triangle-map numbers them minus one.
-  std::shared_ptr<const std::vector<std::uint8_t>> phong_list;
+  // list: a choice made elsewhere (scripts/mix_oracle.py's): the screen triangles that go by Phong (ascending,
+  // once each), the rest by Gouraud; read from list_file, indices as render --triangle-map numbers them minus one.
+  // Indices, not flags: the file's size bounds the memory, whatever index it names.
+  std::shared_ptr<const std::vector<std::uint32_t>> phong_list;
   std::string list_file;
   // combined:auto with a choice: triangles whose segments could not reach 2^walk_min_k pixels go by Phong
   // per pixel (the walk's fixed costs exceed what shorter segments save); above kCombinedMaxK: none walk.
