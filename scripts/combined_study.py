@@ -21,9 +21,9 @@ import argparse
 import json
 import os
 import statistics
-import subprocess
-import sys
 import tempfile
+
+from render_report import render_report
 
 DEFAULT_METHODS = ["phong", "gouraud", "combined:1", "combined:2", "combined:3", "combined:4",
                    "combined:3 --combined-min-width 0", "combined:auto@1", "combined:auto@2", "combined:auto@4",
@@ -34,22 +34,17 @@ DEFAULT_METHODS = ["phong", "gouraud", "combined:1", "combined:2", "combined:3",
 def run(binary, scene, method, frames, device, tmp, size="", against=""):
     words = method.split()
     name, _, budget = words[0].partition("@")
-    report = os.path.join(tmp, "r.json")
-    cmd = [binary, "render", scene, "-o", os.path.join(tmp, "out.png"), "--method", name, "--frames", str(frames),
-           "--report", report, "-q"]
+    args = ["--method", name, "--frames", str(frames)]
     if budget:
-        cmd += ["--max-error", budget]
-    cmd += words[1:]
+        args += ["--max-error", budget]
+    args += words[1:]
     if against:
-        cmd += ["--against", against]
+        args += ["--against", against]
     if device:
-        cmd += ["--device", device]
+        args += ["--device", device]
     if size:
-        cmd += ["--size", size]
-    print("running:", " ".join(cmd), file=sys.stderr)
-    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
-    with open(report) as f:
-        return json.load(f), " ".join(cmd[1:])
+        args += ["--size", size]
+    return render_report(binary, scene, args, tmp)
 
 
 PAIRING_TEXT = {"rounds": "the same round", "adjacent": "the Phong run right before it",

@@ -39,6 +39,8 @@ import subprocess
 import sys
 import tempfile
 
+from render_report import render_report
+
 try:
     import numpy as np
     from PIL import Image
@@ -47,14 +49,8 @@ except ImportError as e:  # python3-numpy and python3-pil (python3-matplotlib br
 
 
 def render(binary, scene, args, tmp, name, size):
-    report = os.path.join(tmp, name + ".json")
-    cmd = [binary, "render", scene, "-o", os.path.join(tmp, name + ".png"), "--report", report, "-q"] + args
-    if size:
-        cmd += ["--size", size]
-    print("running:", " ".join(cmd), file=sys.stderr)
-    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
-    with open(report) as f:
-        return json.load(f)
+    """render_report() into tmp/NAME.png and .json, at --size when given; the report."""
+    return render_report(binary, scene, args + (["--size", size] if size else []), tmp, name)[0]
 
 
 def rgb(path):

@@ -9,9 +9,9 @@ exact Phong, fallback spans. Prints a Markdown table; --json writes the rows. Ex
 import argparse
 import json
 import os
-import subprocess
-import sys
 import tempfile
+
+from render_report import render_report
 
 VARIANTS = [
     ("exact", "exact"), ("slerp", "exact"), ("quadratic:exact", "exact"), ("quadratic:quad", "exact"),
@@ -27,15 +27,9 @@ VARIANTS = [
 
 
 def render(args, tmp, scene, normalize, specular):
-    report = os.path.join(tmp, "r.json")
-    cmd = [args.binary, "render", scene, "-o", os.path.join(tmp, "out.png"), "--method", "phong", "--normalize",
-           normalize, "--specular", specular, "--frames", str(args.frames), "--report", report, "-q", "--against", "phong"]
-    if args.device:
-        cmd += ["--device", args.device]
-    print("running:", " ".join(cmd), file=sys.stderr)
-    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
-    with open(report) as f:
-        return json.load(f)
+    options = ["--method", "phong", "--normalize", normalize, "--specular", specular, "--frames", str(args.frames),
+               "--against", "phong"] + (["--device", args.device] if args.device else [])
+    return render_report(args.binary, scene, options, tmp)[0]
 
 
 def main():

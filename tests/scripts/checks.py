@@ -8,7 +8,10 @@ failures = []
 
 
 def load_script(source_dir, name):
-    """scripts/NAME.py of the source tree as a module."""
+    """scripts/NAME.py of the source tree as a module (scripts/ on the path, for the modules it imports)."""
+    scripts = os.path.join(source_dir, "scripts")
+    if scripts not in sys.path:
+        sys.path.insert(0, scripts)
     spec = importlib.util.spec_from_file_location(name, os.path.join(source_dir, "scripts", name + ".py"))
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
