@@ -347,42 +347,50 @@ glm::mat4 view_projection(const Scene& scene) {
   return proj * view;
 }
 
-void build_screen_geometry(const Scene& scene, const GeometryRequest& request, ScreenGeometry& g) {
+namespace {
+
+// Which per-vertex attributes the method (and a reference render or a vertex-colour request) reads.
+Needs needs_of(const GeometryRequest& request) {
   const Method method = request.method;
   const bool per_pixel = method == Method::phong || method == Method::combined;
-  const Needs needs{method == Method::flat || per_pixel || request.for_reference,
-                    per_pixel || request.for_reference, method == Method::gouraud || request.vertex_colours,
-                    method == Method::flat};
-  const VertexLighting lighting(scene);
-  const glm::mat4 vp = view_projection(scene);
-  g.width = scene.width;
-  g.height = scene.height;
-  g.stats = {};
+  return {method == Method::flat || per_pixel || request.for_reference, per_pixel || request.for_reference,
+          method == Method::gouraud || request.vertex_colours, method == Method::flat};
+}
 
-  if (!g.scratch.ptr) g.scratch.ptr = std::make_shared<GeometryScratch>();
-  GeometryScratch& scratch = *g.scratch.ptr;
+// Each object's first vertex in the frame (objects' vertices concatenated); returns the scene's vertex count.
+std::size_t number_vertices(const Scene& scene, std::vector<std::uint32_t>& vertex_base) {
   std::size_t vertex_count = 0;
-  std::vector<std::uint32_t>& vertex_base = scratch.vertex_base;
   vertex_base.clear();
   for (const Object& o : scene.objects) {
     vertex_base.push_back(std::uint32_t(vertex_count));
     vertex_count += o.mesh->positions.size();
   }
+  return vertex_count;
+}
 
-  // Vertex stage.
+// The per-vertex arrays sized for `count` vertices; those the method does not read are emptied.
+void size_vertex_arrays(ScreenGeometry& g, const Needs& needs, std::size_t count) {
+  g.xy.resize(count);
+  g.depth.resize(count);
+  g.inv_w.resize(count);
+  resize_if(g.world, needs.world, count);
+  resize_if(g.normal, needs.normal, count);
+  resize_if(g.color, needs.color, count);
+}
+
+// Vertex stage: every scene vertex's outcode, snapped position, depth and 1/w, and (if read) its world
+// position and unit normal. Lighting waits for assembly, which knows the vertices that are used.
+void transform_scene_vertices(const Scene& scene, const Needs& needs, std::size_t vertex_count,
+                              GeometryScratch& scratch, ScreenGeometry& g) {
+  const glm::mat4 vp = view_projection(scene);
   g.outcode.resize(vertex_count);
-  g.xy.resize(vertex_count);
-  g.depth.resize(vertex_count);
-  g.inv_w.resize(vertex_count);
-  resize_if(g.world, needs.world, vertex_count);
-  resize_if(g.normal, needs.normal, vertex_count);
-  resize_if(g.color, needs.color, vertex_count);
+  size_vertex_arrays(g, needs, vertex_count);
   std::vector<VertexSource>& sources = scratch.sources;
   sources.resize(scene.objects.size());
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     const Object& obj = scene.objects[o];
     sources[o] = {obj.mesh.get(), obj.model, vp * obj.model, glm::transpose(glm::inverse(glm::mat3(obj.model))),
-                  obj.material, vertex_base[o]};
+                  obj.material, scratch.vertex_base[o]};
   }
   // One parallel_for over every object's vertices (a wake-up of the pool per object costs more than a
   // small object's work). Ranges of at least 4096 vertices (~40 ns each): a scene of a few thousand
@@ -401,8 +409,10 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
                         needs.normal ? src.mesh->normals.data() + range.first : nullptr, range.last - range.first,
                         needs.world ? g.world.data() + at : nullptr, needs.normal ? g.normal.data() + at : nullptr);
   });
+}
 
-  // Primitive assembly in chunks, merged in order.
+// Primitive assembly's work items: every object's triangles in chunks, and an empty output for each.
+void plan_chunks(const Scene& scene, GeometryScratch& scratch) {
   std::vector<ChunkJob>& jobs = scratch.jobs;
   jobs.clear();
   std::size_t face_base = 0;
@@ -424,22 +434,27 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
     out.new_snapped.clear();
     out.stats = {};
   }
-  std::vector<std::uint8_t>& used = scratch.used;
-  used.assign(needs.color ? vertex_count : 0, 0);
-  const Assembler assembler(scene, g, needs, lighting, sources, used);
-  parallel_for(jobs.size(), [&](std::size_t j) { assembler.run(jobs[j], vertex_base[jobs[j].object], outputs[j]); });
+}
 
+// The frame's sizes once the chunks are assembled.
+struct FrameCounts {
+  std::size_t triangles, vertices;  // vertices: the scene's and the clip-made ones
+};
+
+// Where each chunk's triangles and clip-made vertices go in the frame (in chunk order), and the chunks'
+// stats summed into g.stats.
+FrameCounts place_chunks(std::size_t vertex_count, GeometryScratch& scratch, ScreenGeometry& g) {
   std::size_t tri_total = 0, new_total = 0;
-  std::vector<std::size_t>& tri_offset = scratch.tri_offset;
-  std::vector<std::size_t>& new_offset = scratch.new_offset;
-  tri_offset.resize(jobs.size());
-  new_offset.resize(jobs.size());
-  for (std::size_t j = 0; j < jobs.size(); ++j) {
-    tri_offset[j] = tri_total;
-    new_offset[j] = vertex_count + new_total;
-    tri_total += outputs[j].triangles.size();
-    new_total += outputs[j].new_vertices.size();
-    const GeometryStats& s = outputs[j].stats;
+  const std::size_t chunks = scratch.jobs.size();
+  scratch.tri_offset.resize(chunks);
+  scratch.new_offset.resize(chunks);
+  for (std::size_t j = 0; j < chunks; ++j) {
+    const ChunkOutput& out = scratch.outputs[j];
+    scratch.tri_offset[j] = tri_total;
+    scratch.new_offset[j] = vertex_count + new_total;
+    tri_total += out.triangles.size();
+    new_total += out.new_vertices.size();
+    const GeometryStats& s = out.stats;
     g.stats.triangles_in += s.triangles_in;
     g.stats.culled_backface += s.culled_backface;
     g.stats.zero_area += s.zero_area;
@@ -448,72 +463,105 @@ void build_screen_geometry(const Scene& scene, const GeometryRequest& request, S
     g.stats.non_finite += s.non_finite;
   }
   g.stats.triangles_out = tri_total;
-  const std::size_t total_vertices = vertex_count + new_total;
-  g.xy.resize(total_vertices);
-  g.depth.resize(total_vertices);
-  g.inv_w.resize(total_vertices);
-  resize_if(g.world, needs.world, total_vertices);
-  resize_if(g.normal, needs.normal, total_vertices);
-  resize_if(g.color, needs.color, total_vertices);
-  g.triangles.resize(tri_total);
-  g.material.resize(tri_total);
-  g.face.resize(tri_total);
-  g.flat_color.resize(needs.flat ? tri_total : 0);
+  return {tri_total, vertex_count + new_total};
+}
 
-  // Gouraud: light the vertices the surviving triangles use (the others keep a zero colour), in the same
-  // parallel_for as the merge of the chunks (one wake-up of the pool, not two). Lighting ranges of 8192
-  // vertices (~33 ns for each one lit; a culled mesh lights about half).
+// Gouraud: lights the vertices of one range that surviving triangles use, VertexLighting::kLanes at a
+// time; the others keep a zero colour.
+void light_used_vertices(const VertexSource& src, const ObjectRange& range, const std::vector<std::uint8_t>& used,
+                         const VertexLighting& lighting, ScreenGeometry& g) {
+  constexpr int kLanes = VertexLighting::kLanes;
+  std::size_t lane_vertex[kLanes];
+  glm::vec3 position[kLanes], normal[kLanes], p[kLanes], n[kLanes], colour[kLanes];
+  int lanes = 0;
+  for (std::size_t i = range.first; i < range.last; ++i) {
+    const std::size_t v = src.base + i;
+    if (!used[v]) {
+      g.color[v] = glm::vec3(0.0f);
+      continue;
+    }
+    lane_vertex[lanes] = v;
+    position[lanes] = src.mesh->positions[i];
+    normal[lanes] = src.mesh->normals[i];
+    if (++lanes < kLanes) continue;
+    world_and_normals(src.model, src.normal_matrix, position, normal, kLanes, p, n);
+    lighting.shade_lanes(src.material, p, n, colour);
+    for (int k = 0; k < kLanes; ++k) g.color[lane_vertex[k]] = colour[k];
+    lanes = 0;
+  }
+  world_and_normals(src.model, src.normal_matrix, position, normal, std::size_t(lanes), p, n);
+  for (int k = 0; k < lanes; ++k) g.color[lane_vertex[k]] = lighting.shade(src.material, p[k], n[k]);
+}
+
+// Copies chunk j's clip-made vertices and its triangles (chunk-local indices renumbered) to their places.
+void merge_chunk(const Scene& scene, const Needs& needs, const GeometryScratch& scratch, std::size_t j,
+                 ScreenGeometry& g) {
+  const ChunkOutput& out = scratch.outputs[j];
+  const std::uint32_t base = std::uint32_t(scratch.new_offset[j]);
+  for (std::size_t k = 0; k < out.new_vertices.size(); ++k) {
+    const std::size_t v = base + k;
+    g.xy[v] = out.new_snapped[k].xy;
+    g.depth[v] = out.new_snapped[k].depth;
+    g.inv_w[v] = out.new_snapped[k].inv_w;
+    if (needs.world) g.world[v] = out.new_vertices[k].world;
+    if (needs.normal) g.normal[v] = out.new_vertices[k].normal;
+    if (needs.color) g.color[v] = out.new_vertices[k].color;
+  }
+  const std::uint32_t material = scene.objects[scratch.jobs[j].object].material;
+  const auto remap = [base](std::uint32_t v) { return (v & kNewVertex) ? base + (v & ~kNewVertex) : v; };
+  const std::size_t first = scratch.tri_offset[j];
+  for (std::size_t t = 0; t < out.triangles.size(); ++t) {
+    const glm::uvec3 tri = out.triangles[t];
+    g.triangles[first + t] = {remap(tri.x), remap(tri.y), remap(tri.z)};
+    g.material[first + t] = material;
+    g.face[first + t] = out.face[t];
+    if (needs.flat) g.flat_color[first + t] = out.flat_color[t];
+  }
+}
+
+}  // namespace
+
+void build_screen_geometry(const Scene& scene, const GeometryRequest& request, ScreenGeometry& g) {
+  const Needs needs = needs_of(request);
+  const VertexLighting lighting(scene);
+  g.width = scene.width;
+  g.height = scene.height;
+  g.stats = {};
+  if (!g.scratch.ptr) g.scratch.ptr = std::make_shared<GeometryScratch>();
+  GeometryScratch& scratch = *g.scratch.ptr;
+  const std::size_t vertex_count = number_vertices(scene, scratch.vertex_base);
+  transform_scene_vertices(scene, needs, vertex_count, scratch, g);
+
+  // Primitive assembly in chunks, merged in order.
+  plan_chunks(scene, scratch);
+  std::vector<std::uint8_t>& used = scratch.used;
+  used.assign(needs.color ? vertex_count : 0, 0);
+  const Assembler assembler(scene, g, needs, lighting, scratch.sources, used);
+  const std::vector<ChunkJob>& jobs = scratch.jobs;
+  parallel_for(jobs.size(),
+               [&](std::size_t j) { assembler.run(jobs[j], scratch.vertex_base[jobs[j].object], scratch.outputs[j]); });
+  const FrameCounts total = place_chunks(vertex_count, scratch, g);
+  size_vertex_arrays(g, needs, total.vertices);
+  g.triangles.resize(total.triangles);
+  g.material.resize(total.triangles);
+  g.face.resize(total.triangles);
+  g.flat_color.resize(needs.flat ? total.triangles : 0);
+
+  // Gouraud: light the vertices the surviving triangles use, in the same parallel_for as the merge of the
+  // chunks (one wake-up of the pool, not two). Lighting ranges of 8192 vertices (~33 ns for each one lit;
+  // a culled mesh lights about half).
   if (needs.color)
-    object_ranges(sources, 8192, 8192, scratch.light_ranges);
+    object_ranges(scratch.sources, 8192, 8192, scratch.light_ranges);
   else
     scratch.light_ranges.clear();
-  const auto light = [&](const ObjectRange& range) {
-    const VertexSource& src = sources[range.object];
-    constexpr int kLanes = VertexLighting::kLanes;  // used vertices lit kLanes at a time
-    std::size_t lane_vertex[kLanes];
-    glm::vec3 position[kLanes], normal[kLanes], p[kLanes], n[kLanes], colour[kLanes];
-    int lanes = 0;
-    for (std::size_t i = range.first; i < range.last; ++i) {
-      const std::size_t v = src.base + i;
-      if (!used[v]) {
-        g.color[v] = glm::vec3(0.0f);
-        continue;
-      }
-      lane_vertex[lanes] = v;
-      position[lanes] = src.mesh->positions[i];
-      normal[lanes] = src.mesh->normals[i];
-      if (++lanes < kLanes) continue;
-      world_and_normals(src.model, src.normal_matrix, position, normal, kLanes, p, n);
-      lighting.shade_lanes(src.material, p, n, colour);
-      for (int k = 0; k < kLanes; ++k) g.color[lane_vertex[k]] = colour[k];
-      lanes = 0;
-    }
-    world_and_normals(src.model, src.normal_matrix, position, normal, std::size_t(lanes), p, n);
-    for (int k = 0; k < lanes; ++k) g.color[lane_vertex[k]] = lighting.shade(src.material, p[k], n[k]);
-  };
-  const bool worth_waking = scratch.light_ranges.size() + jobs.size() > 2;  // else ~0.1 ms of work or less
-  parallel_for_if(worth_waking, scratch.light_ranges.size() + jobs.size(), [&](std::size_t item) {
-    if (item < scratch.light_ranges.size()) return light(scratch.light_ranges[item]);
-    const std::size_t j = item - scratch.light_ranges.size();
-    const ChunkOutput& out = outputs[j];
-    const std::uint32_t base = std::uint32_t(new_offset[j]);
-    for (std::size_t k = 0; k < out.new_vertices.size(); ++k) {
-      const std::size_t v = base + k;
-      g.xy[v] = out.new_snapped[k].xy;
-      g.depth[v] = out.new_snapped[k].depth;
-      g.inv_w[v] = out.new_snapped[k].inv_w;
-      if (needs.world) g.world[v] = out.new_vertices[k].world;
-      if (needs.normal) g.normal[v] = out.new_vertices[k].normal;
-      if (needs.color) g.color[v] = out.new_vertices[k].color;
-    }
-    const std::uint32_t material = scene.objects[jobs[j].object].material;
-    const auto remap = [base](std::uint32_t v) { return (v & kNewVertex) ? base + (v & ~kNewVertex) : v; };
-    for (std::size_t t = 0; t < out.triangles.size(); ++t) {
-      const glm::uvec3 tri = out.triangles[t];
-      g.triangles[tri_offset[j] + t] = {remap(tri.x), remap(tri.y), remap(tri.z)};
-      g.material[tri_offset[j] + t] = material;
-      g.face[tri_offset[j] + t] = out.face[t];
-      if (needs.flat) g.flat_color[tri_offset[j] + t] = out.flat_color[t];
+  const std::size_t light_items = scratch.light_ranges.size(), items = light_items + jobs.size();
+  const bool worth_waking = items > 2;  // else ~0.1 ms of work or less
+  parallel_for_if(worth_waking, items, [&](std::size_t item) {
+    if (item < light_items) {
+      const ObjectRange& range = scratch.light_ranges[item];
+      light_used_vertices(scratch.sources[range.object], range, used, lighting, g);
+    } else {
+      merge_chunk(scene, needs, scratch, item - light_items, g);
     }
   });
 }
