@@ -422,12 +422,11 @@ std::shared_ptr<const ChoiceTables> choice_tables(const Scene& s, const Combined
   return t;
 }
 
-}  // namespace
-
-// What every range of one frame's choice shares: the scene's tables and constants, and the counters.
-struct TriangleChooser::Shared {
-  Shared(const Scene& scene, const ScreenGeometry& geometry, const CombinedConfig& combined, double budget,
-         std::vector<TriangleShading>& shading)
+// What every range of one frame's choice reads: the scene, the config, the tables built for them and
+// the output (TriangleChooser::Shared adds the counters).
+struct FrameChoice {
+  FrameChoice(const Scene& scene, const ScreenGeometry& geometry, const CombinedConfig& combined, double budget,
+              std::vector<TriangleShading>& shading)
       : s(scene), g(geometry), c(combined), shading_budget(budget), out(shading) {}
   const Scene& s;
   const ScreenGeometry& g;
@@ -439,6 +438,262 @@ struct TriangleChooser::Shared {
   std::shared_ptr<const ChoiceTables> tables;
   GouraudFitConstants fit_constants;
   std::vector<std::uint8_t> listed;  // list:FILE: 1 for each triangle the list gives to Phong
+};
+
+// The chord bound of a table, which ends at pi/2: beyond it the bound is 1.
+double chord_bound(const IncreasingTable& t, double phi) { return phi < 0.5 * M_PI ? t.at(phi) : 1.0; }
+
+// One range's counts, added to the frame's once at the range's end (no atomics per triangle).
+struct ChoiceCounts {
+  std::uint64_t gouraud = 0, segments = 0, without = 0, terminator = 0, skipped = 0;
+  double largest = 0.0;  // largest expected error among the Gouraud triangles
+};
+
+// A triangle's Gouraud test: which lights' specular terms can show, whether Gouraud fits the budget, and
+// the error in levels it is expected to make.
+struct GouraudTest {
+  unsigned mask;
+  bool fits = false;
+  double expected = 0.0;
+};
+
+// What the tests read of a screen triangle: its vertices in pixels and its width.
+struct ScreenTriangle {
+  std::size_t t, mat;
+  glm::uvec3 idx;
+  glm::dvec2 p[3];
+  double width;
+  bool clipped;  // clip-made vertices carry interpolated colours and normals: no Gouraud bound for them
+};
+
+// The choice of one range of triangles, in order. The lanes, and the terms of the last triangle, stay from
+// one triangle to the next: the lanes are filled kLanes triangles at a time, the terms only as needed.
+class RangeChooser {
+ public:
+  explicit RangeChooser(const FrameChoice& f)
+      : f_(f),
+        tables_(*f.tables),
+        bound_(f.c.rule == TriangleRule::bound),
+        masked_(uses_highlight_mask(f.c)),
+        lights_(f.s.lights.size()),
+        all_lights_((1u << lights_) - 1u),
+        fixed_walk_width_(combined_min_width(f.c)) {}
+
+  void choose(std::size_t t, std::size_t first, std::size_t last) {
+    const int lane = int((t - first) % kLanes);
+    if (f_.lanes && lane == 0) fill_lanes(t, last);
+    TriangleShading& o = f_.out[t];
+    o = TriangleShading{};  // the vector is reused frame to frame
+    const ScreenTriangle tri = screen_triangle(t);
+    const GouraudTest test = gouraud_test(tri, lane);
+    o.specular_mask = test.mask;
+    counts_.without += test.mask == 0;
+    counts_.skipped += lights_ - std::size_t(__builtin_popcount(test.mask));
+    const CombinedConfig& c = f_.c;
+    if (test.fits) {
+      o.method = TriangleMethod::gouraud;
+      counts_.largest = std::max(counts_.largest, test.expected);
+    } else if (!c.automatic) {
+      o.method = tri.width + 1.0 >= double(fixed_walk_width_) ? TriangleMethod::segments : TriangleMethod::phong;
+    } else if (terms_.usable && c.walk_min_k <= kCombinedMaxK && tri.width + 1.0 >= std::ldexp(2.0, c.walk_min_k)) {
+      o.method = segments_or_phong(tri, test.mask, lane, o.psi_limit);
+    } else {
+      o.method = TriangleMethod::phong;
+    }
+    counts_.gouraud += o.method == TriangleMethod::gouraud;
+    counts_.segments += o.method == TriangleMethod::segments;
+  }
+
+  const ChoiceCounts& counts() const { return counts_; }
+
+ private:
+  // The next kLanes triangles' bounds and Gouraud tests at once.
+  void fill_lanes(std::size_t t, std::size_t last) {
+    frame_lanes(f_.s, f_.g, t, int(std::min<std::size_t>(kLanes, last - t)), frame_);
+    for (std::size_t i = 0; i < lights_; ++i) light_lanes(frame_, f_.s.lights[i], light_[i]);
+    gouraud_fit_lanes(frame_, light_, f_.fit_constants, fit_);
+  }
+
+  ScreenTriangle screen_triangle(std::size_t t) const {
+    const ScreenGeometry& g = f_.g;
+    ScreenTriangle tri;
+    tri.t = t;
+    tri.mat = g.material[t];
+    tri.idx = g.triangles[t];
+    const glm::uvec3 idx = tri.idx;
+    const double px = 1.0 / double(kSubpixel);
+    tri.p[0] = glm::dvec2(g.xy[idx.x]) * px;
+    tri.p[1] = glm::dvec2(g.xy[idx.y]) * px;
+    tri.p[2] = glm::dvec2(g.xy[idx.z]) * px;
+    const glm::dvec2* p = tri.p;
+    tri.width = std::max({p[0].x, p[1].x, p[2].x}) - std::min({p[0].x, p[1].x, p[2].x});
+    tri.clipped = idx.x >= g.outcode.size() || idx.y >= g.outcode.size() || idx.z >= g.outcode.size();
+    return tri;
+  }
+
+  GouraudTest gouraud_test(const ScreenTriangle& tri, int lane) {
+    const CombinedConfig& c = f_.c;
+    if (c.rule == TriangleRule::list && !masked_ && !c.automatic) {
+      // A list alone decides, and nothing below needs the triangle's frame: the choice costs next to nothing.
+      return {all_lights_, !tri.clipped && !f_.listed[tri.t], 0.0};
+    }
+    if (!bound_) return sources_test(tri);
+    if (f_.lanes) {
+      terms_.usable = frame_.usable[lane] > 0.0f;  // the rest of terms only if the segments need it
+      return {fit_.mask[lane], fit_.fits[lane] && !tri.clipped, fit_.expected[lane]};
+    }
+    return reference_test(tri);
+  }
+
+  // The sources' listing or a list decides Gouraud; the mask only when --highlight-test asks for it.
+  GouraudTest sources_test(const ScreenTriangle& tri) {
+    const CombinedConfig& c = f_.c;
+    const TriangleFrame f = triangle_frame(f_.s, f_.g, tri.t);
+    terms_.usable = f.usable;
+    for (int k = 0; k < 3; ++k) terms_.n[k] = f.n[k];
+    terms_.min_normal = f.usable ? distance_to_origin(f.n[0], f.n[1], f.n[2]) : 0.0;
+    GouraudTest test{all_lights_};
+    if (masked_ && f.usable) {
+      const double* threshold = &tables_.thresholds[tri.mat * lights_];
+      test.mask = 0;
+      for (std::size_t i = 0; i < lights_; ++i)
+        if (light_bounds(f, f_.s.lights[i], 2.0).max_n_dot_h > threshold[i]) test.mask |= 1u << i;
+    }
+    if (c.rule == TriangleRule::list) {
+      test.fits = !tri.clipped && !f_.listed[tri.t];
+    } else {
+      test.fits = c.rule != TriangleRule::none && sources_choose_gouraud(f_.s, f, c);
+    }
+    return test;
+  }
+
+  // The bound rule in double (ChoiceArithmetic::double_reference): the expected |Gouraud - Phong| in
+  // levels, summed term by term (largest channel each), cheapest and most often decisive first.
+  GouraudTest reference_test(const ScreenTriangle& tri) {
+    static const IncreasingTable diffuse_chord(0.5 * M_PI,
+                                               [](double phi) { return gouraud_term_bound(phi, 1.0, true); });
+    const std::size_t mat = tri.mat, lights = lights_;
+    const double shading_budget = f_.shading_budget;
+    const double* threshold = &tables_.thresholds[mat * lights];
+    reference_terms(f_.s, triangle_frame(f_.s, f_.g, tri.t), terms_);
+    const TriangleTerms& terms = terms_;
+    double spread = -1.0;  // the normals' spread, an acos computed only if a chord bound needs it
+    const auto normal_spread = [&] {
+      if (spread < 0.0) spread = std::acos(std::clamp(terms.cos_spread, -1.0, 1.0));
+      return spread;
+    };
+    unsigned mask = all_lights_;
+    if (terms.usable) {
+      mask = 0;
+      for (std::size_t i = 0; i < lights; ++i)
+        if (terms.light[i].max_n_dot_h > threshold[i]) mask |= 1u << i;
+    }
+    // A light whose specular term the mask drops adds at most negligible_specular.
+    double expected = f_.c.negligible_specular * double(lights - std::size_t(__builtin_popcount(mask)));
+    bool fits = terms.usable && !tri.clipped && expected <= shading_budget;
+    for (std::size_t i = 0; i < lights && fits; ++i) {
+      if (!(mask & (1u << i))) continue;
+      // Both images lie in [0, peak]: the chord bound only when the peak alone does not fit.
+      const LightTerms& l = terms.light[i];
+      const double peak = tables_.specular_levels[mat * lights + i] * tables_.power[mat].at(l.max_n_dot_h);
+      // The chord bound takes H constant; where it moves (sin_h_radius > 0) the second-order bound.
+      const double levels = tables_.specular_levels[mat * lights + i];
+      expected += expected + peak <= shading_budget
+                      ? peak
+                      : std::min(peak, l.sin_h_radius > 0.0
+                                           ? levels * gouraud_moving_specular(terms, l, tables_.curvature[mat],
+                                                                              tables_.slope[mat])
+                                           : levels * chord_bound(tables_.specular_chord[mat],
+                                                                  normal_spread() + l.h_spread()));
+      fits = expected <= shading_budget;
+    }
+    for (std::size_t i = 0; i < lights && fits; ++i) {
+      const LightTerms& l = terms.light[i];
+      expected += tables_.diffuse_levels[mat * lights + i] *
+                  (l.state != 2    ? l.diffuse
+                   : l.chord > 0.0 ? 1.0
+                                   : chord_bound(diffuse_chord, normal_spread() + l.l_spread()));
+      fits = expected <= shading_budget;
+    }
+    return {mask, fits, expected};
+  }
+
+  // combined:auto on a triangle Gouraud does not fit: segments of 2^K pixels where K >= walk_min_k fits
+  // the segment limit psi (written to psi_limit) and the triangle is that wide; else Phong per pixel.
+  TriangleMethod segments_or_phong(const ScreenTriangle& tri, unsigned mask, int lane, float& psi_limit) {
+    if (f_.lanes) lane_terms(lights_, frame_, light_, lane, terms_);
+    const std::vector<float>& psi = tables_.psi;
+    const std::size_t mat = tri.mat;
+    // Which terms can show decides the segment limit psi (a terminator, a highlight).
+    const bool crosses_any = terminator_in_reach(psi[4 * mat + (mask || !bound_ ? 2 : 0)]);
+    const int cls = (crosses_any ? 1 : 0) | (mask || !bound_ ? 2 : 0);
+    psi_limit = psi[4 * mat + cls];
+    // The segment length the kernel can use on this triangle: |dN/dx| 2^K <= psi min|N'|.
+    const glm::dvec2 e1 = tri.p[1] - tri.p[0], e2 = tri.p[2] - tri.p[0];
+    const double det = e1.x * e2.y - e2.x * e1.y;
+    const glm::dvec3 ddx = ((terms_.n[1] - terms_.n[0]) * e2.y - (terms_.n[2] - terms_.n[0]) * e1.y) * (1.0 / det);
+    const double change = glm::length(ddx);
+    bool bounded = true, terminator = crosses_any;
+    if (f_.moving) {
+      // L or H moves along a segment: the old limit assumed them constant; the second-order bound replaces it.
+      const MovingLimit m = moving_limit(tri, mask, e1, e2, det);
+      psi_limit = float(m.psi);
+      terminator = m.terminator;
+      bounded = m.psi > 0.0;
+    }
+    counts_.terminator += terminator;
+    const double allowed = double(psi_limit) * terms_.min_normal;
+    int k = 0;
+    while (k < kCombinedMaxK && change * double(2 << k) <= allowed) ++k;
+    return bounded && k >= f_.c.walk_min_k && tri.width + 1.0 >= double(2 << k) ? TriangleMethod::segments
+                                                                                 : TriangleMethod::phong;
+  }
+
+  // The segments' normals reach beyond the triangle (the last one is extrapolated, docs/combined.md): the
+  // kink-free bound holds only if every terminator stays farther than the normals can turn there.
+  bool terminator_in_reach(float specular_class_psi) const {
+    const double reach = std::asin(std::min(1.0, double(specular_class_psi))) + 1e-3;
+    bool crosses_any = !bound_;
+    for (std::size_t i = 0; i < lights_ && !crosses_any; ++i)
+      crosses_any = terms_.light[i].state == 2 || terms_.light[i].distance <= reach;
+    return crosses_any;
+  }
+
+  // moving_psi_limit for the triangle whose screen edges are e1, e2 (det: their cross product).
+  MovingLimit moving_limit(const ScreenTriangle& tri, unsigned mask, glm::dvec2 e1, glm::dvec2 e2, double det) const {
+    const ScreenGeometry& g = f_.g;
+    const glm::uvec3 idx = tri.idx;
+    const std::size_t mat = tri.mat, lights = lights_;
+    const glm::dvec3 w0(g.world[idx.x]), w1(g.world[idx.y]), w2(g.world[idx.z]);
+    const glm::dvec3 dpdx = ((w1 - w0) * e2.y - (w2 - w0) * e1.y) * (1.0 / det);
+    // The kernel's normal plane is made of the vertex normals as they are (clip-made ones unnormalized).
+    const glm::dvec3 n0(g.normal[idx.x]), n1(g.normal[idx.y]), n2(g.normal[idx.z]);
+    const double kernel_change = glm::length(((n1 - n0) * e2.y - (n2 - n0) * e1.y) * (1.0 / det));
+    const double budget =
+        f_.shading_budget - f_.c.negligible_specular * double(lights - std::size_t(__builtin_popcount(mask)));
+    return moving_psi_limit(f_.s, g, tri.t, terms_, mask, budget, &tables_.diffuse_levels[mat * lights],
+                            &tables_.specular_levels[mat * lights], tables_.curvature[mat], tables_.slope[mat],
+                            kernel_change, dpdx);
+  }
+
+  const FrameChoice& f_;
+  const ChoiceTables& tables_;
+  const bool bound_, masked_;
+  const std::size_t lights_;
+  const unsigned all_lights_;
+  const int fixed_walk_width_;  // combined:K's narrowest triangle walked by segments
+  FrameLanes frame_;
+  LightLanes light_[kChoiceMaxLights];
+  GouraudFitLanes fit_;
+  TriangleTerms terms_;
+  ChoiceCounts counts_;
+};
+
+}  // namespace
+
+// What every range of one frame's choice shares: the frame's inputs and tables, and the counters.
+struct TriangleChooser::Shared : FrameChoice {
+  using FrameChoice::FrameChoice;
   std::atomic<std::uint64_t> gouraud{0}, segments{0}, without{0}, terminator{0}, skipped{0};
   std::atomic<std::uint64_t> largest_bits{0};  // largest expected error among Gouraud triangles (double bits)
 };
@@ -485,171 +740,17 @@ TriangleChooser::~TriangleChooser() = default;
 
 void TriangleChooser::choose(std::size_t first, std::size_t last) {
   Shared& sh = *shared_;
-  const Scene& s = sh.s;
-  const ScreenGeometry& g = sh.g;
-  const CombinedConfig& c = sh.c;
-  const double shading_budget = sh.shading_budget;
-  std::vector<TriangleShading>& out = sh.out;
-  const bool bound = c.rule == TriangleRule::bound, masked = uses_highlight_mask(c), lanes = sh.lanes, moving = sh.moving;
-  const std::size_t lights = s.lights.size();
-  const unsigned all_lights = (1u << lights) - 1u;
-  const int fixed_walk_width = combined_min_width(c);
-  const ChoiceTables* tables = sh.tables.get();
-  const std::vector<float>& psi = tables->psi;
-  const std::vector<double>& thresholds = tables->thresholds;
-  const std::vector<double>&diffuse_levels = tables->diffuse_levels, &specular_levels = tables->specular_levels;
-  const std::vector<IncreasingTable>&power = tables->power, &specular_chord = tables->specular_chord;
-  static const IncreasingTable diffuse_chord(0.5 * M_PI, [](double phi) { return gouraud_term_bound(phi, 1.0, true); });
-  const auto chord_bound = [](const IncreasingTable& t, double phi) { return phi < 0.5 * M_PI ? t.at(phi) : 1.0; };
-  const GouraudFitConstants& fit_constants = sh.fit_constants;
-  const auto listed_phong = [&sh](std::size_t t) { return sh.listed[t] != 0; };  // list:FILE only
-  std::uint64_t n_gouraud = 0, n_segments = 0, n_without = 0, n_terminator = 0, n_skipped = 0;
-  double largest = 0.0;
-  FrameLanes frame;
-  LightLanes light[kChoiceMaxLights];
-  GouraudFitLanes fit;
-  TriangleTerms terms;
-  for (std::size_t t = first; t < last; ++t) {
-    const int lane = int((t - first) % kLanes);
-    if (lanes && lane == 0) {  // the next kLanes triangles' bounds and Gouraud tests at once
-      frame_lanes(s, g, t, int(std::min<std::size_t>(kLanes, last - t)), frame);
-      for (std::size_t i = 0; i < lights; ++i) light_lanes(frame, s.lights[i], light[i]);
-      gouraud_fit_lanes(frame, light, fit_constants, fit);
-    }
-    TriangleShading& o = out[t];
-    o = TriangleShading{};  // the vector is reused frame to frame
-    const std::size_t mat = g.material[t];
-    const glm::uvec3 idx = g.triangles[t];
-    const double px = 1.0 / double(kSubpixel);
-    const glm::dvec2 p[3] = {glm::dvec2(g.xy[idx.x]) * px, glm::dvec2(g.xy[idx.y]) * px, glm::dvec2(g.xy[idx.z]) * px};
-    const double width = std::max({p[0].x, p[1].x, p[2].x}) - std::min({p[0].x, p[1].x, p[2].x});
-    const double* threshold = &thresholds[mat * lights];
-    // Clip-made vertices carry interpolated colours and normals: no Gouraud bound for them.
-    const bool clipped = idx.x >= g.outcode.size() || idx.y >= g.outcode.size() || idx.z >= g.outcode.size();
-    unsigned mask = all_lights;
-    bool fits = false;
-    double expected = 0.0;
-    if (c.rule == TriangleRule::list && !masked && !c.automatic) {
-      // A list alone decides, and nothing below needs the triangle's frame: the choice costs next to nothing.
-      fits = !clipped && !listed_phong(t);
-    } else if (!bound) {
-      // The sources' listing or a list decides Gouraud; the mask only when --highlight-test asks for it.
-      const TriangleFrame f = triangle_frame(s, g, t);
-      terms.usable = f.usable;
-      for (int k = 0; k < 3; ++k) terms.n[k] = f.n[k];
-      terms.min_normal = f.usable ? distance_to_origin(f.n[0], f.n[1], f.n[2]) : 0.0;
-      if (masked && f.usable) {
-        mask = 0;
-        for (std::size_t i = 0; i < lights; ++i)
-          if (light_bounds(f, s.lights[i], 2.0).max_n_dot_h > threshold[i]) mask |= 1u << i;
-      }
-      if (c.rule == TriangleRule::list) {
-        fits = !clipped && !listed_phong(t);
-      } else {
-        fits = c.rule != TriangleRule::none && sources_choose_gouraud(s, f, c);
-      }
-    } else if (lanes) {
-      mask = fit.mask[lane];
-      fits = fit.fits[lane] && !clipped;
-      expected = fit.expected[lane];
-      terms.usable = frame.usable[lane] > 0.0f;  // the rest of terms only if the segments need it, below
-    } else {
-      reference_terms(s, triangle_frame(s, g, t), terms);
-      double spread = -1.0;  // the normals' spread, an acos computed only if a chord bound needs it
-      const auto normal_spread = [&] {
-        if (spread < 0.0) spread = std::acos(std::clamp(terms.cos_spread, -1.0, 1.0));
-        return spread;
-      };
-      if (terms.usable) {
-        mask = 0;
-        for (std::size_t i = 0; i < lights; ++i)
-          if (terms.light[i].max_n_dot_h > threshold[i]) mask |= 1u << i;
-      }
-      // Expected |Gouraud - Phong| in levels, summed term by term (largest channel each), cheapest and most
-      // often decisive first; a light whose specular term the mask drops adds at most negligible_specular.
-      expected = c.negligible_specular * double(lights - std::size_t(__builtin_popcount(mask)));
-      fits = terms.usable && !clipped && expected <= shading_budget;
-      for (std::size_t i = 0; i < lights && fits; ++i) {
-        if (!(mask & (1u << i))) continue;
-        // Both images lie in [0, peak]: the chord bound only when the peak alone does not fit.
-        const double peak = specular_levels[mat * lights + i] * power[mat].at(terms.light[i].max_n_dot_h);
-        // The chord bound takes H constant; where it moves (sin_h_radius > 0) the second-order bound.
-        const double levels = specular_levels[mat * lights + i];
-        expected += expected + peak <= shading_budget
-                        ? peak
-                        : std::min(peak, terms.light[i].sin_h_radius > 0.0
-                                             ? levels * gouraud_moving_specular(terms, terms.light[i], tables->curvature[mat],
-                                                                                tables->slope[mat])
-                                             : levels * chord_bound(specular_chord[mat], normal_spread() + terms.light[i].h_spread()));
-        fits = expected <= shading_budget;
-      }
-      for (std::size_t i = 0; i < lights && fits; ++i) {
-        const LightTerms& l = terms.light[i];
-        expected += diffuse_levels[mat * lights + i] *
-                    (l.state != 2 ? l.diffuse : l.chord > 0.0 ? 1.0 : chord_bound(diffuse_chord, normal_spread() + l.l_spread()));
-        fits = expected <= shading_budget;
-      }
-    }
-    o.specular_mask = mask;
-    n_without += mask == 0;
-    n_skipped += lights - std::size_t(__builtin_popcount(mask));
-    if (fits) {
-      o.method = TriangleMethod::gouraud;
-      largest = std::max(largest, expected);
-    } else if (!c.automatic) {
-      o.method = width + 1.0 >= double(fixed_walk_width) ? TriangleMethod::segments : TriangleMethod::phong;
-    } else if (terms.usable && c.walk_min_k <= kCombinedMaxK && width + 1.0 >= std::ldexp(2.0, c.walk_min_k)) {
-      if (lanes) lane_terms(lights, frame, light, lane, terms);
-      // Which terms can show decides the segment limit psi (a terminator, a highlight).
-      // The segments' normals reach beyond the triangle (the last one is extrapolated, docs/combined.md):
-      // the kink-free bound holds only if the terminator stays farther than the normals can turn there.
-      const double reach = std::asin(std::min(1.0, double(psi[4 * mat + (mask || !bound ? 2 : 0)]))) + 1e-3;
-      bool crosses_any = !bound;
-      for (std::size_t i = 0; i < lights && !crosses_any; ++i)
-        crosses_any = terms.light[i].state == 2 || terms.light[i].distance <= reach;
-      n_terminator += crosses_any;
-      const int cls = (crosses_any ? 1 : 0) | (mask || !bound ? 2 : 0);
-      o.psi_limit = psi[4 * mat + cls];
-      // The segment length the kernel can use on this triangle: |dN/dx| 2^K <= psi min|N'|.
-      const glm::dvec2 e1 = p[1] - p[0], e2 = p[2] - p[0];
-      const double det = e1.x * e2.y - e2.x * e1.y;
-      const glm::dvec3 ddx = ((terms.n[1] - terms.n[0]) * e2.y - (terms.n[2] - terms.n[0]) * e1.y) * (1.0 / det);
-      const double change = glm::length(ddx);
-      bool bounded = true;
-      if (moving) {
-        // L or H moves along a segment: the old limit assumed them constant; the second-order bound replaces it.
-        const glm::dvec3 w0(g.world[idx.x]), w1(g.world[idx.y]), w2(g.world[idx.z]);
-        const glm::dvec3 dpdx = ((w1 - w0) * e2.y - (w2 - w0) * e1.y) * (1.0 / det);
-        // The kernel's normal plane is made of the vertex normals as they are (clip-made ones unnormalized).
-        const glm::dvec3 n0(g.normal[idx.x]), n1(g.normal[idx.y]), n2(g.normal[idx.z]);
-        const double kernel_change = glm::length(((n1 - n0) * e2.y - (n2 - n0) * e1.y) * (1.0 / det));
-        const MovingLimit m = moving_psi_limit(
-            s, g, t, terms, mask, shading_budget - c.negligible_specular * double(lights - std::size_t(__builtin_popcount(mask))),
-            &diffuse_levels[mat * lights], &specular_levels[mat * lights], tables->curvature[mat], tables->slope[mat],
-            kernel_change, dpdx);
-        o.psi_limit = float(m.psi);
-        n_terminator = n_terminator - std::uint64_t(crosses_any) + std::uint64_t(m.terminator);
-        bounded = m.psi > 0.0;
-      }
-      const double allowed = double(o.psi_limit) * terms.min_normal;
-      int k = 0;
-      while (k < kCombinedMaxK && change * double(2 << k) <= allowed) ++k;
-      o.method = bounded && k >= c.walk_min_k && width + 1.0 >= double(2 << k) ? TriangleMethod::segments
-                                                                               : TriangleMethod::phong;
-    } else {
-      o.method = TriangleMethod::phong;
-    }
-    n_gouraud += o.method == TriangleMethod::gouraud;
-    n_segments += o.method == TriangleMethod::segments;
-  }
-  sh.gouraud += n_gouraud;
-  sh.segments += n_segments;
-  sh.without += n_without;
-  sh.terminator += n_terminator;
-  sh.skipped += n_skipped;
+  RangeChooser range(sh);
+  for (std::size_t t = first; t < last; ++t) range.choose(t, first, last);
+  const ChoiceCounts& n = range.counts();
+  sh.gouraud += n.gouraud;
+  sh.segments += n.segments;
+  sh.without += n.without;
+  sh.terminator += n.terminator;
+  sh.skipped += n.skipped;
   // A positive double's bits order like the double: an atomic max on the bits.
   std::uint64_t bits, seen = sh.largest_bits.load();
-  std::memcpy(&bits, &largest, sizeof bits);
+  std::memcpy(&bits, &n.largest, sizeof bits);
   while (bits > seen && !sh.largest_bits.compare_exchange_weak(seen, bits)) {
   }
 }
