@@ -38,13 +38,13 @@ const Scene* scene_or_skip(benchmark::State& state, const std::string& scene_nam
 void host_stages(benchmark::State& state, const std::string& scene_name, Method method) {
   const Scene* scene = scene_or_skip(state, scene_name);
   if (!scene) return;
-  FramePipeline pipeline;
   FrameConfig config;
   config.method = method;
-  for (int i = 0; i < 2; ++i) pipeline.prepare_frame(*scene, config);  // allocations
+  FramePipeline pipeline(config);
+  for (int i = 0; i < 2; ++i) pipeline.prepare_frame(*scene);  // allocations
   double geometry = 0, setup = 0, binning = 0;
   for (auto _ : state) {
-    const FrameTimings& t = pipeline.prepare_frame(*scene, config).timings;
+    const FrameTimings& t = pipeline.prepare_frame(*scene).timings;
     state.SetIterationTime((t.geometry_ms + t.setup_ms + t.binning_ms) * 1e-3);
     geometry += t.geometry_ms;
     setup += t.setup_ms;

@@ -198,8 +198,8 @@ void parashade_frame(benchmark::State& state, const std::string& case_name, cons
   state.counters["triangles_after_culling"] = double(last->stats.geometry.triangles_out);
   if (options.unit_path()) state.counters["modeled_clocks"] = double(last->stats.clocks.clocks);
   if (!options.unit_path() && options.method != Method::combined) {  // the plain path's walk, counted on the host
-    FramePipeline pipeline;
-    const LaneUtilization lanes = lane_utilization(pipeline.prepare_frame(*scene, chosen));
+    FramePipeline pipeline(chosen);
+    const LaneUtilization lanes = lane_utilization(pipeline.prepare_frame(*scene));
     state.counters["lanes_rows"] = lanes.rows();
     state.counters["lanes_stamps"] = lanes.stamps();
   }

@@ -197,6 +197,13 @@ cl::Program& Device::program(const std::vector<std::string>& files, const std::s
 }
 
 std::unique_ptr<Device> open_device(const std::string& selector) {
+  if (const char* value = std::getenv("PARASHADE_DEVICE"); selector.empty() && value && *value) {
+    try {
+      return open_device(value);
+    } catch (const Error& e) {
+      throw Error(e.code(), "PARASHADE_DEVICE='" + std::string(value) + "' (the device when none is given): " + e.what());
+    }
+  }
   std::vector<Found> found;
   try {
     found = enumerate();

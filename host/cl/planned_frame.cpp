@@ -144,7 +144,7 @@ void Renderer::unit_pass_times(const UnitPassEvents& events, FrameTimings& t) co
 }
 
 std::vector<std::uint64_t> Renderer::plan_keys(const Scene& scene) {
-  if (!config_.plan) throw UsageError("depth keys exist only in a planned frame (--cu)");
+  if (!options_.plan) throw UsageError("depth keys exist only in a planned frame (--cu)");
   std::vector<std::uint64_t> keys(std::size_t(scene.width) * scene.height);
   try {
     device_.queue().enqueueReadBuffer(keys_, CL_TRUE, 0, keys.size() * sizeof(cl_ulong), keys.data());

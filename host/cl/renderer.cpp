@@ -31,17 +31,31 @@ void add_band(const PreparedFrame& band, double upload_ms, FrameTimings& t, Fram
 
 }  // namespace
 
+namespace {
+
+// The options with the plan's units resolved (0: the device's compute units).
+RenderOptions resolved_units(RenderOptions o, const Device& device) {
+  if (o.plan && o.plan->units == 0) o.plan->units = std::max(1, device.info().compute_units);
+  return o;
+}
+
+}  // namespace
+
 Renderer::Renderer(Device& device, RenderOptions options, std::vector<Device*> unit_devices)
-    : device_(device), options_(options), config_(options), unit_devices_(std::move(unit_devices)) {
-  check_frame_config(config_, unit_devices_.empty() ? DeviceMode::one : DeviceMode::unit_sub_devices);
+    : device_(device),
+      options_(resolved_units(options, device)),
+      unit_devices_(std::move(unit_devices)),
+      pipeline_(options_),  // checks the configuration against the table, once
+      variant_(std::make_unique<KernelVariant>(kernel_variant(options_))) {
+  if (!unit_devices_.empty() && !options_.plan)
+    throw UsageError("sub-devices run a plan's units; without a plan, sub-devices take bands of the frame");
   for (Device* d : unit_devices_)
     if (d->context()() != device_.context()())
       throw DeviceError("'" + d->info().name + "' does not share the context of '" + device_.info().name +
                         "': open the units' sub-devices with a shared context (sub_devices.hpp)");
-  if (config_.plan && config_.plan->units == 0) config_.plan->units = std::max(1, device_.info().compute_units);
   // The units' depth pass keeps each pixel's least key by a 64-bit atomic minimum (plan_key.h): without
   // the extension its build would fail on an undeclared atom_min; say what is missing instead.
-  if (config_.plan) {
+  if (options_.plan) {
     std::vector<Device*> pass_devices = unit_devices_;
     if (pass_devices.empty()) pass_devices.push_back(&device_);
     for (Device* d : pass_devices)
@@ -52,14 +66,9 @@ Renderer::Renderer(Device& device, RenderOptions options, std::vector<Device*> u
 }
 
 void Renderer::set_band(int first, int rows) {
-  if (first < 0 || rows < -1)
-    throw UsageError("a band is tile rows [first, first + rows) with first >= 0 and rows >= 0, or rows -1 for the "
-                     "whole frame (got first " + std::to_string(first) + ", rows " + std::to_string(rows) + ")");
-  FrameConfig moved = config_;
-  moved.band_first = first;
-  moved.band_rows = rows;
-  check_frame_config(moved, unit_devices_.empty() ? DeviceMode::one : DeviceMode::unit_sub_devices);
-  config_ = moved;
+  if (options_.plan && rows >= 0)
+    throw UsageError("planned units run on one device, or on the sub-devices of one, not in bands");
+  pipeline_.set_band(first, rows);
   options_.band_first = first;
   options_.band_rows = rows;
 }
@@ -155,14 +164,14 @@ std::uint32_t* Renderer::tile_list(std::size_t entries) {
 }
 
 const PreparedFrame& Renderer::prepare(const Scene& scene, double* upload_ms) {
-  pipeline_.begin_frame(scene, config_, SIZE_MAX);
+  pipeline_.begin_frame(scene, SIZE_MAX);
   return prepare_band(scene, 0, upload_ms);
 }
 
 const PreparedFrame& Renderer::prepare_band(const Scene& scene, int band, double* upload_ms) {
   cl::CommandQueue& q = device_.queue();
-  if (config_.dda_coverage) q.finish();  // the previous frame's row table may still be in flight
-  const PreparedFrame& f = pipeline_.prepare_band(scene, config_, *this, band);
+  if (options_.dda_coverage) q.finish();  // the previous frame's row table may still be in flight
+  const PreparedFrame& f = pipeline_.prepare_band(scene, *this, band);
   const auto t0 = Clock::now();
   if (mapped_.leaves) q.enqueueUnmapMemObject(leaves_, mapped_.leaves);
   if (mapped_.fixed) q.enqueueUnmapMemObject(fixed_, mapped_.fixed);
@@ -194,7 +203,9 @@ TileKernelArgs Renderer::tile_args(const cl::Buffer& tile_start, const cl::Buffe
 }
 
 std::optional<int> Renderer::deferral_threshold(const Scene& scene) const {
-  if (!kernel_variant(scene, options_).defers_tiles()) return std::nullopt;
+  KernelVariant v = *variant_;
+  v.plan_pass = 0;  // as the report has always said it (a planned frame's resolve pass never defers)
+  if (!v.defers_tiles()) return std::nullopt;
   return options_.deferral_threshold();
 }
 
@@ -220,6 +231,142 @@ void Renderer::release_frame() {
   }
 }
 
+// The scene's lights and materials into constant memory. The tables are members: the writes do not block,
+// so the host memory they read must outlive this call (the frame waits for its kernel before it returns).
+void Renderer::upload_tables(const Scene& scene) {
+  cl::CommandQueue& q = device_.queue();
+  std::vector<cl_float4>& lights = light_values_;
+  std::vector<cl_float4>& materials = material_values_;
+  lights = light_table(scene);
+  materials = material_table(scene, options_.specular);
+  if (options_.method == Method::combined) set_combined_limits(scene, options_.combined, materials);
+  if ((lights.size() + materials.size()) * sizeof(cl_float4) > device_.info().constant_buffer)
+    throw DeviceError("the scene's lights and materials do not fit the constant memory of '" + device_.info().name + "'");
+  ensure(lights_, lights_cap_, lights.size() * sizeof(cl_float4), CL_MEM_READ_ONLY);
+  ensure(materials_, materials_cap_, materials.size() * sizeof(cl_float4), CL_MEM_READ_ONLY);
+  q.enqueueWriteBuffer(lights_, CL_FALSE, 0, lights.size() * sizeof(cl_float4), lights.data());
+  q.enqueueWriteBuffer(materials_, CL_FALSE, 0, materials.size() * sizeof(cl_float4), materials.data());
+}
+
+// The kernel writes the 8-bit frame straight into the image kept here (no copy on the host); the other
+// outputs, and placeholders for the buffers this variant does not read.
+void Renderer::prepare_outputs(const Scene& scene, std::size_t counter_bytes) {
+  cl::CommandQueue& q = device_.queue();
+  const std::size_t pixels = std::size_t(scene.width) * scene.height;
+  RenderedImage& img = frame_.image;
+  img.width = scene.width;
+  img.height = scene.height;
+  if (img.rgba.size() != pixels * 4 || img.rgba.data() != rgba_host_) {
+    q.finish();  // the old buffer's pending unmap must not outlive the memory it maps
+    img.rgba.assign(pixels * 4, 0);
+    rgba_host_ = img.rgba.data();
+    out_rgba_ = cl::Buffer(device_.context(), CL_MEM_WRITE_ONLY | CL_MEM_USE_HOST_PTR, pixels * 4, rgba_host_);
+  }
+  ensure(out_float_, float_cap_, options_.float_output ? 3 * pixels * sizeof(float) : 64, CL_MEM_WRITE_ONLY);
+  // Unused by the kernel off the unit path (and the planes without fixed point): a small placeholder.
+  if (!options_.arith.fixed) ensure(fixed_, fixed_cap_, 64, CL_MEM_READ_ONLY);
+  ensure(tile_counters_, tile_counters_cap_, counter_bytes, CL_MEM_WRITE_ONLY);
+  if (!options_.dda_coverage) {
+    ensure(dda_first_, dda_first_cap_, 64, CL_MEM_READ_ONLY);
+    ensure(dda_rows_, dda_rows_cap_, 64, CL_MEM_READ_ONLY);
+  }
+}
+
+// The frame kernel of this renderer's variant for the scene's lights and viewer: built when they change,
+// not every frame (a planned frame's variant is its resolve pass).
+cl::Kernel& Renderer::frame_kernel(const Scene& scene) {
+  if (variant_->set_scene(scene) || !kernel_()) {
+    variant_->plan_pass = options_.plan ? 2 : 0;
+    kernel_ = cl::Kernel(device_.program(kernel_files(*variant_), variant_->build_options()), "render_tiles");
+  }
+  return kernel_;
+}
+
+// Three counters per tile: the unit's spans, pixels and clocks, or the per-span normalization's setups,
+// fallbacks and sequential steps (never both: the table refuses per-span normals on a unit).
+bool Renderer::counts_per_tile() const { return options_.unit_path() || options_.span_normalize(); }
+
+void Renderer::add_tile_counters(const cl_ulong* c, FrameStats& stats) const {
+  for (int tile = 0; tile < stats.tiles && options_.span_normalize(); ++tile) {
+    stats.normalize_span_setups += c[3 * tile];
+    stats.normalize_fallback_spans += c[3 * tile + 1];
+    stats.normalize_sequential_steps += c[3 * tile + 2];
+  }
+  for (int tile = 0; tile < stats.tiles && options_.unit_path(); ++tile) {
+    stats.clocks.spans += c[3 * tile];
+    stats.clocks.pixels += c[3 * tile + 1];
+    stats.clocks.clocks += c[3 * tile + 2];
+  }
+}
+
+// Every band's kernel (tiles [first_tile, end_tile): the kernel walks from its global id, offset by
+// first_tile); a streamed frame's next band is prepared when the band before it is shaded. `done` is the
+// last kernel's event, band_done the others'; `last` when the last band was launched. Returns the earlier
+// bands' launch time.
+double Renderer::launch_bands(const Scene& scene, int bands, const PreparedFrame* band, const TileKernelArgs& args,
+                              cl::Event& done, std::vector<cl::Event>& band_done, Clock::time_point& last) {
+  cl::CommandQueue& q = device_.queue();
+  last = Clock::now();
+  double launch_ms = 0, upload_ms = 0;
+  for (int b = 0;; ++b) {
+    const int tiles = band->end_tile - band->first_tile;
+    q.enqueueNDRangeKernel(kernel_, band->first_tile ? cl::NDRange(std::size_t(band->first_tile)) : cl::NullRange,
+                           cl::NDRange(std::size_t(work_items(std::max(1, tiles)))), cl::NDRange(1), nullptr, &done);
+    if (b + 1 == bands) break;
+    band_done.push_back(done);
+    premap_records();  // mapped when this band's kernel ends (the queue is in order)
+    done.wait();  // the next band's map would wait for it too; this keeps the wait out of its setup time
+    launch_ms += ms_since(last);
+    band = &prepare_band(scene, b + 1, &upload_ms);
+    add_band(*band, upload_ms, frame_.timings, frame_.stats);
+    set_tile_kernel_args(kernel_, tile_args(tile_start_, tile_tris_, args.viewer, args.background, scene, *band));
+    last = Clock::now();
+  }
+  return launch_ms;
+}
+
+// The frame mapped (valid in the image's memory: on a CPU device the kernel wrote it there already), with
+// the float colour and the tile counters, waited for; the counters added to the stats.
+Renderer::MappedFrame Renderer::map_frame(std::size_t pixels, std::size_t counter_bytes) {
+  cl::CommandQueue& q = device_.queue();
+  MappedFrame m;
+  m.rgba = q.enqueueMapBuffer(out_rgba_, CL_FALSE, CL_MAP_READ, 0, pixels * 4, nullptr, &m.mapped);
+  if (options_.float_output)
+    m.planar = static_cast<const float*>(
+        q.enqueueMapBuffer(out_float_, CL_FALSE, CL_MAP_READ, 0, 3 * pixels * sizeof(float), nullptr, &m.float_mapped));
+  cl::Event counters_mapped;
+  const cl_ulong* tile_counters = nullptr;
+  if (counts_per_tile())
+    tile_counters = static_cast<const cl_ulong*>(
+        q.enqueueMapBuffer(tile_counters_, CL_FALSE, CL_MAP_READ, 0, counter_bytes, nullptr, &counters_mapped));
+  m.mapped.wait();
+  mapped_rgba_ = m.rgba;
+  if (tile_counters) {
+    counters_mapped.wait();
+    add_tile_counters(tile_counters, frame_.stats);
+    q.enqueueUnmapMemObject(tile_counters_, const_cast<cl_ulong*>(tile_counters));
+  }
+  return m;
+}
+
+// Read-back: from the kernel's end to the frame in host memory (device clock), plus the host copies.
+void Renderer::copy_out(MappedFrame& m, std::size_t pixels, const cl::Event& done) {
+  const auto t0 = Clock::now();
+  RenderedImage& img = frame_.image;
+  if (m.rgba != rgba_host_) std::memcpy(img.rgba.data(), m.rgba, pixels * 4);  // the spec says it is the host pointer
+  img.rgb_float.clear();
+  if (options_.float_output) {
+    m.float_mapped.wait();
+    img.rgb_float.resize(pixels * 3);
+    for (std::size_t p = 0; p < pixels; ++p)
+      for (int c = 0; c < 3; ++c) img.rgb_float[p * 3 + c] = m.planar[c * pixels + p];
+    device_.queue().enqueueUnmapMemObject(out_float_, const_cast<float*>(m.planar));
+  }
+  const auto kernel_end = done.getProfilingInfo<CL_PROFILING_COMMAND_END>();
+  const auto map_end = m.mapped.getProfilingInfo<CL_PROFILING_COMMAND_END>();
+  frame_.timings.readback_ms = double(map_end > kernel_end ? map_end - kernel_end : 0) * 1e-6 + ms_since(t0);
+}
+
 const Frame& Renderer::render(const Scene& scene) {
   Frame& frame = frame_;
   FrameTimings& t = frame.timings;
@@ -232,55 +379,20 @@ const Frame& Renderer::render(const Scene& scene) {
     double upload_ms = 0;
     // A large frame streams: band after band, its records are set up, binned and shaded (the next band's
     // map waits for the kernel that reads the records it overwrites).
-    const int bands = pipeline_.begin_frame(scene, config_, options_.band_record_bytes);
-    const PreparedFrame* band = &prepare_band(scene, 0, &upload_ms);
-    const PreparedFrame& f = *band;
+    const int bands = pipeline_.begin_frame(scene, options_.band_record_bytes);
+    const PreparedFrame& f = prepare_band(scene, 0, &upload_ms);
     t = f.timings;
     t.binning_ms += upload_ms;  // the bins' upload belongs to binning
     frame.stats = f.stats;
     frame.stats.bands = bands;
-    cl::CommandQueue& q = device_.queue();
     const std::size_t pixels = std::size_t(scene.width) * scene.height;
-
-    const auto lights = light_table(scene);
-    auto materials = material_table(scene, options_.specular);
-    if (options_.method == Method::combined) set_combined_limits(scene, options_.combined, materials);
-    if ((lights.size() + materials.size()) * sizeof(cl_float4) > device_.info().constant_buffer)
-      throw DeviceError("the scene's lights and materials do not fit the constant memory of '" + device_.info().name + "'");
-    ensure(lights_, lights_cap_, lights.size() * sizeof(cl_float4), CL_MEM_READ_ONLY);
-    ensure(materials_, materials_cap_, materials.size() * sizeof(cl_float4), CL_MEM_READ_ONLY);
-    q.enqueueWriteBuffer(lights_, CL_FALSE, 0, lights.size() * sizeof(cl_float4), lights.data());
-    q.enqueueWriteBuffer(materials_, CL_FALSE, 0, materials.size() * sizeof(cl_float4), materials.data());
-    // The kernel writes the 8-bit frame straight into the image kept here (no copy on the host).
-    RenderedImage& img = frame.image;
-    img.width = scene.width;
-    img.height = scene.height;
-    if (img.rgba.size() != pixels * 4 || img.rgba.data() != rgba_host_) {
-      q.finish();  // the old buffer's pending unmap must not outlive the memory it maps
-      img.rgba.assign(pixels * 4, 0);
-      rgba_host_ = img.rgba.data();
-      out_rgba_ = cl::Buffer(device_.context(), CL_MEM_WRITE_ONLY | CL_MEM_USE_HOST_PTR, pixels * 4, rgba_host_);
-    }
-    if (options_.float_output) ensure(out_float_, float_cap_, 3 * pixels * sizeof(float), CL_MEM_WRITE_ONLY);
-    else ensure(out_float_, float_cap_, 64, CL_MEM_WRITE_ONLY);
-
-    KernelVariant variant = kernel_variant(scene, options_);
-    variant.plan_pass = options_.plan ? 2 : 0;  // planned: this pass resolves the units' depth keys
-    cl::Kernel kernel(device_.program(kernel_files(variant), variant.build_options()), "render_tiles");
-    const glm::vec3 viewer = variant.local_viewer ? scene.camera.position
-                                                  : glm::normalize(scene.camera.position - scene.camera.target);
+    const std::size_t counter_bytes = counts_per_tile() ? 3 * std::size_t(frame.stats.tiles) * sizeof(cl_ulong) : 64;
+    upload_tables(scene);
+    prepare_outputs(scene, counter_bytes);
+    cl::Kernel& kernel = frame_kernel(scene);
+    const glm::vec3 viewer = variant_->local_viewer ? scene.camera.position
+                                                   : glm::normalize(scene.camera.position - scene.camera.target);
     const glm::vec3 bg = 255.0f * scene.background;
-    // Unused by the kernel off the unit path (and the planes without fixed point): a small placeholder.
-    if (!options_.arith.fixed) ensure(fixed_, fixed_cap_, 64, CL_MEM_READ_ONLY);
-    // Three counters per tile: the unit's spans, pixels and clocks, or the per-span normalization's setups,
-    // fallbacks and sequential steps (never both: the table refuses per-span normals on a unit).
-    const bool counts = options_.unit_path() || options_.span_normalize();
-    const std::size_t counter_bytes = counts ? 3 * std::size_t(frame.stats.tiles) * sizeof(cl_ulong) : 64;
-    ensure(tile_counters_, tile_counters_cap_, counter_bytes, CL_MEM_WRITE_ONLY);
-    if (!options_.dda_coverage) {
-      ensure(dda_first_, dda_first_cap_, 64, CL_MEM_READ_ONLY);
-      ensure(dda_rows_, dda_rows_cap_, 64, CL_MEM_READ_ONLY);
-    }
     const cl_float4 viewer4{{viewer.x, viewer.y, viewer.z, 0.0f}}, background{{bg.x, bg.y, bg.z, 0.0f}};
     const TileKernelArgs args = tile_args(tile_start_, tile_tris_, viewer4, background, scene, f);
     set_tile_kernel_args(kernel, args);
@@ -288,77 +400,20 @@ const Frame& Renderer::render(const Scene& scene) {
     if (f.plan) {
       frame.stats.unit_pass = unit_pass_shares(*f.plan);
       frame.stats.unit_pass_on_sub_devices = !unit_devices_.empty();
-      enqueue_unit_pass(kernel, variant, args, *f.plan, frame.stats.unit_pass, pixels, unit_pass);
+      enqueue_unit_pass(kernel, *variant_, args, *f.plan, frame.stats.unit_pass, pixels, unit_pass);
     }
-    // The kernel, then the map that makes the frame valid in the image's memory (on a CPU device the
-    // kernel wrote it there already): one wait for both. The frame stays mapped until the next render.
-    auto t0 = Clock::now();
-    cl::Event done, mapped;
+    // The kernels, then the map that makes the frame valid in the image's memory: one wait for both. The
+    // frame stays mapped until the next render.
+    cl::Event done;
     std::vector<cl::Event> band_done;  // the bands before the last
-    double band_launch_ms = 0;
-    for (int b = 0;; ++b) {
-      // Tiles [first_tile, end_tile): the kernel walks from its global id (offset by first_tile) to num_tiles.
-      const int tiles = band->end_tile - band->first_tile;
-      q.enqueueNDRangeKernel(kernel, band->first_tile ? cl::NDRange(std::size_t(band->first_tile)) : cl::NullRange,
-                             cl::NDRange(std::size_t(work_items(std::max(1, tiles)))), cl::NDRange(1), nullptr,
-                             &done);
-      if (b + 1 == bands) break;
-      band_done.push_back(done);
-      premap_records();  // mapped when this band's kernel ends (the queue is in order)
-      done.wait();  // the next band's map would wait for it too; this keeps the wait out of its setup time
-      band_launch_ms += ms_since(t0);
-      band = &prepare_band(scene, b + 1, &upload_ms);
-      add_band(*band, upload_ms, t, frame.stats);
-      set_tile_kernel_args(kernel, tile_args(tile_start_, tile_tris_, viewer4, background, scene, *band));
-      t0 = Clock::now();
-    }
-    void* rgba = q.enqueueMapBuffer(out_rgba_, CL_FALSE, CL_MAP_READ, 0, pixels * 4, nullptr, &mapped);
-    const float* planar = nullptr;
-    cl::Event float_mapped;
-    if (options_.float_output)
-      planar = static_cast<const float*>(
-          q.enqueueMapBuffer(out_float_, CL_FALSE, CL_MAP_READ, 0, 3 * pixels * sizeof(float), nullptr, &float_mapped));
-    cl::Event counters_mapped;
-    const cl_ulong* tile_counters = nullptr;
-    if (counts)
-      tile_counters = static_cast<const cl_ulong*>(
-          q.enqueueMapBuffer(tile_counters_, CL_FALSE, CL_MAP_READ, 0, counter_bytes, nullptr, &counters_mapped));
-    mapped.wait();
-    mapped_rgba_ = rgba;
-    if (tile_counters) {
-      counters_mapped.wait();
-      ModeledClocks& c = frame.stats.clocks;
-      for (int tile = 0; tile < frame.stats.tiles && options_.span_normalize(); ++tile) {
-        frame.stats.normalize_span_setups += tile_counters[3 * tile];
-        frame.stats.normalize_fallback_spans += tile_counters[3 * tile + 1];
-        frame.stats.normalize_sequential_steps += tile_counters[3 * tile + 2];
-      }
-      for (int tile = 0; tile < frame.stats.tiles && options_.unit_path(); ++tile) {
-        c.spans += tile_counters[3 * tile];
-        c.pixels += tile_counters[3 * tile + 1];
-        c.clocks += tile_counters[3 * tile + 2];
-      }
-      q.enqueueUnmapMemObject(tile_counters_, const_cast<cl_ulong*>(tile_counters));
-    }
-    t.launch_ms = band_launch_ms + ms_since(t0);
+    Clock::time_point last;
+    const double earlier_bands_ms = launch_bands(scene, bands, &f, args, done, band_done, last);
+    MappedFrame mapped = map_frame(pixels, counter_bytes);
+    t.launch_ms = earlier_bands_ms + ms_since(last);
     t.kernel_ms = event_ms(done);
     for (const cl::Event& e : band_done) t.kernel_ms += event_ms(e);
     if (f.plan) unit_pass_times(unit_pass, t);
-    t0 = Clock::now();
-    if (rgba != rgba_host_)
-      std::memcpy(img.rgba.data(), rgba, pixels * 4);  // the spec says it is the host pointer; be safe
-    img.rgb_float.clear();
-    if (options_.float_output) {
-      float_mapped.wait();
-      img.rgb_float.resize(pixels * 3);
-      for (std::size_t p = 0; p < pixels; ++p)
-        for (int c = 0; c < 3; ++c) img.rgb_float[p * 3 + c] = planar[c * pixels + p];
-      q.enqueueUnmapMemObject(out_float_, const_cast<float*>(planar));
-    }
-    // Read-back: from the kernel's end to the frame in host memory (device clock), plus host copies.
-    const auto kernel_end = done.getProfilingInfo<CL_PROFILING_COMMAND_END>();
-    const auto map_end = mapped.getProfilingInfo<CL_PROFILING_COMMAND_END>();
-    t.readback_ms = double(map_end > kernel_end ? map_end - kernel_end : 0) * 1e-6 + ms_since(t0);
+    copy_out(mapped, pixels, done);
     t.total_ms = ms_since(frame_start);
   } catch (const cl::Error&) {
     rethrow_cl_error("rendering on '" + device_.info().name + "'");

@@ -43,10 +43,9 @@ std::vector<std::unique_ptr<Device>> open_devices(const std::string& selector) {
   return out;
 }
 
-SplitRenderer::SplitRenderer(std::vector<std::unique_ptr<Device>> devices, RenderOptions options, bool keep_going)
+SplitRenderer::SplitRenderer(std::vector<Device*> devices, RenderOptions options, bool keep_going)
     : devices_(std::move(devices)), options_(options), keep_going_(keep_going) {
   if (devices_.empty()) throw UsageError("no device to render on");
-  check_frame_config(options_, DeviceMode::bands);
   if (options_.float_output) throw UsageError("float read-back does not combine with a device list yet");
   speed_.assign(devices_.size(), 0.0);
   dropped_.assign(devices_.size(), "");

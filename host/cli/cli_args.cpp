@@ -5,6 +5,8 @@
 #include "parashade/errors.hpp"
 #include "parashade/memory_budget.hpp"
 #include "parashade/scene_files.hpp"
+#include "parashade/split_renderer.hpp"
+#include "parashade/sub_devices.hpp"
 
 namespace parashade::cli {
 
@@ -22,92 +24,67 @@ std::vector<std::string> split_list(const std::string& list, const std::string& 
   return items;
 }
 
-Scene load_scene_at(const std::string& file, const std::optional<std::pair<int, int>>& size, const std::string& size_text,
-                    std::vector<std::filesystem::path>* files) {
-  std::vector<std::filesystem::path> read;
-  Scene scene = load_scene(file, files ? *files : read);
-  if (size) {
-    std::tie(scene.width, scene.height) = *size;
-    check_resolution(scene.width, scene.height, "--size " + size_text);
-  }
-  check_resolution(scene.width, scene.height, "scene '" + file + "'");
-  if (size) {  // the scene was budgeted at its own resolution
-    std::vector<MemoryItem> budget;
-    for (const Object& o : scene.objects)
-      budget.push_back({"'" + o.name + "'", o.mesh->triangles.size(), o.mesh->positions.size()});
-    check_host_memory(file + " at --size " + size_text, budget, scene.width, scene.height);
-  }
-  return scene;
+std::optional<std::pair<int, int>> checked_size(const std::string& size) {
+  const auto wh = parse_size(size);
+  if (wh) check_resolution(wh->first, wh->second, "--size " + size);
+  return wh;
 }
 
-void check_report_destination(const std::filesystem::path& report) {
-  const std::filesystem::path dir = report.parent_path().empty() ? "." : report.parent_path();
-  std::error_code ec;
-  if (!std::filesystem::is_directory(dir, ec))
-    throw InputError("cannot write '" + report.string() + "': directory '" + dir.string() + "' does not exist");
-  if (std::filesystem::is_directory(report, ec))
-    throw InputError("cannot write '" + report.string() + "': it is a directory");
+Scene load_scene_at(const std::string& file, const std::optional<std::pair<int, int>>& size,
+                    std::vector<std::filesystem::path>* files) {
+  std::vector<std::filesystem::path> read;
+  return load_scene(file, files ? *files : read, size);
 }
 
 namespace {
 
-bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
-  namespace fs = std::filesystem;
-  std::error_code ec_a, ec_b;
-  if (fs::exists(a, ec_a) && fs::exists(b, ec_b)) {
-    std::error_code ec;
-    return fs::equivalent(a, b, ec);
+// The command line's options for the axes a refused combination names.
+std::string option_names(const ConfigError& e, const FrameConfig& config, DeviceMode devices) {
+  std::string flags;
+  for (Axis a : e.axes) {
+    const char* flag = "";
+    switch (a) {
+      case Axis::method: flag = "--method"; break;
+      case Axis::unit: flag = config.units ? "--units" : "--arith/--coverage (on the classic unit)"; break;
+      case Axis::arith: flag = "--arith"; break;
+      case Axis::coverage: flag = "--coverage"; break;
+      case Axis::division: flag = "--div"; break;
+      case Axis::normalize: flag = "--normalize"; break;
+      case Axis::specular: flag = "--specular"; break;
+      case Axis::choice: flag = "--triangle-choice"; break;
+      case Axis::highlight: flag = "--highlight-test"; break;
+      case Axis::plan: flag = "--cu/--partition"; break;
+      case Axis::devices:
+        flag = devices == DeviceMode::ranks_sort_first || devices == DeviceMode::ranks_sort_last ? "--distribute"
+                                                                                                : "--device";
+        break;
+    }
+    flags += (flags.empty() ? "" : ", ") + std::string(flag);
   }
-  std::error_code ec;
-  const fs::path ca = fs::weakly_canonical(fs::absolute(a, ec), ec);
-  const fs::path cb = fs::weakly_canonical(fs::absolute(b, ec), ec);
-  return ca == cb;
+  return flags;
 }
 
 }  // namespace
 
-void check_distinct_files(const std::vector<std::pair<std::string, std::filesystem::path>>& outputs,
-                          const std::vector<std::filesystem::path>& inputs) {
-  for (std::size_t i = 0; i < outputs.size(); ++i) {
-    const auto& [option, path] = outputs[i];
-    if (path.empty()) continue;
-    for (std::size_t j = 0; j < i; ++j)
-      if (!outputs[j].second.empty() && same_file(outputs[j].second, path))
-        throw UsageError(outputs[j].first + " '" + outputs[j].second.string() + "' and " + option + " '" +
-                         path.string() + "' are the same file: one would overwrite the other");
-    for (const std::filesystem::path& input : inputs)
-      if (same_file(input, path))
-        throw UsageError(option + " '" + path.string() + "' is the input file '" + input.string() +
-                         "': writing it would destroy the input");
+void with_option_names(const FrameConfig& config, DeviceMode devices, const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const ConfigError& e) {
+    throw UsageError(option_names(e, config, devices) + ": " + e.what() + " (parashade combinations lists what combines)");
   }
 }
 
-void check_config_options(const FrameConfig& config, DeviceMode devices) {
+ResolvedRender resolve_with_option_names(const RenderRequest& request, CommandFiles& files) {
   try {
-    check_frame_config(config, devices);
+    return resolve_render(request, files);
+  } catch (const DeviceSelectorError& e) {
+    throw UsageError(std::string("--device: ") + e.what());
   } catch (const ConfigError& e) {
-    std::string flags;
-    for (Axis a : e.axes) {
-      const char* flag = "";
-      switch (a) {
-        case Axis::method: flag = "--method"; break;
-        case Axis::unit: flag = config.units ? "--units" : "--arith/--coverage (on the classic unit)"; break;
-        case Axis::arith: flag = "--arith"; break;
-        case Axis::coverage: flag = "--coverage"; break;
-        case Axis::division: flag = "--div"; break;
-        case Axis::normalize: flag = "--normalize"; break;
-        case Axis::specular: flag = "--specular"; break;
-        case Axis::choice: flag = "--triangle-choice"; break;
-        case Axis::highlight: flag = "--highlight-test"; break;
-        case Axis::plan: flag = "--cu/--partition"; break;
-        case Axis::devices:
-          flag = devices == DeviceMode::ranks_sort_first || devices == DeviceMode::ranks_sort_last ? "--distribute"
-                                                                                                  : "--device";
-          break;
-      }
-      flags += (flags.empty() ? "" : ", ") + std::string(flag);
-    }
-    throw UsageError(flags + ": " + e.what() + " (parashade combinations lists what combines)");
+    const DeviceMode mode = request.options.plan && is_sub_device_selector(request.device) ? DeviceMode::unit_sub_devices
+                            : is_device_list(request.device)                             ? DeviceMode::bands
+                                                                                         : DeviceMode::one;
+    throw UsageError(option_names(e, request.options, mode) + ": " + e.what() +
+                     " (parashade combinations lists what combines)");
   }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Command-line values the commands share: lists, sizes, output destinations.
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -8,6 +9,7 @@
 
 #include "parashade/errors.hpp"
 #include "parashade/frame_config.hpp"
+#include "parashade/render_step.hpp"
 #include "parashade/scene.hpp"
 
 namespace parashade::cli {
@@ -44,24 +46,20 @@ auto parse_unique_list(const std::string& list, const std::string& option, Parse
   return out;
 }
 
-// The scene file, at `size` when given (--size overrides the scene's resolution); both resolutions are
-// checked against the 12-bit address limit, naming the culprit.
-// `files`, when given, receives every file read (load_scene in scene_files.hpp).
-Scene load_scene_at(const std::string& file, const std::optional<std::pair<int, int>>& size, const std::string& size_text,
+// --size WIDTHxHEIGHT parsed and within the resolution limit (nullopt when not given).
+std::optional<std::pair<int, int>> checked_size(const std::string& size);
+
+// The scene file at `size` when given (--size overrides the scene's resolution, and the memory budget is
+// judged at it). `files`, when given, receives every file read (load_scene in scene_files.hpp).
+Scene load_scene_at(const std::string& file, const std::optional<std::pair<int, int>>& size,
                     std::vector<std::filesystem::path>* files = nullptr);
 
-// Checks `config` (check_frame_config) on `devices`; a refused combination becomes a usage error that
-// names this command line's options for the values at fault.
-void check_config_options(const FrameConfig& config, DeviceMode devices = DeviceMode::one);
+// Runs `call` (which checks `config` on `devices` against the table of combinations: check_render_options,
+// resolve_render); a refused combination becomes a usage error that names this command line's options for
+// the values at fault.
+void with_option_names(const FrameConfig& config, DeviceMode devices, const std::function<void()>& call);
 
-// A report is written after the work; a folder that is not there must stop the run before it.
-void check_report_destination(const std::filesystem::path& report);
-
-// No output may be another output or an input file (the scene, its meshes): compared as files
-// (std::filesystem::equivalent where both exist, else the normalized absolute paths with symbolic links
-// resolved), not as strings. `outputs` pairs an option with its path; an empty path is an option not
-// given. A collision is a usage error naming both.
-void check_distinct_files(const std::vector<std::pair<std::string, std::filesystem::path>>& outputs,
-                          const std::vector<std::filesystem::path>& inputs);
+// resolve_render, its refusals named by the command line's options.
+ResolvedRender resolve_with_option_names(const RenderRequest& request, CommandFiles& files);
 
 }  // namespace parashade::cli

@@ -5,6 +5,7 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "common_options.hpp"
+#include "parashade/command_files.hpp"
 #include "parashade/combinations.hpp"
 
 namespace parashade::cli {
@@ -45,7 +46,9 @@ Command add_combinations_command(CLI::App& app) {
   add_quiet_flag(*cmd, a->quiet);
   return {cmd, [a]() {
             if (!a->report.empty()) {
-              check_report_destination(a->report);
+              CommandFiles files;
+              files.output("--report", a->report);
+              files.check();
               write_report(a->report, combinations_json(), "combinations");
             }
             std::fputs(describe_combinations().c_str(), stdout);

@@ -10,7 +10,8 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "common_options.hpp"
-#include "error_pictures.hpp"
+#include "../render/error_pictures.hpp"
+#include "parashade/command_files.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/image.hpp"
 #include "parashade/metrics.hpp"
@@ -55,9 +56,12 @@ nlohmann::json compare_report(const CompareArgs& args, const RenderedImage& a, i
 int run_compare(const CompareArgs& args) {
   if (args.fail != -1 && !(args.fail >= 0 && args.fail <= 255))
     throw UsageError("--fail must be a number of levels in [0, 255]");
-  check_distinct_files({{"--diff", args.diff}, {"--report", args.report}}, {args.a, args.b});
-  if (!args.diff.empty()) check_image_destination(args.diff);
-  if (!args.report.empty()) check_report_destination(args.report);
+  CommandFiles files;
+  files.input("A", args.a);
+  files.input("B", args.b);
+  files.output("--diff", args.diff, OutputKind::image);
+  files.output("--report", args.report);
+  files.check();
 
   int channels_a = 0, channels_b = 0;
   RenderedImage a = read_image(args.a, &channels_a);

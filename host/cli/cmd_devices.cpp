@@ -5,6 +5,7 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "common_options.hpp"
+#include "parashade/command_files.hpp"
 #include "parashade/device.hpp"
 #include "parashade/report.hpp"
 
@@ -17,7 +18,9 @@ struct DevicesArgs {
 };
 
 int run(const DevicesArgs& a) {
-  if (!a.report.empty()) check_report_destination(a.report);
+  CommandFiles files;
+  files.output("--report", a.report);
+  files.check();
   const auto devices = list_devices();
   nlohmann::json list = nlohmann::json::array();
   for (const auto& d : devices) list.push_back(to_json(d));

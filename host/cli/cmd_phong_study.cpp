@@ -9,6 +9,7 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "common_options.hpp"
+#include "parashade/command_files.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/phong_study.hpp"
 #include "parashade/report.hpp"
@@ -22,9 +23,10 @@ struct StudyArgs {
 };
 
 int run(const StudyArgs& args) {
-  for (const std::string& path : {args.report, args.markdown})
-    if (!path.empty()) check_report_destination(path);
-  check_distinct_files({{"--report", args.report}, {"-o", args.markdown}}, {});
+  CommandFiles files;
+  files.output("--report", args.report);
+  files.output("-o", args.markdown);
+  files.check();
   const PhongStudy study = phong_study();
   std::cout << study.markdown;
   if (!args.report.empty()) write_report(args.report, study.report, "phong-study");

@@ -1,5 +1,5 @@
-// `parashade plan SCENE`: the planner's per-unit load for a scene without rendering (host only: the frame
-// prepared as render prepares it, then make_plan for each strategy and U asked for).
+// `parashade plan SCENE`: the planner's per-unit load for a scene without rendering (host only:
+// scene_plans.hpp).
 #include <cstdio>
 #include <iostream>
 
@@ -8,12 +8,14 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "common_options.hpp"
+#include "parashade/command_files.hpp"
 #include "parashade/errors.hpp"
-#include "parashade/frame_pipeline.hpp"
+#include "parashade/scene_plans.hpp"
 #include "parashade/planner.hpp"
 #include "parashade/report.hpp"
 #include "parashade/unit_table.hpp"
 #include "plan_cli.hpp"
+#include "../render/plan_summary.hpp"
 
 namespace parashade::cli {
 namespace {
@@ -26,7 +28,7 @@ struct PlanCommandArgs {
 };
 
 int run_plan(const PlanCommandArgs& a) {
-  const auto size = parse_size(a.size);
+  const auto size = checked_size(a.size);
   // The frame as render prepares it for Gouraud (the planner costs the unit's spans); each plan below.
   FrameConfig config;
   config.tile_size = a.tile;
@@ -35,27 +37,30 @@ int run_plan(const PlanCommandArgs& a) {
   const std::vector<PlanOptions> list = plan_option_list(a.plan);
   for (const PlanOptions& o : list) {
     config.plan = o;
-    check_config_options(config);
+    RenderOptions checked;
+    static_cast<FrameConfig&>(checked) = config;
+    with_option_names(config, DeviceMode::one, [&] { check_render_options(checked, DeviceMode::one); });
   }
   config.plan.reset();
-  if (!a.report.empty()) check_report_destination(a.report);
-  const Scene scene = load_scene_at(a.scene, size, a.size);
+  CommandFiles files;
+  files.output("--report", a.report);
+  std::vector<std::filesystem::path> inputs;
+  const Scene scene = load_scene_at(a.scene, size, &inputs);
+  files.scene(inputs);
+  files.check();
 
-  FramePipeline pipeline;
-  const PreparedFrame& frame = pipeline.prepare_frame(scene, config);
-  const std::size_t n = frame.records;
+  const ScenePlans plans = plan_scene(scene, config, list);
   std::printf("%s: %dx%d, %zu screen triangles, %zu bin entries, tile %d, unit %s\n", scene.name.c_str(), scene.width,
-              scene.height, n, frame.bin_entries(), a.tile, unit_name(unit).c_str());
-  nlohmann::json plans = nlohmann::json::array();
-  for (const PlanOptions& o : list) {
-    const Plan plan = make_plan(frame.arrays.triangles, n, frame.bins(), unit, o);
-    print_plan(plan.report, a.per_unit);
-    plans.push_back(to_json(plan.report));
+              scene.height, plans.screen_triangles, plans.bin_entries, a.tile, unit_name(unit).c_str());
+  nlohmann::json reports = nlohmann::json::array();
+  for (const PlanReport& r : plans.reports) {
+    print_plan(r, a.per_unit);
+    reports.push_back(to_json(r));
   }
   if (!a.report.empty()) {
     const nlohmann::json report = {{"scene", scene.name}, {"scene_file", a.scene}, {"width", scene.width},
-                                   {"height", scene.height}, {"screen_triangles", n}, {"bin_entries", frame.bin_entries()},
-                                   {"unit", unit_name(unit)}, {"plans", plans}};
+                                   {"height", scene.height}, {"screen_triangles", plans.screen_triangles},
+                                   {"bin_entries", plans.bin_entries}, {"unit", unit_name(unit)}, {"plans", reports}};
     write_report(a.report, report, "plan");
   }
   return 0;

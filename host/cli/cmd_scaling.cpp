@@ -26,9 +26,10 @@
 #include "progress.hpp"
 #include "parashade/distributed.hpp"
 #include "parashade/errors.hpp"
-#include "parashade/geometry_stage.hpp"
 #include "parashade/metrics.hpp"
 #include "parashade/reference.hpp"
+#include "parashade/command_files.hpp"
+#include "parashade/render_step.hpp"
 #include "parashade/renderer.hpp"
 #include "parashade/report.hpp"
 #include "parashade/report_header.hpp"
@@ -47,7 +48,6 @@ std::string default_units() { return unit_specs(&UnitRow::scaling_sweep); }
 
 struct ScalingArgs {
   std::string scene, units = default_units(), arith = kDefaultArith, method = "gouraud", size, device, report;
-  std::string device_origin = "--device";  // or PARASHADE_DEVICE (device_option.hpp)
   int frames = 5, warmup = 1;
   bool float_output = false, markdown = false, quiet = false;
   bool mpi = false;  // under mpirun: configurations dealt across the ranks, rank 0 merges (docs/distributed.md)
@@ -58,7 +58,8 @@ struct ScalingArgs {
 struct Config {
   UnitConfig unit;
   Arithmetic arith;
-  std::unique_ptr<Renderer> renderer;
+  std::unique_ptr<ResolvedRender> resolved;  // the base render with this unit and arithmetic
+  std::unique_ptr<RenderSession> session;    // its renderer (declared after: destroyed first)
   ModeledClocks clocks;
   GeometryStats geometry;
   ErrorMetrics ideal, exact;
@@ -68,6 +69,17 @@ struct Config {
   const Config* classic = nullptr;  // classic in the same arithmetic, when it is in the list
   std::string name() const { return unit_name(unit); }
 };
+
+// A configuration's render options: the method through the unit in the arithmetic, the default tile.
+RenderOptions options_of(const ScalingArgs& a, Method method, const Config& c) {
+  RenderOptions o;
+  o.method = method;
+  o.float_output = a.float_output;
+  o.units = c.unit;
+  o.arith = c.arith;
+  o.tile_size = TILE_DEFAULT;
+  return o;
+}
 
 double ratio(double baseline, double value) { return value > 0 ? baseline / value : 0.0; }
 
@@ -154,150 +166,105 @@ void print_table(const std::vector<Config>& configs, bool markdown) {
   for (const auto& r : rows) print_row(r);
 }
 
-int run_scaling(const ScalingArgs& a) {
-  // The command line first (usage errors, exit 2), then the scene and the destination (exit 3), then the device.
+// The units and arithmetics of the sweep, each checked against the table (usage errors, before any file
+// is read). Units the table refuses with this method (phong: the extra triangulation) are left out of the
+// default list, and refused when asked for.
+std::vector<Config> sweep_configs(const ScalingArgs& a, Method method) {
   std::vector<UnitConfig> units = parse_unique_list(a.units, "--units", parse_units, unit_name);
   const std::vector<Arithmetic> ariths = parse_unique_list(a.arith, "--arith", parse_arith, arith_name);
-  const Method method = parse_method(a.method);
-  // Units the table of combinations refuses with this method (phong: the extra triangulation) are left
-  // out of the default list, and refused when asked for.
-  const auto config_of = [&](const UnitConfig& u, const Arithmetic& ar) {
+  const auto refused = [&](const UnitConfig& u) {
     FrameConfig c;
     c.method = method;
     c.units = u;
-    c.arith = ar;
-    return c;
+    return find_refusal(combination_of(c)) != nullptr;
   };
-  const auto refused = [&](const UnitConfig& u) { return find_refusal(combination_of(config_of(u, {}))) != nullptr; };
   if (a.units == default_units() && !std::all_of(units.begin(), units.end(), refused))  // flat refuses them all
     units.erase(std::remove_if(units.begin(), units.end(), refused), units.end());
-  for (const Arithmetic& ar : ariths)
-    for (const UnitConfig& u : units) check_config_options(config_of(u, ar));
-  const auto size = parse_size(a.size);
-  if (a.frames < 1) throw UsageError("--frames must be at least 1");
-  if (a.warmup < 1) throw UsageError("--warmup must be at least 1 (the warm-up frame gives the error figures)");
-
-  // --mpi: configuration i runs on rank i mod N; every step agrees across the ranks (a failure on any
-  // rank stops them all), rank 0 merges the rows and writes the one report.
-  std::unique_ptr<RankGroup> group;
-  if (a.mpi) group = RankGroup::join();
-  const int rank = group ? group->rank() : 0, ranks = group ? group->size() : 1;
-  const auto step = [&](const std::function<void()>& f) { step_in(group.get(), f); };
-  Scene scene;
-  std::unique_ptr<Device> device;
-  ReferenceImage ref;
-  step([&] {
-    scene = load_scene_at(a.scene, size, a.size);
-    if (!a.report.empty() && rank == 0) check_report_destination(a.report);
-    device = for_device(a.device_origin, [&] { return open_device(a.device); });
-    // The exact reference, once for the scene: every configuration shades the same screen triangles.
-    if (!a.quiet && rank == 0)
-      std::cerr << "scaling " << scene.name << " (" << scene.width << "x" << scene.height << ", "
-                << scene.triangle_count() << " triangles) on " << device->info().name
-                << (group ? " over " + std::to_string(ranks) + " ranks" : std::string()) << ": exact reference ...\n";
-    ScreenGeometry g;
-    build_screen_geometry(scene, {method, true}, g);
-    ref = render_reference(scene, g, method);
-  });
-  const DeviceInfo& dev = device->info();
-
   std::vector<Config> configs;
   for (const Arithmetic& ar : ariths)
     for (const UnitConfig& u : units) {
       Config c;
       c.unit = u;
       c.arith = ar;
+      const RenderOptions o = options_of(a, method, c);
+      with_option_names(o, DeviceMode::one, [&] { check_render_options(o, DeviceMode::one); });
       configs.push_back(std::move(c));
     }
   for (Config& c : configs)
     for (const Config& other : configs)
       if (other.unit.kind == UnitKind::classic && arith_name(other.arith) == arith_name(c.arith)) c.classic = &other;
+  return configs;
+}
 
-  // Warm-up: every configuration's program is built and its buffers allocated before any timed frame;
-  // the last warm-up frame gives the modeled clocks and the error (the units are deterministic).
-  const std::size_t total = configs.size();
-  const auto mine = [&](std::size_t i) { return int(i % std::size_t(ranks)) == rank; };
-  std::size_t my_configs = 0;
-  for (std::size_t i = 0; i < total; ++i) my_configs += mine(i);
-  // [i/N] over this rank's frames, warm-up and timed; rank 0's only (the ranks share a terminal).
-  FrameProgress progress(int(my_configs) * (a.warmup + a.frames), a.quiet || rank != 0);
-  int frames_done = 0;
-  step([&] {
-  for (std::size_t i = 0; i < total; ++i) {
+// This rank's configurations: warm-up (programs built, buffers allocated; the last warm-up frame gives the
+// modeled clocks and the error: the units are deterministic), then the timed frames round-robin, each round
+// starting one configuration later: on a noisy shared machine a slow spell then falls on every
+// configuration alike instead of on whichever ran during it.
+void measure_configs(const ScalingArgs& a, const ResolvedRender& base, const ReferenceImage& ref,
+                     std::vector<Config>& configs, const std::function<bool(std::size_t)>& mine, FrameProgress& progress) {
+  const Method method = base.options.method;
+  int done = 0;
+  for (std::size_t i = 0; i < configs.size(); ++i) {
     if (!mine(i)) continue;
     Config& c = configs[i];
-    RenderOptions options;
-    options.method = method;
-    options.float_output = a.float_output;
-    options.units = c.unit;
-    options.arith = c.arith;
-    c.renderer = std::make_unique<Renderer>(*device, options);
+    c.resolved = std::make_unique<ResolvedRender>(with_options(base, options_of(a, method, c)));
+    c.session = std::make_unique<RenderSession>(*c.resolved);
     const Frame* f = nullptr;
     for (int w = 0; w < a.warmup; ++w) {
-      f = &c.renderer->render(scene);
-      progress.step(++frames_done);
+      f = &c.session->frame();
+      progress.step(++done);
     }
     c.clocks = f->stats.clocks;
     c.geometry = f->stats.geometry;
-    c.ideal = compare_to_reference(f->image, ref.covered, ref.ideal, std::string("ideal ") + method_name(method));
-    c.exact = compare_to_reference(f->image, ref.covered, ref.exact, "exact phong");
+    const ErrorFigures e = error_against(ref, method, f->image);
+    c.ideal = e.implementation;
+    c.exact = e.method;
     c.ideal_json = to_json(c.ideal);
     c.exact_json = to_json(c.exact);
   }
-
-  // Timed frames round-robin, each round starting one configuration later: on a noisy shared machine a
-  // slow spell then falls on every configuration alike instead of on whichever ran during it.
-  for (int round = 0; round < a.frames; ++round) {
+  const std::size_t total = configs.size();
+  for (int round = 0; round < a.frames; ++round)
     for (std::size_t k = 0; k < total; ++k) {
       if (!mine((k + std::size_t(round)) % total)) continue;
       Config& c = configs[(k + std::size_t(round)) % total];
-      const Frame& f = c.renderer->render(scene);
+      const Frame& f = c.session->frame();
       c.total_ms.push_back(f.timings.total_ms);
       c.kernel_ms.push_back(f.timings.kernel_ms);
-      progress.step(++frames_done);
+      progress.step(++done);
     }
-  }
-  });
-  if (group) {
-    // Every rank's configurations to rank 0, which fills them in (the others are done).
-    nlohmann::json sent = nlohmann::json::array();
-    for (std::size_t i = 0; i < total; ++i) {
-      if (!mine(i) || rank == 0) continue;
-      const Config& c = configs[i];
-      sent.push_back({{"i", i}, {"clocks", to_json(c.clocks)}, {"in", c.geometry.triangles_in},
-                      {"out", c.geometry.triangles_out}, {"ideal", c.ideal_json}, {"exact", c.exact_json},
-                      {"total_ms", c.total_ms}, {"kernel_ms", c.kernel_ms}});
-    }
-    const std::vector<std::string> got = group->gather(sent.dump());
-    if (rank != 0) {
-      step([] {});  // rank 0's report
-      return 0;
-    }
-    for (std::size_t r = 1; r < got.size(); ++r)
-      for (const auto& j : nlohmann::json::parse(got[r])) {
-        Config& c = configs[j["i"].get<std::size_t>()];
-        c.clocks.spans = j["clocks"]["spans"];
-        c.clocks.pixels = j["clocks"]["span_pixels"];
-        c.clocks.clocks = j["clocks"]["clocks"];
-        c.geometry.triangles_in = j["in"];
-        c.geometry.triangles_out = j["out"];
-        c.ideal_json = j["ideal"];
-        c.exact_json = j["exact"];
-        // null: undefined (nothing compared), printed "-", not 0
-        const double undefined = std::numeric_limits<double>::quiet_NaN();
-        c.ideal.max_abs = c.ideal_json["max_abs"].is_null() ? undefined : c.ideal_json["max_abs"].get<double>();
-        c.ideal.nmse = c.ideal_json["nmse"].is_null() ? undefined : c.ideal_json["nmse"].get<double>();
-        c.total_ms = j["total_ms"].get<std::vector<double>>();
-        c.kernel_ms = j["kernel_ms"].get<std::vector<double>>();
-      }
-  }
-  for (Config& c : configs) {
-    c.frame_ms = median(c.total_ms);
-    c.kernel_med_ms = median(c.kernel_ms);
-    c.frame_min_ms = *std::min_element(c.total_ms.begin(), c.total_ms.end());
-    c.kernel_min_ms = *std::min_element(c.kernel_ms.begin(), c.kernel_ms.end());
-  }
+}
 
+// --mpi: every rank's configurations to rank 0, which fills them in.
+void merge_from_ranks(RankGroup& group, std::vector<Config>& configs, const std::function<bool(std::size_t)>& mine) {
+  nlohmann::json sent = nlohmann::json::array();
+  for (std::size_t i = 0; i < configs.size(); ++i) {
+    if (!mine(i) || group.rank() == 0) continue;
+    const Config& c = configs[i];
+    sent.push_back({{"i", i}, {"clocks", to_json(c.clocks)}, {"in", c.geometry.triangles_in},
+                    {"out", c.geometry.triangles_out}, {"ideal", c.ideal_json}, {"exact", c.exact_json},
+                    {"total_ms", c.total_ms}, {"kernel_ms", c.kernel_ms}});
+  }
+  const std::vector<std::string> got = group.gather(sent.dump());
+  for (std::size_t r = 1; r < got.size(); ++r)
+    for (const auto& j : nlohmann::json::parse(got[r])) {
+      Config& c = configs[j["i"].get<std::size_t>()];
+      c.clocks.spans = j["clocks"]["spans"];
+      c.clocks.pixels = j["clocks"]["span_pixels"];
+      c.clocks.clocks = j["clocks"]["clocks"];
+      c.geometry.triangles_in = j["in"];
+      c.geometry.triangles_out = j["out"];
+      c.ideal_json = j["ideal"];
+      c.exact_json = j["exact"];
+      // null: undefined (nothing compared), printed "-", not 0
+      const double undefined = std::numeric_limits<double>::quiet_NaN();
+      c.ideal.max_abs = c.ideal_json["max_abs"].is_null() ? undefined : c.ideal_json["max_abs"].get<double>();
+      c.ideal.nmse = c.ideal_json["nmse"].is_null() ? undefined : c.ideal_json["nmse"].get<double>();
+      c.total_ms = j["total_ms"].get<std::vector<double>>();
+      c.kernel_ms = j["kernel_ms"].get<std::vector<double>>();
+    }
+}
+
+nlohmann::json scaling_report(const ScalingArgs& a, const ResolvedRender& base, const std::vector<Config>& configs) {
   nlohmann::json rows = nlohmann::json::array();
   for (const Config& c : configs) {
     rows.push_back({{"unit", c.name()},
@@ -317,28 +284,29 @@ int run_scaling(const ScalingArgs& a) {
                     {"error", {{"implementation", c.ideal_json}, {"method", c.exact_json}}}});
   }
   const GeometryStats& geo = configs.front().geometry;
-  nlohmann::json report = {
-      {"scene", scene.name},
-      {"scene_file", a.scene},
-      {"device", to_json(dev)},
-      {"method", method_name(method)},
-      {"width", scene.width},
-      {"height", scene.height},
-      {"triangles", {{"in", geo.triangles_in}, {"after_culling", geo.triangles_out}}},
-      {"frames", a.frames},
-      {"warmup", a.warmup},
-      {"float_output", a.float_output},
-      {"frame_ms_note", "median of " + std::to_string(a.frames) + " frames per configuration after " +
-                            std::to_string(a.warmup) +
-                            " warm-up frame(s) each, round-robin across configurations; whole frame: geometry, "
-                            "setup, binning, kernel, read-back"},
-      {"speedup_note", "classic in the same arithmetic divided by the configuration (modeled clocks, frame_ms, "
-                       "kernel_ms); null when classic is not in the list"},
-      {"rows", rows}};
-  step([&] {
-    if (!a.report.empty()) write_report(a.report, report, "scaling");
-  });
+  const Scene& scene = base.scene;
+  return {{"scene", scene.name},
+          {"scene_file", a.scene},
+          {"device", to_json(base.devices.front()->info())},
+          {"method", method_name(base.options.method)},
+          {"width", scene.width},
+          {"height", scene.height},
+          {"triangles", {{"in", geo.triangles_in}, {"after_culling", geo.triangles_out}}},
+          {"frames", a.frames},
+          {"warmup", a.warmup},
+          {"float_output", a.float_output},
+          {"frame_ms_note", frame_ms_note(a.frames, a.warmup, "frames per configuration",
+                                          std::string(" each, round-robin across configurations; ") + kWholeFrame)},
+          {"speedup_note", "classic in the same arithmetic divided by the configuration (modeled clocks, frame_ms, "
+                           "kernel_ms); null when classic is not in the list"},
+          {"rows", rows}};
+}
 
+void print_scaling(const ScalingArgs& a, const ResolvedRender& base, const std::vector<Config>& configs) {
+  const Scene& scene = base.scene;
+  const DeviceInfo& dev = base.devices.front()->info();
+  const Method method = base.options.method;
+  const GeometryStats& geo = configs.front().geometry;
   std::printf("%s: %dx%d, %llu triangles (%llu after culling and clipping), %s through modeled shading units\n",
               scene.name.c_str(), scene.width, scene.height, (unsigned long long)geo.triangles_in,
               (unsigned long long)geo.triangles_out, method == Method::phong ? "Phong (normal components)" : "Gouraud");
@@ -361,6 +329,66 @@ int run_scaling(const ScalingArgs& a) {
               a.float_output ? "unclamped float output" : "8-bit output");
   print_table(configs, a.markdown);
   if (!a.report.empty()) std::printf("wrote %s\n", a.report.c_str());
+}
+
+int run_scaling(const ScalingArgs& a) {
+  // The command line first (usage errors, exit 2), then the scene and the destination (exit 3), then the device.
+  const Method method = parse_method(a.method);
+  std::vector<Config> configs = sweep_configs(a, method);
+  RenderRequest request;
+  request.scene_file = a.scene;
+  request.size = checked_size(a.size);
+  request.device = a.device;
+  request.options = options_of(a, method, configs.front());
+  request.use_tuned = false;
+  request.quiet = a.quiet;
+  if (a.frames < 1 || a.frames > kMaxFrames) throw UsageError("--frames must be 1.." + std::to_string(kMaxFrames));
+  if (a.warmup < 1 || a.warmup > kMaxFrames)
+    throw UsageError("--warmup must be 1.." + std::to_string(kMaxFrames) + " (the warm-up frame gives the error figures)");
+
+  // --mpi: configuration i runs on rank i mod N; every step agrees across the ranks (a failure on any
+  // rank stops them all), rank 0 merges the rows and writes the one report.
+  std::unique_ptr<RankGroup> group;
+  if (a.mpi) group = RankGroup::join();
+  const int rank = group ? group->rank() : 0, ranks = group ? group->size() : 1;
+  const auto step = [&](const std::function<void()>& f) { step_in(group.get(), f); };
+  std::unique_ptr<ResolvedRender> base;
+  ReferenceImage ref;
+  step([&] {
+    CommandFiles files;
+    if (rank == 0) files.output("--report", a.report);
+    base = std::make_unique<ResolvedRender>(resolve_with_option_names(request, files));
+    // The exact reference, once for the scene: every configuration shades the same screen triangles.
+    if (!a.quiet && rank == 0)
+      std::cerr << "scaling " << base->scene.name << " (" << base->scene.width << "x" << base->scene.height << ", "
+                << base->scene.triangle_count() << " triangles) on " << base->devices.front()->info().name
+                << (group ? " over " + std::to_string(ranks) + " ranks" : std::string()) << ": exact reference ...\n";
+    ref = exact_reference(base->scene, method);
+  });
+  const auto mine = [&](std::size_t i) { return int(i % std::size_t(ranks)) == rank; };
+  std::size_t my_configs = 0;
+  for (std::size_t i = 0; i < configs.size(); ++i) my_configs += mine(i);
+  // [i/N] over this rank's frames, warm-up and timed; rank 0's only (the ranks share a terminal).
+  FrameProgress progress(int(my_configs) * (a.warmup + a.frames), a.quiet || rank != 0);
+  step([&] { measure_configs(a, *base, ref, configs, mine, progress); });
+  if (group) {
+    merge_from_ranks(*group, configs, mine);
+    if (rank != 0) {
+      step([] {});  // rank 0's report
+      return 0;
+    }
+  }
+  for (Config& c : configs) {
+    c.frame_ms = median(c.total_ms);
+    c.kernel_med_ms = median(c.kernel_ms);
+    c.frame_min_ms = *std::min_element(c.total_ms.begin(), c.total_ms.end());
+    c.kernel_min_ms = *std::min_element(c.kernel_ms.begin(), c.kernel_ms.end());
+  }
+  const nlohmann::json report = scaling_report(a, *base, configs);
+  step([&] {
+    if (!a.report.empty()) write_report(a.report, report, "scaling");
+  });
+  print_scaling(a, *base, configs);
   return 0;
 }
 
@@ -398,7 +426,6 @@ Command add_scaling_command(CLI::App& app) {
                 "writes the merged report and table (docs/distributed.md)");
   add_quiet_flag(*cmd, a->quiet);
   return {cmd, [a]() {
-            a->device_origin = device_from_environment(a->device);
             return run_scaling(*a);
           }};
 }

@@ -23,16 +23,17 @@
 #include "progress.hpp"
 #include "parashade/distributed.hpp"
 #include "parashade/errors.hpp"
-#include "parashade/geometry_stage.hpp"
 #include "parashade/json_number.hpp"
 #include "parashade/metrics.hpp"
 #include "parashade/reference.hpp"
+#include "parashade/command_files.hpp"
+#include "parashade/render_step.hpp"
 #include "parashade/renderer.hpp"
 #include "parashade/report.hpp"
 #include "parashade/report_header.hpp"
 #include "parashade/statistics.hpp"
 #include "parashade/tile_choice.hpp"
-#include "tune_cache.hpp"
+#include "../render/tune_cache.hpp"
 #include "tune_export.hpp"
 #include "tune_space.hpp"
 #include "tune_strategy.hpp"
@@ -43,7 +44,6 @@ namespace {
 struct TuneArgs {
   std::string scene, size, device, method = "gouraud", cache, strategy = "brute", objective = "fastest", report, export_kt;
   std::vector<std::string> params;  // --param NAME=V1,V2,...
-  std::string device_origin = "--device";  // or PARASHADE_DEVICE (device_option.hpp)
   int budget_runs = 12, frames = 5;
   double budget_seconds = 0, max_error = 0, max_nmse = 0;  // budgets: 0 = none
   std::uint64_t seed = 2026;
@@ -97,20 +97,6 @@ Result result_from_json(const nlohmann::json& j, std::size_t point) {
 
 bool eligible(const Result& r) { return r.m.verified && r.within_budget; }
 
-// The render options that give `o` on the command line (the shading and the layout).
-std::string render_flags(const RenderOptions& o) {
-  std::string s = std::string("--method ") + (o.method == Method::combined ? combined_name(o.combined) : method_name(o.method));
-  if (o.units) s += " --units " + unit_name(*o.units);
-  if (o.normalize.kind != NormalizeKind::exact) s += " --normalize " + normalize_name(o.normalize);
-  if (o.specular.kind != SpecularKind::exact) s += " --specular " + specular_name(o.specular);
-  s += " --tile " + std::to_string(o.tile_size) + " --work-items " + std::to_string(o.work_items);
-  if (o.plan) {
-    s += " --cu " + std::to_string(o.plan->units) + " --partition " + partition_name(o.plan->partition);
-    if (o.plan->partition == Partition::dynamic) s += " --batch " + std::to_string(o.plan->batch);
-  }
-  return s;
-}
-
 // The tune report (--report): one function, so that the report's header and schema live in one place.
 nlohmann::json tune_report(const TuneArgs& a, const Scene& scene, const DeviceInfo& dev, const TuneSpace& space,
                            const TunePoints& points, const std::vector<Result>& results, const Result* best,
@@ -143,8 +129,8 @@ void write_tune_report(const std::string& path, const nlohmann::json& report) {
   if (!path.empty()) write_report(path, report, "tune");
 }
 
-int run_tune(const TuneArgs& a) {
-  // The command line first (usage errors), then the scene, then the device.
+// The command line's values (usage errors, before any file is read).
+void check_tune_args(const TuneArgs& a, TuneStrategy strategy) {
   if (a.budget_runs < 1) throw UsageError("--budget-runs must be at least 1");
   if (a.budget_seconds < 0) throw UsageError("--budget-seconds must not be negative");
   if (a.frames < 1 || a.frames > kMaxFrames) throw UsageError("--frames must be 1.." + std::to_string(kMaxFrames));
@@ -153,78 +139,98 @@ int run_tune(const TuneArgs& a) {
                      "' (valid: fastest; with --max-error or --max-nmse, fastest within that error budget)");
   if (a.max_error < 0 || a.max_error > 255) throw UsageError("--max-error must be in (0, 255] levels");
   if (a.max_nmse < 0 || !std::isfinite(a.max_nmse)) throw UsageError("--max-nmse must be a positive number");
-  const TuneStrategy strategy = parse_tune_strategy(a.strategy);
   if (a.mpi && strategy == TuneStrategy::anneal)
     throw UsageError("--mpi deals a known list of candidates across the ranks; anneal chooses each candidate from the "
                      "last one's time (use --strategy brute or random with --mpi)");
-  const auto size = parse_size(a.size);
-  RenderOptions base;
-  base.method = parse_method(a.method);
-  if (base.method == Method::combined) base.combined = parse_combined(a.method);
   // The space needs the device's compute units for its defaults; the explicit values are checked now.
-  {
-    TuneSpace probe = default_tune_space(a.method, 1);
-    for (const std::string& p : a.params) set_tune_param(probe, p);
+  TuneSpace probe = default_tune_space(a.method, 1);
+  for (const std::string& p : a.params) set_tune_param(probe, p);
+}
+
+// One tuning run: the scene on the device (the render step's base), the space, the cache, and what the
+// candidates measured.
+class TuneRun {
+ public:
+  explicit TuneRun(const TuneArgs& a) : a_(a), strategy_(parse_tune_strategy(a.strategy)) {
+    request_.scene_file = a.scene;
+    request_.size = checked_size(a.size);
+    request_.device = a.device;
+    request_.options.tile_size = 0;  // render's choice for the scene (tile_choice.hpp): the default point's
+    request_.options.method = parse_method(a.method);
+    if (request_.options.method == Method::combined) request_.options.combined = parse_combined(a.method);
+    request_.use_tuned = false;  // the default configuration: the layout `render` takes without --tile (tile_choice.hpp)
+    request_.quiet = a.quiet;
   }
 
-  std::unique_ptr<RankGroup> group;
-  if (a.mpi) group = RankGroup::join();
-  const int rank = group ? group->rank() : 0, ranks = group ? group->size() : 1;
-  const auto step = [&](const std::function<void()>& f) { step_in(group.get(), f); };
-  Scene scene;
-  std::unique_ptr<Device> device;
-  std::unique_ptr<TuneCache> cache;
-  TuneSpace space;
-  TunePoints points;
-  step([&] {
-    scene = load_scene_at(a.scene, size, a.size);
-    // The default configuration is the layout `render` takes without --tile (tile_choice.hpp).
-    base.tile_size = default_tile_size(scene, base, base.band_record_bytes);
-    if (rank == 0) {
-      if (!a.report.empty()) check_report_destination(a.report);
-      if (!a.export_kt.empty()) check_report_destination(a.export_kt);
+  // `group`: the ranks of tune --mpi, or none.
+  int run(RankGroup* group) {
+    group_ = group;
+    step([&] { prepare(); });
+    if (rank() == 0) print_start();
+    step([&] { search(); });
+    if (group_ && !merge_ranks()) return 0;
+    // Rank 0 alone from here (the others wait in the step for its outcome).
+    step([&] { conclude(); });
+    return 0;
+  }
+
+ private:
+  int rank() const { return group_ ? group_->rank() : 0; }
+  int ranks() const { return group_ ? group_->size() : 1; }
+  void step(const std::function<void()>& f) { step_in(group_, f); }
+
+  void prepare() {
+    CommandFiles files;
+    if (rank() == 0) {
+      files.output("--report", a_.report);
+      files.output("--export-kt", a_.export_kt);
     }
-    cache = std::make_unique<TuneCache>(a.cache.empty() ? default_tune_cache() : std::filesystem::path(a.cache));
-    device = for_device(a.device_origin, [&] { return open_device(a.device); });
-    space = default_tune_space(a.method, device->info().compute_units);
-    for (const std::string& p : a.params) set_tune_param(space, p);
-    points = enumerate_points(space, base);
-    if (points.valid.empty()) throw UsageError("--param: the space has no point the table of combinations models");
-  });
-  const DeviceInfo& dev = device->info();
-  if (rank == 0) {
+    const std::filesystem::path cache = a_.cache.empty() ? default_tune_cache() : std::filesystem::path(a_.cache);
+    files.input_output("--cache", cache);
+    base_ = std::make_unique<ResolvedRender>(resolve_with_option_names(request_, files));
+    cache_ = std::make_unique<TuneCache>(cache);
+    space_ = default_tune_space(a_.method, device().compute_units);
+    for (const std::string& p : a_.params) set_tune_param(space_, p);
+    points_ = enumerate_points(space_, base_->options);
+    if (points_.valid.empty()) throw UsageError("--param: the space has no point the table of combinations models");
+  }
+
+  const DeviceInfo& device() const { return base_->devices.front()->info(); }
+  RenderOptions options(std::size_t i) const { return options_at(space_, points_.valid[i], base_->options); }
+
+  void print_start() const {
+    const Scene& scene = base_->scene;
+    const DeviceInfo& dev = device();
     std::printf("tuning %s (%dx%d) on %s (driver %s, %d compute units)%s; cache %s\n", scene.name.c_str(), scene.width,
                 scene.height, dev.name.c_str(), dev.driver.c_str(), dev.compute_units,
-                group ? (" over " + std::to_string(ranks) + " ranks").c_str() : "", cache->path().string().c_str());
+                group_ ? (" over " + std::to_string(ranks()) + " ranks").c_str() : "", cache_->path().string().c_str());
     std::printf("space: %zu points: %zu valid, %zu refused by the table of combinations, %zu vary units or batch "
                 "where nothing reads them; strategy %s, seed %llu\n",
-                space_size(space), points.valid.size(), points.refused, points.not_applicable, a.strategy.c_str(),
-                (unsigned long long)a.seed);
-    if (!points.refusal_example.empty() && !a.quiet) std::cerr << "parashade: note: refused, e.g. " << points.refusal_example << "\n";
-    if (const std::string stale = cache->stale_entries(dev); !stale.empty() && !a.quiet)
+                space_size(space_), points_.valid.size(), points_.refused, points_.not_applicable, a_.strategy.c_str(),
+                (unsigned long long)a_.seed);
+    if (!points_.refusal_example.empty() && !a_.quiet)
+      std::cerr << "parashade: note: refused, e.g. " << points_.refusal_example << "\n";
+    if (const std::string stale = cache_->stale_entries(dev); !stale.empty() && !a_.quiet)
       std::cerr << "parashade: note: " << stale << "\n";
   }
 
-  const auto started = std::chrono::steady_clock::now();
-  const auto elapsed_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
-  const auto out_of_time = [&] { return a.budget_seconds > 0 && elapsed_s() >= a.budget_seconds; };
-  std::map<std::string, std::vector<std::uint8_t>> verified_bytes;  // per shading: the default layout's image
-  std::map<std::string, ReferenceImage> references;                  // per method: the exact reference
-  const auto problem_of = [&](const RenderOptions& o) {
-    const std::optional<TuneProblem> p = tune_problem(scene, o);
+  TuneProblem problem_of(const RenderOptions& o) const {
+    const std::optional<TuneProblem> p = tune_problem(base_->scene, o);
     if (!p) throw std::logic_error("tune: a candidate the cache cannot key");
     return *p;
-  };
-  const auto within_budget = [&](const TuneMeasurement& m) {
-    return (a.max_error <= 0 || m.max_error <= a.max_error) && (a.max_nmse <= 0 || m.nmse <= a.max_nmse);
-  };
-  const auto cached_result = [&](std::size_t i) -> std::optional<Result> {
-    const RenderOptions o = options_at(space, points.valid[i], base);
-    const auto e = cache->find(dev, problem_of(o), tuned_params(o));
+  }
+
+  bool within_budget(const TuneMeasurement& m) const {
+    return (a_.max_error <= 0 || m.max_error <= a_.max_error) && (a_.max_nmse <= 0 || m.nmse <= a_.max_nmse);
+  }
+
+  std::optional<Result> cached_result(std::size_t i) const {
+    const RenderOptions o = options(i);
+    const auto e = cache_->find(device(), problem_of(o), tuned_params(o));
     if (!e || !e->contains("max_error")) return std::nullopt;
     Result r;
     r.point = i;
-    r.params = point_params(space, points.valid[i]);
+    r.params = point_params(space_, points_.valid[i]);
     r.cached = true;
     r.m.times = e->value("times_ms", std::vector<double>{});
     r.m.objective = e->value("objective", 0.0);
@@ -233,68 +239,69 @@ int run_tune(const TuneArgs& a) {
     r.m.nmse = (*e)["nmse"].is_number() ? (*e)["nmse"].get<double>() : std::numeric_limits<double>::infinity();
     r.within_budget = within_budget(r.m);
     return r;
-  };
+  }
+
+  // The bytes of the candidate's shading in the default layout (the layout never changes the image).
+  const std::vector<std::uint8_t>& verified_bytes(const RenderOptions& o, const std::vector<std::uint8_t>& bytes) {
+    const std::string shading = problem_of(o).to_json().dump();
+    auto it = verified_bytes_.find(shading);
+    if (it != verified_bytes_.end()) return it->second;
+    RenderOptions plain = o;
+    plain.tile_size = base_->options.tile_size;
+    plain.work_items = base_->options.work_items;
+    plain.plan.reset();
+    if (plain.tile_size == o.tile_size && plain.work_items == o.work_items && !o.plan)
+      return verified_bytes_[shading] = bytes;
+    const ResolvedRender reference = with_options(*base_, plain);
+    RenderSession session(reference);
+    const Frame& g = session.frame();
+    return verified_bytes_[shading] = std::vector<std::uint8_t>(g.image.rgba.begin(), g.image.rgba.end());
+  }
+
   // Measures point i: warm-up (program build), the timed frames, the image against its shading's
-  // default layout (the layout never changes the image) and against the exact reference.
-  const auto measure = [&](std::size_t i) {
-    const RenderOptions o = options_at(space, points.valid[i], base);
+  // default layout and against the exact reference.
+  Result measure(std::size_t i) {
+    const RenderOptions o = options(i);
     Result r;
     r.point = i;
-    r.params = point_params(space, points.valid[i]);
+    r.params = point_params(space_, points_.valid[i]);
     r.timestamp = utc_now_iso8601();
-    Renderer renderer(*device, o);
+    const ResolvedRender candidate = with_options(*base_, o);
+    RenderSession session(candidate);
     auto t0 = std::chrono::steady_clock::now();
-    renderer.render(scene);
+    session.frame();
     r.compile_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     const Frame* f = nullptr;
-    for (int k = 0; k < a.frames; ++k) {
-      f = &renderer.render(scene);
+    for (int k = 0; k < a_.frames; ++k) {
+      f = &session.frame();
       r.m.times.push_back(f->timings.total_ms);
     }
     r.m.objective = median(r.m.times);
     t0 = std::chrono::steady_clock::now();
-    const TuneProblem problem = problem_of(o);
-    const std::string shading = problem.to_json().dump();
     const std::vector<std::uint8_t> bytes(f->image.rgba.begin(), f->image.rgba.end());
-    if (!verified_bytes.count(shading)) {
-      RenderOptions plain = o;
-      plain.tile_size = base.tile_size;
-      plain.work_items = base.work_items;
-      plain.plan.reset();
-      if (plain.tile_size == o.tile_size && plain.work_items == o.work_items && !o.plan) {
-        verified_bytes[shading] = bytes;
-      } else {
-        Renderer reference(*device, plain);
-        const Frame& g = reference.render(scene);
-        verified_bytes[shading].assign(g.image.rgba.begin(), g.image.rgba.end());
-      }
-    }
-    r.m.verified = verified_bytes[shading] == bytes;
-    const std::string method = problem.method;
-    if (!references.count(method)) {
-      ScreenGeometry g;
-      build_screen_geometry(scene, {o.method, true}, g);
-      references[method] = render_reference(scene, g, o.method);
-    }
-    const ReferenceImage& ref = references[method];
-    const ErrorMetrics e = compare_to_reference(f->image, ref.covered, ref.exact, "exact phong");
-    r.m.max_error = e.max_abs;
-    r.m.nmse = e.nmse;
+    r.m.verified = verified_bytes(o, bytes) == bytes;
+    const std::string method = problem_of(o).method;
+    if (!references_.count(method)) references_[method] = exact_reference(base_->scene, o.method);
+    const ErrorFigures e = error_against(references_[method], o.method, f->image);
+    r.m.max_error = e.method.max_abs;
+    r.m.nmse = e.method.nmse;
     r.within_budget = within_budget(r.m);
     r.verify_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     return r;
-  };
-  // A candidate as the parameters the space varies ("tile=32 work_items=8"), or "default" for none.
-  const auto varied = [&](const nlohmann::json& params) {
+  }
+
+  // A candidate as the parameters the space varies ("tile=32 work_items=8"), or "the one point".
+  std::string varied(const nlohmann::json& params) const {
     std::string s;
-    for (std::size_t i = 0; i < space.names.size(); ++i)
-      if (space.values[i].size() > 1 && params[space.names[i]] != "-") {
-        const nlohmann::json& v = params[space.names[i]];
-        s += (s.empty() ? "" : " ") + space.names[i] + "=" + (v.is_string() ? v.get<std::string>() : v.dump());
+    for (std::size_t i = 0; i < space_.names.size(); ++i)
+      if (space_.values[i].size() > 1 && params[space_.names[i]] != "-") {
+        const nlohmann::json& v = params[space_.names[i]];
+        s += (s.empty() ? "" : " ") + space_.names[i] + "=" + (v.is_string() ? v.get<std::string>() : v.dump());
       }
     return s.empty() ? std::string("the one point") : s;
-  };
-  const auto print_result = [&](const Result& r) {
+  }
+
+  void print_result(const Result& r) const {
     std::string flags;
     if (!r.m.verified) flags += "  IMAGE DIFFERS from its shading's default layout: not eligible";
     if (!r.within_budget) flags += "  over the error budget";
@@ -302,145 +309,188 @@ int run_tune(const TuneArgs& a) {
     std::printf("%-60s %9.3f ms  max %6.2f  NMSE %.3g%s\n", varied(r.params).c_str(), r.m.objective, r.m.max_error,
                 r.m.nmse, flags.c_str());
     std::fflush(stdout);
-  };
-  const auto record = [&](const Result& r, bool write_now) {
-    if (r.cached) return;
-    const RenderOptions o = options_at(space, points.valid[r.point], base);
-    cache->add(dev, problem_of(o), tuned_params(o), r.m);
-    if (write_now) cache->write();
-  };
+  }
 
-  std::vector<Result> results;
-  std::size_t skipped = 0;
-  step([&] {
-    if (strategy == TuneStrategy::anneal) {
-      FrameProgress progress(a.budget_runs, a.quiet);
-      std::vector<int> counts;
-      for (const auto& v : space.values) counts.push_back(int(v.size()));
-      const auto cost = [&](std::size_t i) {
-        std::optional<Result> r = cached_result(i);
-        if (!r) r = measure(i);
-        r->sequence = results.size();
-        record(*r, true);
-        print_result(*r);
-        results.push_back(*r);
-        progress.step(int(results.size()));
-        return eligible(*r) ? r->m.objective : std::numeric_limits<double>::infinity();
-      };
-      anneal(points.valid, counts, cost, std::size_t(a.budget_runs), a.seed, out_of_time);
-      return;
-    }
+  void record(const Result& r, bool write_now) {
+    if (r.cached) return;
+    const RenderOptions o = options(r.point);
+    cache_->add(device(), problem_of(o), tuned_params(o), r.m);
+    if (write_now) cache_->write();
+  }
+
+  void search() {
+    if (strategy_ == TuneStrategy::anneal) return search_anneal();
+    search_list();
+  }
+
+  void search_anneal() {
+    FrameProgress progress(a_.budget_runs, a_.quiet);
+    std::vector<int> counts;
+    for (const auto& v : space_.values) counts.push_back(int(v.size()));
+    const auto cost = [&](std::size_t i) {
+      std::optional<Result> r = cached_result(i);
+      if (!r) r = measure(i);
+      r->sequence = results_.size();
+      record(*r, true);
+      print_result(*r);
+      results_.push_back(*r);
+      progress.step(int(results_.size()));
+      return eligible(*r) ? r->m.objective : std::numeric_limits<double>::infinity();
+    };
+    anneal(points_.valid, counts, cost, std::size_t(a_.budget_runs), a_.seed, [&] { return out_of_time(); });
+  }
+
+  bool out_of_time() const {
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+    return a_.budget_seconds > 0 && s >= a_.budget_seconds;
+  }
+
+  // The candidates to measure: the strategy's order without what the cache holds, up to the budget; the
+  // same list on every rank, candidate k measured by rank k mod N.
+  std::vector<std::size_t> candidates() {
     std::vector<bool> planned;
-    for (const TunePoint& p : points.valid) planned.push_back(point_params(space, p)["partition"] != "none");
-    const TunePoint first = default_point(space, base);
+    for (const TunePoint& p : points_.valid) planned.push_back(point_params(space_, p)["partition"] != "none");
+    const TunePoint first = default_point(space_, base_->options);
     long first_index = -1;
-    for (std::size_t i = 0; i < points.valid.size() && !first.empty(); ++i)
-      if (points.valid[i] == first) first_index = long(i);
-    // The candidates to measure: the strategy's order without what the cache holds, up to the budget;
-    // the same list on every rank, candidate k measured by rank k mod N.
+    for (std::size_t i = 0; i < points_.valid.size() && !first.empty(); ++i)
+      if (points_.valid[i] == first) first_index = long(i);
     std::vector<std::size_t> todo;
-    for (std::size_t i : visit_order(strategy, points.valid.size(), first_index, planned, a.seed)) {
-      if (todo.size() >= std::size_t(a.budget_runs)) break;
-      if (cached_result(i)) ++skipped;
+    for (std::size_t i : visit_order(strategy_, points_.valid.size(), first_index, planned, a_.seed)) {
+      if (todo.size() >= std::size_t(a_.budget_runs)) break;
+      if (cached_result(i)) ++skipped_;
       else todo.push_back(i);
     }
+    return todo;
+  }
+
+  void search_list() {
+    const std::vector<std::size_t> todo = candidates();
     std::size_t mine = 0;
-    for (std::size_t k = 0; k < todo.size(); ++k) mine += int(k % std::size_t(ranks)) == rank;
-    FrameProgress progress(int(mine), a.quiet || rank != 0);
+    for (std::size_t k = 0; k < todo.size(); ++k) mine += int(k % std::size_t(ranks())) == rank();
+    FrameProgress progress(int(mine), a_.quiet || rank() != 0);
     int done = 0;
     for (std::size_t k = 0; k < todo.size(); ++k) {
-      if (int(k % std::size_t(ranks)) != rank) continue;
+      if (int(k % std::size_t(ranks())) != rank()) continue;
       if (out_of_time()) break;
       Result r = measure(todo[k]);
       r.sequence = k;
-      if (!group) {  // with --mpi rank 0 records and prints the merged results
+      if (!group_) {  // with --mpi rank 0 records and prints the merged results
         record(r, true);
         print_result(r);
       }
-      results.push_back(r);
+      results_.push_back(r);
       progress.step(++done);
     }
-  });
+  }
 
-  if (group) {
-    // Every rank's results to rank 0, which merges them in the strategy's order and writes the cache.
+  // Every rank's results to rank 0, which merges them in the strategy's order; false on the other ranks
+  // (done, after waiting in rank 0's last step).
+  bool merge_ranks() {
     nlohmann::json sent = nlohmann::json::array();
-    for (const Result& r : results) {
+    for (const Result& r : results_) {
       nlohmann::json j = result_json(r);
       j["point"] = r.point;
       sent.push_back(j);
     }
-    const std::vector<std::string> got = group->gather(sent.dump());
-    if (rank != 0) {
+    const std::vector<std::string> got = group_->gather(sent.dump());
+    if (rank() != 0) {
       step([] {});  // rank 0's report
-      return 0;
+      return false;
     }
     for (std::size_t q = 1; q < got.size(); ++q)
-      for (const auto& j : nlohmann::json::parse(got[q])) results.push_back(result_from_json(j, j.at("point")));
-    std::sort(results.begin(), results.end(), [](const Result& x, const Result& y) { return x.sequence < y.sequence; });
-    for (const Result& r : results) {
+      for (const auto& j : nlohmann::json::parse(got[q])) results_.push_back(result_from_json(j, j.at("point")));
+    std::sort(results_.begin(), results_.end(), [](const Result& x, const Result& y) { return x.sequence < y.sequence; });
+    for (const Result& r : results_) {
       print_result(r);
-      if (r.point < points.valid.size()) record(r, false);
+      if (r.point < points_.valid.size()) record(r, false);
     }
+    return true;
   }
 
-  // Rank 0 alone from here (the others wait in the step for its outcome).
-  step([&] {
-  // The best: this run's candidates and whatever the cache holds for the space's points.
-  std::vector<Result> known = results;
-  for (std::size_t i = 0; i < points.valid.size(); ++i)
-    if (std::none_of(results.begin(), results.end(), [&](const Result& r) { return r.point == i; }))
-      if (auto r = cached_result(i)) known.push_back(*r);
-  const Result* best = nullptr;
-  for (const Result& r : known)
-    if (eligible(r) && (!best || r.m.objective < best->m.objective)) best = &r;
-  std::size_t over_budget = 0, unverified = 0;
-  for (const Result& r : results) {
-    over_budget += !r.within_budget;
-    unverified += !r.m.verified;
-  }
-  std::printf("measured %zu configuration(s) (%zu over the error budget, %zu with a different image), %zu already in "
-              "the cache\n",
-              std::count_if(results.begin(), results.end(), [](const Result& r) { return !r.cached; }), over_budget,
-              unverified, skipped);
-
-  nlohmann::json confirmation;
-  if (best) {
-    const RenderOptions tuned = options_at(space, points.valid[best->point], base);
-    std::printf("best%s: %s at %.3f ms when it was tried (max error %.2f levels, NMSE %.3g)\n",
-                a.max_error > 0 || a.max_nmse > 0 ? " within the error budget" : "", varied(best->params).c_str(),
-                best->m.objective, best->m.max_error, best->m.nmse);
-    std::printf("render with: %s\n", render_flags(tuned).c_str());
-    // The speed-up, measured now: default and best alternately (the machine's load drifts), medians.
-    Renderer plain(*device, base), fast(*device, tuned);
-    plain.render(scene);
-    fast.render(scene);
+  // The speed-up, measured now: default and best alternately (the machine's load drifts), medians.
+  nlohmann::json confirm(const RenderOptions& tuned) {
+    const ResolvedRender plain_render = with_options(*base_, base_->options), fast_render = with_options(*base_, tuned);
+    RenderSession plain(plain_render), fast(fast_render);
+    plain.frame();
+    fast.frame();
     std::vector<double> t_plain, t_fast;
-    for (int i = 0; i < std::max(5, a.frames); ++i) {
-      t_plain.push_back(plain.render(scene).timings.total_ms);
-      t_fast.push_back(fast.render(scene).timings.total_ms);
+    for (int i = 0; i < std::max(5, a_.frames); ++i) {
+      t_plain.push_back(plain.frame().timings.total_ms);
+      t_fast.push_back(fast.frame().timings.total_ms);
     }
-    confirmation = {{"frames", t_plain.size()},        {"default_ms", median(t_plain)},
-                    {"tuned_ms", median(t_fast)},        {"speedup", median(t_plain) / median(t_fast)},
-                    {"default", timing_json(t_plain, 1)}, {"tuned", timing_json(t_fast, 1)}};
     std::printf("confirmation (%zu alternating frames each): default %.3f ms, tuned %.3f ms: speed-up %.2fx\n",
                 t_plain.size(), median(t_plain), median(t_fast), median(t_plain) / median(t_fast));
-  } else {
-    std::printf("no candidate is eligible (verified%s)\n", a.max_error > 0 || a.max_nmse > 0 ? " and within the error budget" : "");
+    return {{"frames", t_plain.size()},         {"default_ms", median(t_plain)},
+            {"tuned_ms", median(t_fast)},         {"speedup", median(t_plain) / median(t_fast)},
+            {"default", timing_json(t_plain, 1)}, {"tuned", timing_json(t_fast, 1)}};
   }
-  const nlohmann::json report = tune_report(a, scene, dev, space, points, results, best, confirmation);
-    if (group) cache->write();
-    write_tune_report(a.report, report);
-    if (!a.export_kt.empty())
-      write_text_atomically(a.export_kt,
-                            kernel_tuner_cache(space, dev.name, "parashade:" + scene.name, scene.width, scene.height,
-                                               report["candidates"])
-                                    .dump(1) +
-                                "\n");
-  if (!a.report.empty()) std::printf("wrote %s\n", a.report.c_str());
-  if (!a.export_kt.empty()) std::printf("wrote %s (Kernel Tuner cache format)\n", a.export_kt.c_str());
-  });
-  return 0;
+
+  // The best of this run's candidates and whatever the cache holds for the space's points, confirmed; the
+  // report, the cache and the Kernel Tuner export.
+  void conclude() {
+    std::vector<Result> known = results_;
+    for (std::size_t i = 0; i < points_.valid.size(); ++i)
+      if (std::none_of(results_.begin(), results_.end(), [&](const Result& r) { return r.point == i; }))
+        if (auto r = cached_result(i)) known.push_back(*r);
+    const Result* best = nullptr;
+    for (const Result& r : known)
+      if (eligible(r) && (!best || r.m.objective < best->m.objective)) best = &r;
+    std::size_t over_budget = 0, unverified = 0;
+    for (const Result& r : results_) over_budget += !r.within_budget, unverified += !r.m.verified;
+    std::printf("measured %zu configuration(s) (%zu over the error budget, %zu with a different image), %zu already in "
+                "the cache\n",
+                std::count_if(results_.begin(), results_.end(), [](const Result& r) { return !r.cached; }), over_budget,
+                unverified, skipped_);
+    nlohmann::json confirmation;
+    if (best) {
+      const RenderOptions tuned = options(best->point);
+      std::printf("best%s: %s at %.3f ms when it was tried (max error %.2f levels, NMSE %.3g)\n",
+                  a_.max_error > 0 || a_.max_nmse > 0 ? " within the error budget" : "", varied(best->params).c_str(),
+                  best->m.objective, best->m.max_error, best->m.nmse);
+      std::printf("render with: %s\n", render_flags(best->params).c_str());
+      confirmation = confirm(tuned);
+    } else {
+      std::printf("no candidate is eligible (verified%s)\n",
+                  a_.max_error > 0 || a_.max_nmse > 0 ? " and within the error budget" : "");
+    }
+    write_outputs(tune_report(a_, base_->scene, device(), space_, points_, results_, best, confirmation));
+  }
+
+  void write_outputs(const nlohmann::json& report) {
+    if (group_) cache_->write();
+    write_tune_report(a_.report, report);
+    const Scene& scene = base_->scene;
+    if (!a_.export_kt.empty())
+      write_text_atomically(a_.export_kt, kernel_tuner_cache(space_, device().name, "parashade:" + scene.name,
+                                                             scene.width, scene.height, report["candidates"])
+                                                  .dump(1) +
+                                              "\n");
+    if (!a_.report.empty()) std::printf("wrote %s\n", a_.report.c_str());
+    if (!a_.export_kt.empty()) std::printf("wrote %s (Kernel Tuner cache format)\n", a_.export_kt.c_str());
+  }
+
+  const TuneArgs& a_;
+  RankGroup* group_ = nullptr;
+  TuneStrategy strategy_;
+  RenderRequest request_;
+  std::unique_ptr<ResolvedRender> base_;
+  std::unique_ptr<TuneCache> cache_;
+  TuneSpace space_;
+  TunePoints points_;
+  std::map<std::string, std::vector<std::uint8_t>> verified_bytes_;  // per shading: the default layout's image
+  std::map<std::string, ReferenceImage> references_;                  // per method: the exact reference
+  std::vector<Result> results_;
+  std::size_t skipped_ = 0;
+  const std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
+};
+
+int run_tune(const TuneArgs& a) {
+  // The command line first (usage errors), then the scene, then the device.
+  check_tune_args(a, parse_tune_strategy(a.strategy));
+  TuneRun tune(a);
+  std::unique_ptr<RankGroup> group;
+  if (a.mpi) group = RankGroup::join();
+  return tune.run(group.get());
 }
 
 }  // namespace
@@ -456,8 +506,9 @@ Command add_tune_command(CLI::App& app) {
   cmd->add_option("--method", a->method, "Shading method when --param method is not given: flat, gouraud, phong, combined:K|auto")
       ->capture_default_str();
   cmd->add_option("--param", a->params,
-                  "NAME=V1,V2,... (repeatable): the values of one parameter of the space: tile, work_items, partition, "
-                  "units (U, modeled units), batch, method, unit (as --units), normalize, specular");
+                  "NAME=V1,V2,... (repeatable): the values of one parameter of the space, each named as the render "
+                  "option it sets: tile, work_items, partition, cu (U, modeled units), batch, method, units, normalize, "
+                  "specular");
   cmd->add_option("--strategy", a->strategy, "brute, random or anneal (simulated annealing)")->capture_default_str();
   cmd->add_option("--seed", a->seed, "Seed of the strategy's random choices (the same seed, the same sequence)")
       ->capture_default_str();
@@ -480,7 +531,6 @@ Command add_tune_command(CLI::App& app) {
                 "and the cache");
   add_quiet_flag(*cmd, a->quiet);
   return {cmd, [a]() {
-            a->device_origin = device_from_environment(a->device);
             return run_tune(*a);
           }};
 }

@@ -13,6 +13,7 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "common_options.hpp"
+#include "parashade/command_files.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/report.hpp"
 #include "parashade/unit_error.hpp"
@@ -60,7 +61,9 @@ int run(const UnitErrorArgs& args) {
   o.seed = args.seed;
   o.formula_bits = args.formula_bits;
   // checked before the table is printed: a failed run prints nothing
-  if (!args.report.empty()) check_report_destination(args.report);
+  CommandFiles files;
+  files.output("--report", args.report);
+  files.check();
   std::vector<UnitErrorStudy> studies;
   for (const UnitConfig& u : units) studies.push_back(study_unit_error(u, a, o));
   const UnitErrorReport report = unit_error_report(studies, a, o);

@@ -8,6 +8,7 @@
 #include "cli_args.hpp"
 #include "commands.hpp"
 #include "common_options.hpp"
+#include "parashade/command_files.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/report.hpp"
 #include "parashade/test_vectors.hpp"
@@ -32,9 +33,10 @@ int run(const VectorsArgs& args) {
                      unit_specs_help(true) + ")");
   const Arithmetic a = parse_arith(args.arith);
   if (!a.fixed) throw UsageError("--arith '" + args.arith + "': test vectors need fixed-point registers, fixed:I.F");
-  check_report_destination(args.out);  // before the work: a missing folder stops the run
-  if (!args.report.empty()) check_report_destination(args.report);
-  check_distinct_files({{"-o", args.out}, {"--report", args.report}}, {});
+  CommandFiles files;  // before the work: a missing folder stops the run
+  files.output("-o", args.out);
+  files.output("--report", args.report);
+  files.check();
   const std::vector<SpanLoad> spans = test_vector_spans(unit, a, args.spans, args.seed);
   const std::string text = test_vectors_text(unit, a, spans, args.seed);
   write_text_atomically(args.out, text);

@@ -69,11 +69,6 @@ CLI::Validator count_list_validator(int max, bool list) {
       list ? "N[,N...]" : "N", "count");
 }
 
-std::string report_text(nlohmann::json body, const std::string& kind) {
-  stamp_report(body, kind);
-  return body.dump(2) + "\n";
-}
-
 void write_report(const std::string& path, nlohmann::json body, const std::string& kind) {
   write_text_atomically(path, report_text(std::move(body), kind));
 }

@@ -6,6 +6,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "parashade/report_header.hpp"
+
 namespace parashade::cli {
 
 // -q,--quiet: no progress lines or notes on stderr; results and errors still print.
@@ -24,9 +26,6 @@ const CLI::Validator& size_validator();
 
 // A comma-separated list of integers in 1..max (e.g. --cu); `list` false: exactly one.
 CLI::Validator count_list_validator(int max, bool list);
-
-// `body` stamped (report_header.hpp) as parashade.<kind>/1, as the text a report file holds.
-std::string report_text(nlohmann::json body, const std::string& kind);
 
 // Writes the stamped report whole or not at all.
 void write_report(const std::string& path, nlohmann::json body, const std::string& kind);

@@ -28,11 +28,4 @@ std::optional<PlanOptions> plan_options(const PlanArgs& a);
 // Every combination the lists name (plan): U from --cu (default 1), strategies from --partition.
 std::vector<PlanOptions> plan_option_list(const PlanArgs& a);
 
-// The per-unit load and its summary, as text.
-void print_plan(const PlanReport& r, bool per_unit);
-
-// How the units' depth pass was mapped (work-items of one device, or which sub-device ran which units)
-// with each share's pass time, as text.
-void print_unit_mapping(const FrameStats& s, const FrameTimings& t);
-
 }  // namespace parashade::cli

@@ -24,11 +24,10 @@ nlohmann::ordered_json kernel_tuner_cache(const TuneSpace& space, const std::str
   nlohmann::ordered_json tune_params = nlohmann::ordered_json::object();
   for (std::size_t i = 0; i < space.names.size(); ++i) {
     nlohmann::ordered_json values = nlohmann::ordered_json::array();
-    const bool numeric = space.names[i] == "tile" || space.names[i] == "work_items" || space.names[i] == "units" ||
-                         space.names[i] == "batch";
+    const bool numeric = is_number_param(space.names[i]);
     for (const std::string& v : space.values[i])
       values.push_back(numeric ? nlohmann::ordered_json(std::stoi(v)) : nlohmann::ordered_json(v));
-    // "-": a layout parameter nothing reads at that point (units without a plan, batch of a static one).
+    // "-": a layout parameter nothing reads at that point (cu without a plan, batch of a static one).
     for (const auto& c : candidates)
       if (c["params"][space.names[i]] == "-" && std::find(values.begin(), values.end(), "-") == values.end())
         values.push_back("-");

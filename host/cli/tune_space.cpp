@@ -59,7 +59,7 @@ const std::vector<ParamDef>& param_defs() {
       {"partition",
        [](const std::string& t) { return t == "none" ? t : partition_name(parse_partition(t)); },
        partition_values},
-      {"units",
+      {"cu",
        [](const std::string& t) {
          PlanOptions plan;
          plan.units = parse_int(t);
@@ -80,7 +80,7 @@ const std::vector<ParamDef>& param_defs() {
          return m == Method::combined ? combined_name(parse_combined(t)) : std::string(method_name(m));
        },
        method_values},
-      {"unit", [](const std::string& t) { return t == "none" ? t : unit_name(parse_units(t)); },
+      {"units", [](const std::string& t) { return t == "none" ? t : unit_name(parse_units(t)); },
        [] { return "none, " + unit_specs_help(); }},
       {"normalize", [](const std::string& t) { return normalize_name(parse_normalize(t)); },
        [] { return std::string("as render --normalize takes them"); }},
@@ -109,8 +109,12 @@ const std::vector<std::string>& tune_param_names() {
   return names;
 }
 
+bool is_number_param(const std::string& name) {
+  return name == "tile" || name == "work_items" || name == "cu" || name == "batch";
+}
+
 bool is_layout_param(const std::string& name) {
-  return name == "tile" || name == "work_items" || name == "partition" || name == "units" || name == "batch";
+  return name == "tile" || name == "work_items" || name == "partition" || name == "cu" || name == "batch";
 }
 
 TuneSpace default_tune_space(const std::string& method, int compute_units) {
@@ -181,14 +185,14 @@ RenderOptions options_at(const TuneSpace& s, const TunePoint& p, const RenderOpt
   } else {
     PlanOptions plan;
     plan.partition = parse_partition(value("partition"));
-    plan.units = std::stoi(value("units"));
+    plan.units = std::stoi(value("cu"));
     if (plan.partition == Partition::dynamic) plan.batch = std::stoi(value("batch"));
     o.plan = plan;
   }
   o.method = parse_method(value("method"));
   o.combined = o.method == Method::combined ? parse_combined(value("method")) : CombinedConfig{};
-  if (value("unit") == "none") o.units.reset();
-  else o.units = parse_units(value("unit"));
+  if (value("units") == "none") o.units.reset();
+  else o.units = parse_units(value("units"));
   o.normalize = parse_normalize(value("normalize"));
   o.specular = parse_specular(value("specular"));
   return o;
@@ -196,7 +200,7 @@ RenderOptions options_at(const TuneSpace& s, const TunePoint& p, const RenderOpt
 
 TunePoints enumerate_points(const TuneSpace& s, const RenderOptions& base) {
   TunePoints out;
-  const int partition = index_of(s, "partition"), units = index_of(s, "units"), batch = index_of(s, "batch");
+  const int partition = index_of(s, "partition"), units = index_of(s, "cu"), batch = index_of(s, "batch");
   TunePoint p(s.names.size(), 0);
   if (space_size(s) == 0) return out;
   for (;;) {
@@ -211,7 +215,7 @@ TunePoints enumerate_points(const TuneSpace& s, const RenderOptions& base) {
         ++out.refused;
       } else {
         try {
-          check_frame_config(o);
+          check_render_options(o, DeviceMode::one);
         } catch (const Error& e) {
           throw UsageError("--param: the point " + point_params(s, p).dump() + " is not a valid frame: " + e.what());
         }
@@ -231,9 +235,9 @@ nlohmann::json point_params(const TuneSpace& s, const TunePoint& p) {
   for (std::size_t i = 0; i < s.names.size(); ++i) {
     const std::string& n = s.names[i];
     const std::string& v = s.values[i][p[i]];
-    const bool unread = (n == "units" && part == "none") || (n == "batch" && part != "dynamic");
+    const bool unread = (n == "cu" && part == "none") || (n == "batch" && part != "dynamic");
     if (unread) j[n] = "-";
-    else if (n == "tile" || n == "work_items" || n == "units" || n == "batch") j[n] = std::stoi(v);
+    else if (is_number_param(n)) j[n] = std::stoi(v);
     else j[n] = v;
   }
   return j;
@@ -250,7 +254,7 @@ TunePoint default_point(const TuneSpace& s, const RenderOptions& base) {
   };
   const std::string method = base.method == Method::combined ? combined_name(base.combined) : method_name(base.method);
   if (pick("tile", std::to_string(base.tile_size)) && pick("work_items", std::to_string(base.work_items)) &&
-      pick("partition", "none") && pick("method", method) && pick("unit", "none") &&
+      pick("partition", "none") && pick("method", method) && pick("units", "none") &&
       pick("normalize", normalize_name(base.normalize)) && pick("specular", specular_name(base.specular)))
     return p;
   return {};
@@ -260,6 +264,25 @@ std::size_t space_size(const TuneSpace& s) {
   std::size_t n = 1;
   for (const auto& v : s.values) n *= v.size();
   return n;
+}
+
+std::string render_flags(const nlohmann::json& params) {
+  std::string flags;
+  std::vector<std::string> names;  // the shading first, then the layout
+  for (const std::string& n : tune_param_names())
+    if (!is_layout_param(n)) names.push_back(n);
+  for (const std::string& n : tune_param_names())
+    if (is_layout_param(n)) names.push_back(n);
+  for (const std::string& name : names) {
+    const nlohmann::json& v = params.at(name);
+    const std::string text = v.is_string() ? v.get<std::string>() : v.dump();
+    // "-": nothing reads it at this point; "none": the option's absence (no plan, no unit).
+    if (text == "-" || text == "none") continue;
+    std::string option = name;
+    std::replace(option.begin(), option.end(), '_', '-');
+    flags += (flags.empty() ? "--" : " --") + option + " " + text;
+  }
+  return flags;
 }
 
 }  // namespace parashade::cli

@@ -22,10 +22,14 @@ struct TuneSpace {
 // One point: an index into each parameter's values.
 using TunePoint = std::vector<int>;
 
-// The parameters `--param` takes, in the order of the space (and of Kernel Tuner's cache keys).
+// The parameters `--param` takes, in the order of the space (and of Kernel Tuner's cache keys): each is
+// named as the render option it sets (tile --tile, work_items --work-items, partition, cu, batch, method,
+// units, normalize, specular).
 const std::vector<std::string>& tune_param_names();
 // The layout parameters among them (the cache's params; the image must not change along them).
 bool is_layout_param(const std::string& name);
+// The parameters whose values are numbers (the others are names).
+bool is_number_param(const std::string& name);
 
 // The default space: tile over tile_sizes(); work_items 0, CU, 4 CU, 64 CU; partition none and every
 // strategy; units CU, 2 CU, 4 CU, 16; batch 16, 64, 256; method `method`; unit none; exact normalize and
@@ -56,5 +60,9 @@ nlohmann::json point_params(const TuneSpace& space, const TunePoint& point);
 TunePoint default_point(const TuneSpace& space, const RenderOptions& base);
 // Product of the value counts.
 std::size_t space_size(const TuneSpace& space);
+
+// A point's parameters (point_params) as the render options that give it: each parameter is the render
+// option of its name (work_items: --work-items), so this is the same text for every parameter.
+std::string render_flags(const nlohmann::json& params);
 
 }  // namespace parashade::cli

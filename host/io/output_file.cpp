@@ -57,6 +57,12 @@ std::string errno_text(int e) { return std::strerror(e); }
 }  // namespace
 
 StagedFile::StagedFile(fs::path destination) : destination_(std::move(destination)) {
+  // A link is written through: the file replaces the link's target, not the link.
+  std::error_code ec;
+  if (fs::is_symlink(destination_, ec)) {
+    fs::path target = fs::weakly_canonical(fs::absolute(destination_, ec), ec);
+    if (!ec) destination_ = std::move(target);
+  }
   static std::atomic<unsigned> counter{0};
   const std::string name = "." + destination_.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
                            std::to_string(counter++) + destination_.extension().string();

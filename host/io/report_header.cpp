@@ -76,4 +76,16 @@ nlohmann::json timing_json(const std::vector<double>& samples_ms, int warmup) {
           {"stddev_ms", number_or_null(stddev)}};
 }
 
+std::string frame_ms_note(int frames, int warmup, const std::string& what, const std::string& how) {
+  return "median of " + std::to_string(frames) + " " + what + " after " + std::to_string(warmup) + " warm-up frame(s)" +
+         how;
+}
+
+const char* const kWholeFrame = "whole frame: geometry, setup, binning, kernel, read-back";
+
+std::string report_text(nlohmann::json body, const std::string& kind) {
+  stamp_report(body, kind);
+  return body.dump(2) + "\n";
+}
+
 }  // namespace parashade

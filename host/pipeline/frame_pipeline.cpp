@@ -55,17 +55,25 @@ bool frame_streams(const FrameConfig& config, std::size_t screen_triangles, std:
   return frame_can_stream(config) && records_exceed(config.method, screen_triangles, record_bytes);
 }
 
-const PreparedFrame& FramePipeline::prepare_frame(const Scene& scene, const FrameConfig& config) {
-  return prepare_frame(scene, config, host_);
+FramePipeline::FramePipeline(const FrameConfig& config) : config_(config) { check_frame_config(config_); }
+
+void FramePipeline::set_band(int first, int rows) {
+  if (first < 0 || rows < -1)
+    throw UsageError("a band is tile rows [first, first + rows) with first >= 0 and rows >= 0, or rows -1 for the "
+                     "whole frame (got first " + std::to_string(first) + ", rows " + std::to_string(rows) + ")");
+  config_.band_first = first;
+  config_.band_rows = rows;
 }
 
-const PreparedFrame& FramePipeline::prepare_frame(const Scene& scene, const FrameConfig& config, FrameStorage& storage) {
-  begin_frame(scene, config, SIZE_MAX);
-  return prepare_band(scene, config, storage, 0);
+const PreparedFrame& FramePipeline::prepare_frame(const Scene& scene) { return prepare_frame(scene, host_); }
+
+const PreparedFrame& FramePipeline::prepare_frame(const Scene& scene, FrameStorage& storage) {
+  begin_frame(scene, SIZE_MAX);
+  return prepare_band(scene, storage, 0);
 }
 
-int FramePipeline::begin_frame(const Scene& scene, const FrameConfig& config, std::size_t record_bytes) {
-  check_frame_config(config);
+int FramePipeline::begin_frame(const Scene& scene, std::size_t record_bytes) {
+  const FrameConfig& config = config_;
   check_resolution(scene.width, scene.height, "scene '" + scene.name + "'");
   auto t0 = Clock::now();
   build_screen_geometry(scene, {config.method, false, config.chooses_per_triangle()}, geometry_);
@@ -78,7 +86,7 @@ int FramePipeline::begin_frame(const Scene& scene, const FrameConfig& config, st
   banding_empty_ = 0;
   if (!frame_streams(config, geometry_.triangles.size(), budget.stream_above)) return 1;
   t0 = Clock::now();
-  plan_bands(config, std::max<std::size_t>(1, budget.band / triangle_record_bytes(config.method)));
+  plan_bands(std::max<std::size_t>(1, budget.band / triangle_record_bytes(config.method)));
   banding_ms_ = ms_since(t0);
   return int(band_rows_.size()) - 1;
 }
@@ -89,7 +97,8 @@ constexpr std::uint32_t kNoRows = 0xffffffffu;
 
 // Bands of consecutive tile rows, each overlapped by at most max_records triangles unless one row alone
 // is; then each band's triangles in primitive order. Two passes over the triangles, on all threads.
-void FramePipeline::plan_bands(const FrameConfig& config, std::size_t max_records) {
+void FramePipeline::plan_bands(std::size_t max_records) {
+  const FrameConfig& config = config_;
   const ScreenGeometry& g = geometry_;
   const std::size_t n = g.triangles.size();
   const int tile = config.tile_size, rows = (g.height + tile - 1) / tile;
@@ -192,8 +201,8 @@ void FramePipeline::plan_bands(const FrameConfig& config, std::size_t max_record
   });
 }
 
-const PreparedFrame& FramePipeline::prepare_band(const Scene& scene, const FrameConfig& config, FrameStorage& storage,
-                                                 int band) {
+const PreparedFrame& FramePipeline::prepare_band(const Scene& scene, FrameStorage& storage, int band) {
+  const FrameConfig& config = config_;
   const bool streamed = !band_rows_.empty();
   frame_ = PreparedFrame{};
   FrameTimings& t = frame_.timings;
@@ -213,12 +222,12 @@ const PreparedFrame& FramePipeline::prepare_band(const Scene& scene, const Frame
   frame_.records = config.splits_triangles() ? triangles << (2 * config.unit().depth) : triangles;  // sub-triangles when split
   frame_.arrays = storage.records(streamed ? band_records_ : frame_.records, attribute_floats(config.method),
                                   config.arith.fixed, config.splits_triangles());
-  setup(scene, config, frame_.arrays, order);
+  setup(scene, frame_.arrays, order);
   if (streamed && band == 0) s.triangles_without_pixels += banding_empty_;
   t.setup_ms = ms_since(t0);
 
   t0 = Clock::now();
-  bin(scene, config, storage);
+  bin(scene, storage);
   t.binning_ms += ms_since(t0);
   frame_.first_tile = streamed ? band_rows_[std::size_t(band)] * frame_.tiles_x : 0;
   frame_.end_tile = streamed ? band_rows_[std::size_t(band) + 1] * frame_.tiles_x : frame_.tiles();
@@ -226,8 +235,8 @@ const PreparedFrame& FramePipeline::prepare_band(const Scene& scene, const Frame
   return frame_;
 }
 
-void FramePipeline::setup(const Scene& scene, const FrameConfig& config, const FrameRecords& out,
-                          const std::uint32_t* order) {
+void FramePipeline::setup(const Scene& scene, const FrameRecords& out, const std::uint32_t* order) {
+  const FrameConfig& config = config_;
   FrameTimings& t = frame_.timings;
   FrameStats& s = frame_.stats;
   const Method method = config.method;
@@ -313,7 +322,8 @@ void FramePipeline::setup(const Scene& scene, const FrameConfig& config, const F
   }
 }
 
-void FramePipeline::bin(const Scene& scene, const FrameConfig& config, FrameStorage& storage) {
+void FramePipeline::bin(const Scene& scene, FrameStorage& storage) {
+  const FrameConfig& config = config_;
   const std::size_t n = frame_.records;
   if (counted_)  // setup counted the records
     binner_.finish();

@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <functional>
 #include <map>
+#include <optional>
+#include <tuple>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -345,7 +347,7 @@ Object read_object(const JsonValue& v, std::size_t index, std::map<std::string, 
 }
 
 Scene read_scene(const nlohmann::json& doc, const std::filesystem::path& path,
-                 std::vector<std::filesystem::path>& files) {
+                 std::vector<std::filesystem::path>& files, const std::optional<std::pair<int, int>>& size) {
   const std::string file = path.string();
   const JsonValue root(doc, "", file);
   JsonObject top = root.object();
@@ -367,6 +369,7 @@ Scene read_scene(const nlohmann::json& doc, const std::filesystem::path& path,
     scene.width = int(w);
     scene.height = int(h);
   }
+  if (size) std::tie(scene.width, scene.height) = *size;  // budgeted below at the size it will be rendered
   if (const auto x = top.optional("background")) scene.background = x->color();
   if (const auto x = top.optional("ambient")) scene.ambient_light = x->color();
   if (const auto x = top.optional("camera")) scene.camera = read_camera(*x);
@@ -395,7 +398,8 @@ Scene read_scene(const nlohmann::json& doc, const std::filesystem::path& path,
     else
       budget.push_back({"'" + o.name + "' (mesh)", o.mesh->triangles.size(), o.mesh->positions.size()});
   }
-  check_host_memory(file, budget, scene.width, scene.height);
+  const std::string at = size ? file + " at " + std::to_string(scene.width) + "x" + std::to_string(scene.height) : file;
+  check_host_memory(at, budget, scene.width, scene.height);
   for (const auto& [i, spec] : shapes) scene.objects[i].mesh = cache.get(spec.key, spec.build);
   scene.warnings = cache.warnings;
   if (const auto x = top.optional("cull_backfaces")) scene.cull_backfaces = x->boolean();
@@ -418,6 +422,11 @@ Scene load_scene(const std::filesystem::path& path) {
 }
 
 Scene load_scene(const std::filesystem::path& path, std::vector<std::filesystem::path>& files) {
+  return load_scene(path, files, std::nullopt);
+}
+
+Scene load_scene(const std::filesystem::path& path, std::vector<std::filesystem::path>& files,
+                 const std::optional<std::pair<int, int>>& size) {
   files.push_back(path);
   const std::string ext = lower_extension(path);
   std::error_code ec;
@@ -426,8 +435,18 @@ Scene load_scene(const std::filesystem::path& path, std::vector<std::filesystem:
     throw InputError(path.string() + ": " + (ec && ec != std::errc::no_such_file_or_directory ? ec.message() : "no such file"));
   // A directory opens as an empty stream, which would read as "invalid JSON".
   if (std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": is a directory, not a scene file");
-  if (ext == ".json") return read_scene(detail::parse_json_file(path), path, files);
-  if (ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl") return scene_for_mesh(path);
+  if (ext == ".json") return read_scene(detail::parse_json_file(path), path, files, size);
+  if (ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl") {
+    Scene scene = scene_for_mesh(path);
+    if (size) {  // the mesh at the size it will be rendered
+      std::tie(scene.width, scene.height) = *size;
+      check_host_memory(path.string() + " at " + std::to_string(scene.width) + "x" + std::to_string(scene.height),
+                        {{"'" + scene.objects.front().name + "' (mesh)", scene.objects.front().mesh->triangles.size(),
+                          scene.objects.front().mesh->positions.size()}},
+                        scene.width, scene.height);
+    }
+    return scene;
+  }
   throw InputError(path.string() + ": unknown scene format '" + ext + "' (expected .json, or a mesh: .obj .off .ply .stl)");
 }
 

@@ -89,8 +89,8 @@ RegisterEvents count_register_events(const Scene& scene, const FrameConfig& conf
   if (!config.arith.fixed) return {};
   FrameConfig host = config;
   host.plan.reset();
-  FramePipeline pipeline;
-  return count_register_events(pipeline.prepare_frame(scene, host), host);
+  FramePipeline pipeline(host);
+  return count_register_events(pipeline.prepare_frame(scene), host);
 }
 
 }  // namespace parashade

@@ -58,7 +58,8 @@ class Device {
   std::map<std::pair<std::vector<std::string>, std::string>, cl::Program> programs_;
 };
 
-// Opens the device chosen by `selector`: empty = the first device; a number = index in
+// Opens the device chosen by `selector`: empty = the PARASHADE_DEVICE environment variable's selector when
+// it is set (its errors name it), else the first device; a number = index in
 // list_devices(); otherwise a case-insensitive substring of "platform / device name" (PoCL names its
 // devices "pthread-..." and "basic-..."). Throws DeviceError listing the devices when nothing matches.
 std::unique_ptr<Device> open_device(const std::string& selector);

@@ -92,10 +92,18 @@ RecordBudget record_budget(std::size_t record_bytes, int width, int height);
 
 class FramePipeline {
  public:
-  // Prepares `scene` as `config` asks (checked: check_frame_config), into the pipeline's own host
-  // arrays or into `storage`. A plan needs its units resolved (PlanOptions::units >= 1).
-  const PreparedFrame& prepare_frame(const Scene& scene, const FrameConfig& config);
-  const PreparedFrame& prepare_frame(const Scene& scene, const FrameConfig& config, FrameStorage& storage);
+  // A pipeline for frames as `config` asks, checked here once against the table of combinations
+  // (check_frame_config; a ConfigError names what is refused) and kept: every frame reads it unchanged.
+  explicit FramePipeline(const FrameConfig& config);
+  const FrameConfig& config() const { return config_; }
+  // Shade only tile rows [first, first + rows) from the next frame on (rows -1: the whole frame); a split
+  // frame's device moving its band. Throws UsageError for a band that is not one.
+  void set_band(int first, int rows);
+
+  // Prepares `scene` into the pipeline's own host arrays or into `storage`. A plan needs its units
+  // resolved (PlanOptions::units >= 1).
+  const PreparedFrame& prepare_frame(const Scene& scene);
+  const PreparedFrame& prepare_frame(const Scene& scene, FrameStorage& storage);
   // The screen geometry of the last prepared frame.
   const ScreenGeometry& geometry() const { return geometry_; }
 
@@ -109,8 +117,8 @@ class FramePipeline {
   // from band to band); its tiles are PreparedFrame::first_tile .. end_tile. Triangles whose box holds
   // no pixel centre get no record when the frame streams. The geometry stage's time and stats come
   // with band 0; the other stats are the band's own.
-  int begin_frame(const Scene& scene, const FrameConfig& config, std::size_t record_bytes);
-  const PreparedFrame& prepare_band(const Scene& scene, const FrameConfig& config, FrameStorage& storage, int band);
+  int begin_frame(const Scene& scene, std::size_t record_bytes);
+  const PreparedFrame& prepare_band(const Scene& scene, FrameStorage& storage, int band);
 
  private:
   class HostStorage : public FrameStorage {
@@ -125,10 +133,11 @@ class FramePipeline {
     std::vector<SierpinskiLeaf> leaves_;
     std::vector<std::uint32_t> list_;
   };
-  void setup(const Scene& scene, const FrameConfig& config, const FrameRecords& out, const std::uint32_t* order);
-  void plan_bands(const FrameConfig& config, std::size_t max_records);
-  void bin(const Scene& scene, const FrameConfig& config, FrameStorage& storage);
+  void setup(const Scene& scene, const FrameRecords& out, const std::uint32_t* order);
+  void plan_bands(std::size_t max_records);
+  void bin(const Scene& scene, FrameStorage& storage);
 
+  FrameConfig config_;
   HostStorage host_;
   PreparedFrame frame_;
   ScreenGeometry geometry_;

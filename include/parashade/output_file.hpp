@@ -2,7 +2,8 @@
 // Output files that appear whole or not at all: written under a hidden temporary name beside the
 // destination, checked write by write, and renamed into place only when every write and the close
 // succeeded. A failure removes the temporary file and leaves an existing destination untouched; so does
-// SIGINT or SIGTERM (install_signal_cleanup). A replaced file keeps its permission bits.
+// SIGINT or SIGTERM (install_signal_cleanup). A replaced file keeps its permission bits; a destination
+// that is a symbolic link is written through (its target is replaced, the link stays).
 #include <cstddef>
 #include <filesystem>
 #include <string>

@@ -22,6 +22,10 @@
 #include "parashade/device.hpp"
 #include "parashade/renderer.hpp"
 #include "parashade/split_renderer.hpp"
+#include "parashade/command_files.hpp"
+#include "parashade/render_step.hpp"
+#include "parashade/render_report.hpp"
+#include "parashade/render_outputs.hpp"
 #include "parashade/image.hpp"
 
 // The exact double-precision reference and error metrics.

@@ -2,6 +2,7 @@
 // One frame on an OpenCL device: the host stages ("software", frame_pipeline.hpp) write into the device's
 // mapped buffers, then the shading kernel (the modeled hardware units) runs, then read-back.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "parashade/frame_config.hpp"
 #include "parashade/frame_pipeline.hpp"
 #include "parashade/frame_stats.hpp"
+#include "parashade/host_clock.hpp"
 #include "parashade/image.hpp"
 #include "parashade/scene.hpp"
 #include "parashade/kernels/constants.h"
@@ -105,6 +107,21 @@ class Renderer : private FrameStorage {
   // The same for band `band` of a frame begun with pipeline_.begin_frame.
   const PreparedFrame& prepare_band(const Scene& scene, int band, double* upload_ms);
   void release_frame();  // unmaps the last frame's image
+  // render(), step by step (renderer.cpp).
+  void upload_tables(const Scene& scene);
+  void prepare_outputs(const Scene& scene, std::size_t counter_bytes);
+  cl::Kernel& frame_kernel(const Scene& scene);
+  bool counts_per_tile() const;
+  void add_tile_counters(const cl_ulong* counters, FrameStats& stats) const;
+  double launch_bands(const Scene& scene, int bands, const PreparedFrame* band, const TileKernelArgs& args,
+                      cl::Event& done, std::vector<cl::Event>& band_done, Clock::time_point& last);
+  struct MappedFrame {
+    void* rgba = nullptr;
+    const float* planar = nullptr;
+    cl::Event mapped, float_mapped;
+  };
+  MappedFrame map_frame(std::size_t pixels, std::size_t counter_bytes);
+  void copy_out(MappedFrame& m, std::size_t pixels, const cl::Event& done);
   // The arguments every pass of render_tiles shares (the frame's buffers), with these tile lists.
   TileKernelArgs tile_args(const cl::Buffer& tile_start, const cl::Buffer& tile_list, cl_float4 viewer,
                            cl_float4 background, const Scene& scene, const PreparedFrame& f) const;
@@ -121,10 +138,12 @@ class Renderer : private FrameStorage {
   cl::Buffer& ensure(cl::Buffer& buffer, std::size_t& capacity, std::size_t bytes, cl_mem_flags flags);
 
   Device& device_;
-  RenderOptions options_;
-  FrameConfig config_;  // options_ with the plan's units resolved to the device's compute units
+  RenderOptions options_;  // as given, with the plan's units resolved to the device's compute units
   std::vector<Device*> unit_devices_;
   FramePipeline pipeline_;
+  std::unique_ptr<KernelVariant> variant_;  // built once; set_scene adds the scene's lights and viewer
+  cl::Kernel kernel_;      // the frame kernel of variant_, rebuilt when the scene's part changes
+  std::vector<cl_float4> light_values_, material_values_;  // upload_tables' sources, alive while written
   Frame frame_;
   // The host stages' view of the mapped buffers (FrameStorage), unmapped after prepare.
   FrameRecords mapped_;

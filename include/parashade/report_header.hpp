@@ -17,6 +17,8 @@ const std::vector<std::string>& report_command_line();
 // "created_utc" (ISO 8601), "command_line" (array), "host": {"load_1min"} (null where /proc/loadavg is
 // unreadable). Keys the body already has are not overwritten (a body may not take a header key).
 nlohmann::json& stamp_report(nlohmann::json& report, const std::string& kind, int version = 1);
+// `body` stamped as parashade.<kind>/1, as the text a report file holds.
+std::string report_text(nlohmann::json body, const std::string& kind);
 
 // Now, UTC, as 2026-12-02T22:10:00Z (the header's created_utc).
 std::string utc_now_iso8601();
@@ -24,6 +26,12 @@ std::string utc_now_iso8601();
 // Timed frames: {"frames", "warmup", "samples_ms", "min_ms", "median_ms", "mean_ms", "stddev_ms"}
 // (standard deviation of the samples, n - 1 in the denominator; 0 for one sample).
 nlohmann::json timing_json(const std::vector<double>& samples_ms, int warmup);
+
+// Every report's frame_ms_note, in one wording: "median of <frames> <what> after <warmup> warm-up
+// frame(s)<how>" (what: "frames", "split frames", "frames per configuration"; how: what the clock spans).
+std::string frame_ms_note(int frames, int warmup, const std::string& what, const std::string& how);
+// How a whole frame of one device is timed (the stages frame_ms adds up).
+extern const char* const kWholeFrame;
 
 // The one-minute load average from /proc/loadavg; negative when unreadable.
 double host_load_1min();

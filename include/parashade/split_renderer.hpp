@@ -28,14 +28,15 @@ class SplitRenderer {
   };
   // keep_going: a device that fails is reported on `warn` and dropped, the frame redone on the others;
   // otherwise its DeviceError (naming it) ends the run.
-  SplitRenderer(std::vector<std::unique_ptr<Device>> devices, RenderOptions options, bool keep_going);
+  // The devices stay the caller's and must outlive the renderer.
+  SplitRenderer(std::vector<Device*> devices, RenderOptions options, bool keep_going);
   const Frame& render(const Scene& scene, std::string* warning = nullptr);
   const std::vector<Share>& shares() const { return shares_; }
 
  private:
-  std::vector<std::unique_ptr<Device>> devices_;
+  std::vector<Device*> devices_;
   // One renderer per device, kept across frames (its band moved by set_band): a new one each frame would
-  // allocate and map its buffers again. Declared after devices_, so destroyed before them.
+  // allocate and map its buffers again.
   std::vector<std::unique_ptr<Renderer>> renderers_;
   RenderOptions options_;
   bool keep_going_;

@@ -21,8 +21,8 @@ using namespace testing_support;
 std::vector<char> exact_coverage(const Scene& scene, Method method) {
   FrameConfig config;
   config.method = method;
-  FramePipeline pipeline;
-  const PreparedFrame& f = pipeline.prepare_frame(scene, config);
+  FramePipeline pipeline(config);
+  const PreparedFrame& f = pipeline.prepare_frame(scene);
   std::vector<char> covered(std::size_t(scene.width) * scene.height, 0);
   for (std::size_t i = 0; i < f.records; ++i) {
     const TriangleGeometry& r = f.arrays.triangles[i];

@@ -104,7 +104,15 @@ TEST_F(CliHostileInput, MemoryLimitComesFromTheEnvironment) {
     fs::remove(image());
     fs::remove(report());
     EXPECT_TRUE(fails_with(run_parashade(render_args(scene, {"--size", "4096x4096"})), kBadInput,
-                           {"--size 4096x4096", "limit"}));
+                           {"ball.json at 4096x4096", "limit"}));
+    // The budget is judged at the rendered size: a 4096x4096 scene drawn at 64x48 fits (it used to be
+    // refused for its own resolution before --size applied).
+    nlohmann::json large = nlohmann::json::parse(sphere_scene());
+    large["resolution"] = {4096, 4096};
+    EXPECT_TRUE(fails_with(run_parashade(render_args(input("large.json", large.dump()))), kBadInput, {"limit"}));
+    EXPECT_TRUE(succeeds(run_parashade(render_args(in_dir() / "large.json", {"--size", "64x48"}))));
+    fs::remove(image());
+    fs::remove(report());
   }
   {
     const ScopedEnv limit("PARASHADE_MEMORY_LIMIT", "lots");

@@ -1,9 +1,11 @@
 // parashade tune (docs/tuning.md): the search space of --param and its errors, the strategies' sequences
 // and budgets, the error-budget objective, cache invalidation by build and device, and the Kernel Tuner
 // export. A small procedural scene at a small size; one timed frame per candidate.
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -57,7 +59,7 @@ class CliTune : public CliTest {
 
 TEST_F(CliTune, UnknownParameterNamesTheValidOnes) {
   const RunResult r = tune({"--param", "colour=red"});
-  EXPECT_TRUE(fails_with(r, kUsage, {"colour", "tile", "work_items", "partition", "units", "batch", "method", "unit",
+  EXPECT_TRUE(fails_with(r, kUsage, {"colour", "tile", "work_items", "partition", "cu", "batch", "method", "units",
                                      "normalize", "specular"}));
   EXPECT_TRUE(nothing_written());
 }
@@ -69,11 +71,11 @@ TEST_F(CliTune, BadValuesNameTheParameterAndTheValidValues) {
       {"tile=17", {"--param tile", "17", "16, 32 or 64"}},
       {"tile=big", {"--param tile", "big"}},
       {"partition=lpt,zigzag", {"--param partition", "zigzag", "none", "round-robin", "dynamic"}},
-      {"units=99999", {"--param units", "99999", "4096"}},
+      {"cu=99999", {"--param cu", "99999", "4096"}},
       {"batch=0", {"--param batch", "0"}},
       {"method=gouraud,toon", {"--param method", "toon", "flat", "phong", "combined:auto"}},
       {"method=combined:99", {"--param method", "combined:99"}},
-      {"unit=abacus", {"--param unit", "abacus", "classic", "sierpinski", "interleave"}},
+      {"units=abacus", {"--param units", "abacus", "classic", "sierpinski", "interleave"}},
       {"normalize=nearest", {"--param normalize", "nearest", "slerp"}},
       {"specular=mirror", {"--param specular", "mirror", "quadratic"}},
       {"tile=16,32,16", {"--param tile", "twice"}},
@@ -94,26 +96,26 @@ TEST_F(CliTune, BadOptionsAreUsageErrors) {
   EXPECT_TRUE(fails_with(tune({"--objective", "slowest"}), kUsage, {"--objective", "slowest", "fastest"}));
   EXPECT_TRUE(fails_with(tune({"--max-error", "-1"}), kUsage, {"--max-error"}));
   EXPECT_TRUE(fails_with(tune({"--mpi", "--strategy", "anneal"}), kUsage, {"--mpi", "anneal"}));
-  EXPECT_TRUE(fails_with(tune({"--param", "method=flat", "--param", "unit=counter"}), kUsage, {"no point"}));
+  EXPECT_TRUE(fails_with(tune({"--param", "method=flat", "--param", "units=counter"}), kUsage, {"no point"}));
   EXPECT_TRUE(nothing_written());
 }
 
 TEST_F(CliTune, RefusedCombinationsAreSkippedAndCounted) {
   // flat through a shading unit is refused by the table of combinations; flat without one is not.
   const RunResult r = tune({"--param", "tile=16", "--param", "work_items=0", "--param", "partition=none",
-                            "--param", "method=flat,gouraud", "--param", "unit=none,counter", "--budget-runs", "10"});
+                            "--param", "method=flat,gouraud", "--param", "units=none,counter", "--budget-runs", "10"});
   ASSERT_TRUE(succeeds(r));
   EXPECT_NE(r.out.find("3 valid, 1 refused"), std::string::npos) << r;
   const nlohmann::json rep = read_report();
   EXPECT_EQ(field(rep, "/points/refused"), 1);
   EXPECT_EQ(field(rep, "/points/valid"), 3);
   EXPECT_EQ(field(rep, "/candidates").size(), 3u);
-  for (const auto& p : visited()) EXPECT_FALSE(p["method"] == "flat" && p["unit"] == "counter") << p;
+  for (const auto& p : visited()) EXPECT_FALSE(p["method"] == "flat" && p["units"] == "counter") << p;
 }
 
 TEST_F(CliTune, UnitsAndBatchAreOnlyVariedWhereAPlanReadsThem) {
   const RunResult r = tune({"--param", "tile=16", "--param", "work_items=0", "--param", "partition=none,lpt,dynamic",
-                            "--param", "units=2,4", "--param", "batch=16,64", "--budget-runs", "20"});
+                            "--param", "cu=2,4", "--param", "batch=16,64", "--budget-runs", "20"});
   ASSERT_TRUE(succeeds(r));
   // none: 1 point; lpt: 2 (U); dynamic: 2 x 2.
   EXPECT_EQ(field(read_report(), "/points/valid"), 7);
@@ -121,15 +123,40 @@ TEST_F(CliTune, UnitsAndBatchAreOnlyVariedWhereAPlanReadsThem) {
   std::set<std::string> seen;
   for (const auto& p : visited()) seen.insert(p.dump());
   EXPECT_EQ(seen.size(), 7u);
-  EXPECT_EQ(seen.count(nlohmann::json({{"tile", 16}, {"work_items", 0}, {"partition", "none"}, {"units", "-"},
-                                       {"batch", "-"}, {"method", "gouraud"}, {"unit", "none"}, {"normalize", "exact"},
+  EXPECT_EQ(seen.count(nlohmann::json({{"tile", 16}, {"work_items", 0}, {"partition", "none"}, {"cu", "-"},
+                                       {"batch", "-"}, {"method", "gouraud"}, {"units", "none"}, {"normalize", "exact"},
                                        {"specular", "exact"}}).dump()), 1u);
+}
+
+// The best's "render with:" line is the render options of its parameters (each parameter is named as the
+// option it sets): rendering with them gives the best's layout and shading.
+TEST_F(CliTune, RenderWithGivesTheBestsParameters) {
+  const RunResult r = tune({"--param", "tile=32", "--param", "work_items=8", "--param", "partition=lpt",
+                            "--param", "cu=3", "--param", "method=phong", "--param", "units=counter"});
+  ASSERT_TRUE(succeeds(r));
+  const nlohmann::json best = field(read_report(), "/best/params");
+  const std::size_t at = r.out.find("render with: ");
+  ASSERT_NE(at, std::string::npos) << r;
+  std::istringstream line(r.out.substr(at + 13, r.out.find('\n', at) - at - 13));
+  std::vector<std::string> flags{std::istream_iterator<std::string>(line), std::istream_iterator<std::string>()};
+  flags.push_back("--no-tuned");
+  ASSERT_TRUE(succeeds(render(scene_, flags))) << r.out;
+  const nlohmann::json rep = read_report();
+  EXPECT_EQ(rep["tile_size"], best["tile"]);
+  // The report's work-items are the kernel's: at most one per tile (this frame has 4 tiles of 32).
+  const auto wi = std::find(flags.begin(), flags.end(), "--work-items");
+  ASSERT_NE(wi, flags.end());
+  EXPECT_EQ(std::stoi(*(wi + 1)), best["work_items"].get<int>());
+  EXPECT_EQ(rep["method"], best["method"]);
+  EXPECT_EQ(rep["units"], best["units"]);
+  EXPECT_EQ(field(rep, "/plan/units"), best["cu"]);
+  EXPECT_EQ(field(rep, "/plan/partition"), best["partition"]);
 }
 
 // --- strategies ------------------------------------------------------------------------------------------
 
 const std::vector<std::string> kLayout = {"--param", "tile=16,32,64", "--param", "work_items=0,8",
-                                          "--param", "partition=none,lpt", "--param", "units=2,4"};
+                                          "--param", "partition=none,lpt", "--param", "cu=2,4"};
 
 TEST_F(CliTune, RandomVisitsTheSameSequenceForTheSameSeed) {
   std::vector<std::string> args = kLayout;

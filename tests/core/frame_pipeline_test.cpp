@@ -55,8 +55,8 @@ TEST(FramePipeline, PreparesRecordsAndBinsWithoutADevice) {
   const Scene scene = teapot(320, 180);
   FrameConfig config;
   config.tile_size = 32;
-  FramePipeline pipeline;
-  const PreparedFrame& f = pipeline.prepare_frame(scene, config);
+  FramePipeline pipeline(config);
+  const PreparedFrame& f = pipeline.prepare_frame(scene);
   EXPECT_EQ(f.records, f.geometry->triangles.size());
   EXPECT_GT(f.records, 1000u);
   EXPECT_EQ(f.tiles_x, 10);
@@ -69,11 +69,12 @@ TEST(FramePipeline, PreparesRecordsAndBinsWithoutADevice) {
 TEST(FramePipeline, ABandKeepsItsTilesAndEmptiesTheRest) {
   const Scene scene = teapot(320, 180);
   FrameConfig config;
-  FramePipeline whole_pipeline, band_pipeline;
-  const PreparedFrame& whole = whole_pipeline.prepare_frame(scene, config);
+  FramePipeline whole_pipeline(config);
+  const PreparedFrame& whole = whole_pipeline.prepare_frame(scene);
   config.band_first = 3;
   config.band_rows = 4;
-  const PreparedFrame& band = band_pipeline.prepare_frame(scene, config);
+  FramePipeline band_pipeline(config);
+  const PreparedFrame& band = band_pipeline.prepare_frame(scene);
   for (int t = 0; t < band.tiles(); ++t) {
     const int row = t / band.tiles_x;
     const std::uint32_t n = band.tile_start[t + 1] - band.tile_start[t];
@@ -92,8 +93,8 @@ TEST(FramePipeline, APlanCoversEveryTriangleOnce) {
   FrameConfig config;
   config.plan = PlanOptions{};
   config.plan->units = 3;
-  FramePipeline pipeline;
-  const PreparedFrame& f = pipeline.prepare_frame(scene, config);
+  FramePipeline pipeline(config);
+  const PreparedFrame& f = pipeline.prepare_frame(scene);
   ASSERT_NE(f.plan, nullptr);
   ASSERT_TRUE(f.stats.plan);
   EXPECT_EQ(f.plan->report.units, 3);
@@ -105,15 +106,15 @@ TEST(FramePipeline, APlanCoversEveryTriangleOnce) {
   EXPECT_EQ(started, with_box);
   // Unresolved units (0: the device's compute units) need a device to resolve them.
   config.plan->units = 0;
-  EXPECT_THROW(pipeline.prepare_frame(scene, config), UsageError);
+  EXPECT_THROW(FramePipeline(config).prepare_frame(scene), UsageError);
 }
 
 TEST(FramePipeline, TheExtraTriangulationSplitsEveryRecord) {
   const Scene scene = teapot(320, 180);
   FrameConfig config;
   config.units = parse_units("sierpinski:2");
-  FramePipeline pipeline;
-  const PreparedFrame& f = pipeline.prepare_frame(scene, config);
+  FramePipeline pipeline(config);
+  const PreparedFrame& f = pipeline.prepare_frame(scene);
   EXPECT_EQ(f.records, 16 * f.geometry->triangles.size());
   EXPECT_NE(f.arrays.leaves, nullptr);
 }
@@ -157,28 +158,26 @@ TEST(FramePipeline, DefaultBudgetStreamsAboveTheFramesOwnBytesInBandsOf16MiB) {
   for (Method method : {Method::gouraud, Method::phong}) {
     FrameConfig config;
     config.method = method;
-    FramePipeline pipeline;
-    const int bands = pipeline.begin_frame(scene, config, kBandBytesByFrame);
+    FramePipeline pipeline(config);
+    const int bands = pipeline.begin_frame(scene, kBandBytesByFrame);
     const std::size_t bytes = pipeline.geometry().triangles.size() * triangle_record_bytes(method);
     ASSERT_GT(bytes, 16 * MiB) << method_name(method);
     EXPECT_EQ(bands == 1, bytes <= 80 * MiB) << method_name(method) << ": " << bytes / MiB << " MiB of records";
     std::size_t largest = 0;
     Arrays storage;
     for (int b = 0; b < bands; ++b)
-      largest = std::max(largest, pipeline.prepare_band(scene, config, storage, b).records);
+      largest = std::max(largest, pipeline.prepare_band(scene, storage, b).records);
     if (bands > 1) EXPECT_LE(largest * triangle_record_bytes(method), 16 * MiB) << method_name(method);
     EXPECT_EQ(bands, method == Method::gouraud ? 1 : 7) << "the sphere's records against this budget";
   }
 }
 
+// The configuration is checked once, when the pipeline is made: before any frame's work.
 TEST(FramePipeline, ARefusedCombinationStopsBeforeAnyWork) {
-  const Scene scene = teapot(64, 36);
   FrameConfig config;
   config.method = Method::flat;
   config.arith = parse_arith("fixed:12.12");
-  FramePipeline pipeline;
-  EXPECT_THROW(pipeline.prepare_frame(scene, config), ConfigError);
-  EXPECT_TRUE(pipeline.geometry().triangles.empty());
+  EXPECT_THROW(FramePipeline pipeline(config), ConfigError);
 }
 
 }  // namespace

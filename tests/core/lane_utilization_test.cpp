@@ -17,8 +17,8 @@ glm::vec3 at(const Scene& s, float x, float y) { return {x - 0.5f * float(s.widt
 LaneUtilization measure(const Scene& s) {
   FrameConfig config;
   config.method = Method::gouraud;
-  FramePipeline pipeline;
-  return lane_utilization(pipeline.prepare_frame(s, config));
+  FramePipeline pipeline(config);
+  return lane_utilization(pipeline.prepare_frame(s));
 }
 
 TEST(LaneUtilization, OnePixelTriangleUsesOneLaneOfSixteen) {

@@ -228,6 +228,16 @@ def main():
             rc, out, err = mpirun(2, ["render", missing, "-o", img, "--distribute", "sort-last", "--read-scene", "rank-0"] + COMMON)
             check(rc == 3 and "rank 0 of 2" in err and "missing.json" in err,
                   "bad input, rank 0 reads: exit %d: %s" % (rc, err.strip()))
+            # No rank writes over an input: the report over the scene's mesh is refused on rank 0, before
+            # any work, for either mode (issue 44), the mesh's bytes unchanged.
+            mesh = os.path.join(tmp, "backdrop.obj")
+            mesh_bytes = open(mesh, "rb").read()
+            for mode in ("sort-last", "sort-first"):
+                rc, out, err = mpirun(2, ["render", backdrop_tie, "-o", img, "--report", mesh, "--distribute", mode] + COMMON)
+                check(rc == 2 and "--report" in err and "mesh" in err,
+                      "%s: --report over the mesh: exit %d (want 2): %s" % (mode, rc, err.strip()))
+                check(open(mesh, "rb").read() == mesh_bytes, "%s: the mesh was overwritten" % mode)
+                check(not os.path.exists(img), "%s: an image was written over a refused report" % mode)
             # Refused combinations and options: exit 2 with the reason, before any work.
             for opts, words in ((["--distribute", "sort-last", "--method", "combined:2"], ["ranks-sort-last", "combined"]),
                                 (["--distribute", "sort-last", "--coverage", "dda"], ["sort-last", "dda"]),
@@ -285,7 +295,7 @@ def main():
                 r["candidates"] = [{k: v for k, v in c.items() if k not in timing} for c in r["candidates"]]
                 return r
             space = ["--param", "tile=16,32", "--param", "work_items=0,4", "--param", "partition=none,lpt",
-                     "--param", "units=2", "--param", "method=gouraud,phong,flat", "--param", "unit=none,counter"]
+                     "--param", "cu=2", "--param", "method=gouraud,phong,flat", "--param", "units=none,counter"]
             for strategy, budget, nps in (("brute", "100", (2, 3)), ("random", "7", (2,))):
                 args = ["tune", SCENE, "--size", SIZE, "--frames", "1", "-q", "--strategy", strategy, "--seed", "5",
                         "--budget-runs", budget] + space

@@ -7,7 +7,7 @@ namespace parashade {
 
 bool mpi_built() { return false; }
 
-int run_distributed_render(const DistributedRender&) {
+int run_distributed_render(const DistributedRender&, RenderResult*, std::vector<std::string>*) {
   throw UsageError("--distribute needs MPI, and this parashade was built without it (install Open MPI: "
                    "scripts/install-deps.sh, then configure again)");
 }

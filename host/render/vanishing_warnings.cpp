@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace parashade::cli {
+namespace parashade {
 
 void warn_vanishing(const FrameStats& stats, const RenderedImage& image, std::ostream& err) {
   const std::uint64_t on_screen = stats.geometry.triangles_out;
@@ -21,4 +21,4 @@ void warn_vanishing(const FrameStats& stats, const RenderedImage& image, std::os
   err << ")\n";
 }
 
-}  // namespace parashade::cli
+}  // namespace parashade

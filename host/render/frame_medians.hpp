@@ -4,8 +4,8 @@
 
 #include "parashade/renderer.hpp"
 
-namespace parashade::cli {
+namespace parashade {
 
 FrameTimings median_timings(const std::vector<FrameTimings>& f);
 
-}  // namespace parashade::cli
+}  // namespace parashade

@@ -1,8 +1,8 @@
-#include "register_events_cli.hpp"
+#include "register_events_report.hpp"
 
 #include <string>
 
-namespace parashade::cli {
+namespace parashade {
 
 nlohmann::json register_events_json(const RegisterEvents& e) {
   return {{"spans", e.spans},
@@ -26,4 +26,4 @@ void warn_register_events(const RegisterEvents& e, const Arithmetic& a, std::ost
         << " integer bits)\n";
 }
 
-}  // namespace parashade::cli
+}  // namespace parashade

@@ -15,7 +15,7 @@
 #include "parashade/renderer.hpp"
 #include "parashade/scene.hpp"
 
-namespace parashade::cli {
+namespace parashade {
 
 // The problem a tuned configuration is for: the scene at its size, shaded one way. The layout (tile,
 // work-items, plan) never changes the image; the shading does, so it is part of the problem.
@@ -75,4 +75,4 @@ void apply_tuned_params(const nlohmann::json& params, RenderOptions& o);
 // A configuration's layout parameters as the cache stores them.
 nlohmann::json tuned_params(const RenderOptions& o);
 
-}  // namespace parashade::cli
+}  // namespace parashade

@@ -7,8 +7,8 @@
 #include "parashade/frame_stats.hpp"
 #include "parashade/image.hpp"
 
-namespace parashade::cli {
+namespace parashade {
 
 void warn_vanishing(const FrameStats& stats, const RenderedImage& image, std::ostream& err);
 
-}  // namespace parashade::cli
+}  // namespace parashade

@@ -2,7 +2,7 @@
 
 #include "parashade/statistics.hpp"
 
-namespace parashade::cli {
+namespace parashade {
 
 FrameTimings median_timings(const std::vector<FrameTimings>& f) {
   const auto med = [&](double FrameTimings::*field) {
@@ -30,4 +30,4 @@ FrameTimings median_timings(const std::vector<FrameTimings>& f) {
   return m;
 }
 
-}  // namespace parashade::cli
+}  // namespace parashade

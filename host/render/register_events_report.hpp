@@ -8,10 +8,10 @@
 #include "parashade/register_events.hpp"
 #include "parashade/units.hpp"
 
-namespace parashade::cli {
+namespace parashade {
 
 nlohmann::json register_events_json(const RegisterEvents& e);
 // One "parashade: warning:" line per kind of event that happened; nothing when none did.
 void warn_register_events(const RegisterEvents& e, const Arithmetic& a, std::ostream& err);
 
-}  // namespace parashade::cli
+}  // namespace parashade

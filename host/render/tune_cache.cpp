@@ -8,7 +8,7 @@
 #include "parashade/report.hpp"
 #include "parashade/version.hpp"
 
-namespace parashade::cli {
+namespace parashade {
 namespace {
 
 // The build an entry was measured with, "0.1.0+abc123def456": a timing from another build of the
@@ -19,7 +19,7 @@ std::string build_id() { return std::string(version) + "+" + git_hash; }
 
 nlohmann::json TuneProblem::to_json() const {
   return {{"scene", scene}, {"width", width},         {"height", height},
-          {"method", method}, {"unit", unit}, {"normalize", normalize}, {"specular", specular}};
+          {"method", method}, {"units", unit}, {"normalize", normalize}, {"specular", specular}};
 }
 
 std::optional<TuneProblem> tune_problem(const Scene& scene, const RenderOptions& o) {
@@ -48,8 +48,8 @@ std::filesystem::path default_tune_cache() {
 }
 
 TuneCache::TuneCache(std::filesystem::path path) : path_(std::move(path)) {
-  doc_ = {{"format", "parashade tune cache 2"}, {"objective", "frame_ms (median, lower is better)"},
-          {"tune_params_keys", {"tile", "work_items", "partition", "units", "batch"}},
+  doc_ = {{"format", "parashade tune cache 3"}, {"objective", "frame_ms (median, lower is better)"},
+          {"tune_params_keys", {"tile", "work_items", "partition", "cu", "batch"}},
           {"entries", nlohmann::json::array()}};
   std::error_code ec;
   if (!std::filesystem::exists(path_, ec)) return;
@@ -151,7 +151,7 @@ nlohmann::json tuned_params(const RenderOptions& o) {
   nlohmann::json p = {{"tile", o.tile_size}, {"work_items", o.work_items}};
   if (o.plan) {
     p["partition"] = partition_name(o.plan->partition);
-    p["units"] = o.plan->units;
+    p["cu"] = o.plan->units;
     if (o.plan->partition == Partition::dynamic) p["batch"] = o.plan->batch;
   } else {
     p["partition"] = "none";
@@ -169,7 +169,7 @@ void apply_tuned_params(const nlohmann::json& params, RenderOptions& o) {
     } else {
       PlanOptions plan;
       plan.partition = parse_partition(part);
-      plan.units = params.at("units").get<int>();
+      plan.units = params.at("cu").get<int>();
       if (params.contains("batch")) plan.batch = params.at("batch").get<int>();
       o.plan = plan;
     }
@@ -178,4 +178,4 @@ void apply_tuned_params(const nlohmann::json& params, RenderOptions& o) {
   }
 }
 
-}  // namespace parashade::cli
+}  // namespace parashade

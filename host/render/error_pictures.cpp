@@ -5,7 +5,7 @@
 #include "parashade/error_map.hpp"
 #include "parashade/metrics.hpp"
 
-namespace parashade::cli {
+namespace parashade {
 
 StagedFile stage_error_map(const std::filesystem::path& path, const RenderedImage& image,
                            const std::vector<std::uint8_t>& covered, const std::vector<glm::dvec3>& reference,
@@ -18,4 +18,4 @@ StagedFile stage_error_map(const std::filesystem::path& path, const RenderedImag
   return file;
 }
 
-}  // namespace parashade::cli
+}  // namespace parashade

@@ -11,7 +11,7 @@
 #include "parashade/image.hpp"
 #include "parashade/output_file.hpp"
 
-namespace parashade::cli {
+namespace parashade {
 
 // The error map of `image` against `reference` (values in levels; `covered` as compare_to_reference
 // takes it) staged at `path`; `lines` receives what was written and the scale's top.
@@ -19,4 +19,4 @@ StagedFile stage_error_map(const std::filesystem::path& path, const RenderedImag
                            const std::vector<std::uint8_t>& covered, const std::vector<glm::dvec3>& reference,
                            std::vector<std::string>& lines);
 
-}  // namespace parashade::cli
+}  // namespace parashade

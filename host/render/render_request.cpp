@@ -1,0 +1,139 @@
+// A render request resolved once (render_step.hpp): the options checked against the table, the scene at
+// its rendered size, the files checked, the devices opened, the tuned entry and the default tile applied.
+#include <algorithm>
+#include <cstdlib>
+
+#include "parashade/errors.hpp"
+#include "parashade/render_step.hpp"
+#include "parashade/scene_files.hpp"
+#include "parashade/split_renderer.hpp"
+#include "parashade/sub_devices.hpp"
+#include "parashade/tile_choice.hpp"
+#include "tune_cache.hpp"
+
+namespace parashade {
+namespace {
+
+// Where the devices come from: the request's selector, else PARASHADE_DEVICE (docs/environment.md), else
+// the first device. Errors of a selector from the variable name it, since no command line shows it.
+struct Selector {
+  std::string text, origin;
+};
+
+Selector selector_of(const std::string& given) {
+  if (!given.empty()) return {given, ""};
+  const char* value = std::getenv("PARASHADE_DEVICE");
+  if (!value || !*value) return {"", ""};
+  return {value, "PARASHADE_DEVICE='" + std::string(value) + "' (the device when none is given)"};
+}
+
+template <typename Open>
+auto opened(const Selector& s, Open&& open) {
+  try {
+    return open();
+  } catch (const UsageError& e) {
+    if (s.origin.empty()) throw DeviceSelectorError(e.what());
+    throw UsageError(s.origin + ": " + e.what());
+  } catch (const Error& e) {
+    if (s.origin.empty()) throw;
+    throw Error(e.code(), s.origin + ": " + e.what());
+  }
+}
+
+DeviceMode mode_of(const std::string& selector, const RenderOptions& o) {
+  if (o.plan && is_sub_device_selector(selector)) return DeviceMode::unit_sub_devices;
+  return is_device_list(selector) ? DeviceMode::bands : DeviceMode::one;
+}
+
+void open_devices_for(ResolvedRender& r, const Selector& s) {
+  if (r.mode == DeviceMode::bands) {
+    for (auto& d : opened(s, [&] { return open_devices(s.text); })) r.devices.push_back(std::move(d));
+  } else if (r.mode == DeviceMode::unit_sub_devices) {
+    SubDevices sub = opened(s, [&] { return open_sub_devices(s.text, SubDeviceContext::shared); });
+    r.devices.push_back(std::move(sub.parent));
+    for (auto& d : sub.subs) r.devices.push_back(std::move(d));
+  } else {
+    r.devices.push_back(opened(s, [&] { return open_device(s.text); }));
+  }
+}
+
+// The tune cache's best entry for this device, build and problem, applied to r.options; a refused or
+// unreadable entry is not used (a warning says why).
+void apply_tuned(ResolvedRender& r) {
+  const std::optional<TuneProblem> problem = tune_problem(r.scene, r.options);
+  if (!r.request.use_tuned || !problem) return;
+  const std::filesystem::path path = r.request.tune_cache.empty() ? default_tune_cache() : r.request.tune_cache;
+  const DeviceInfo& dev = r.devices.front()->info();
+  try {
+    const TuneCache cache(path);
+    if (const std::string stale = cache.stale_entries(dev, &*problem); !stale.empty() && !r.request.quiet)
+      r.notes.push_back(stale);
+    const auto best = cache.best(dev, *problem);
+    if (!best) return;
+    RenderOptions tuned = r.options;
+    apply_tuned_params(best->at("params"), tuned);
+    check_render_options(tuned, r.mode);
+    r.options = tuned;
+    r.tuned = {{"cache", path.string()}, {"params", best->at("params")}, {"objective_ms", best->at("objective")}};
+    r.notes.push_back("using the tuned configuration " + best->at("params").dump() + " from " + path.string() +
+                      " (--no-tuned to disable)");
+  } catch (const InputError& e) {
+    r.warnings.push_back(std::string("tune cache not used: ") + e.what());
+  } catch (const UsageError& e) {
+    r.warnings.push_back(std::string("tune cache entry not used: ") + e.what());
+  }
+}
+
+// The layout values left to the device and the scene: the tile (0: the scene's default; a split frame's
+// bands keep TILE_DEFAULT) and the plan's units (0: the device's compute units).
+void resolve_layout(ResolvedRender& r) {
+  if (r.options.tile_size == 0)
+    r.options.tile_size = r.mode == DeviceMode::bands ? TILE_DEFAULT
+                                                      : default_tile_size(r.scene, r.options, r.options.band_record_bytes);
+  if (r.options.plan && r.options.plan->units == 0)
+    r.options.plan->units = std::max(1, r.devices.front()->info().compute_units);
+}
+
+}  // namespace
+
+void check_render_options(const RenderOptions& options, DeviceMode mode) {
+  RenderOptions o = options;
+  if (o.tile_size == 0) o.tile_size = TILE_DEFAULT;  // chosen later from the valid sizes
+  check_frame_config(o, mode);
+}
+
+ResolvedRender resolve_render(RenderRequest request, CommandFiles& files) {
+  ResolvedRender r;
+  const Selector selector = selector_of(request.device);
+  r.mode = mode_of(selector.text, request.options);
+  check_render_options(request.options, r.mode);
+  std::vector<std::filesystem::path> inputs;
+  r.scene = load_scene(request.scene_file, inputs, request.size);
+  files.scene(inputs);
+  files.input("--triangle-choice list:", request.options.combined.list_file);
+  if (request.use_tuned || !request.tune_cache.empty())
+    files.input("--tune-cache", request.tune_cache.empty() ? default_tune_cache() : request.tune_cache);
+  files.check();
+  r.warnings = r.scene.warnings;
+  r.options = request.options;
+  r.request = std::move(request);
+  open_devices_for(r, selector);
+  if (r.mode == DeviceMode::one || r.mode == DeviceMode::unit_sub_devices) apply_tuned(r);
+  resolve_layout(r);
+  return r;
+}
+
+ResolvedRender with_options(const ResolvedRender& base, const RenderOptions& options) {
+  check_render_options(options, base.mode);
+  ResolvedRender r;
+  r.request = base.request;
+  r.request.options = options;
+  r.scene = base.scene;
+  r.options = options;
+  r.mode = base.mode;
+  r.devices = base.devices;
+  resolve_layout(r);
+  return r;
+}
+
+}  // namespace parashade

@@ -1,0 +1,28 @@
+#pragma once
+// The files a render writes (render_step.hpp's result): the image, the report, and the pictures of the
+// error (docs/pictures.md). Every output goes to a temporary file first and replaces its destination only
+// when all were written: a failed report leaves the previous image and pictures in place.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "parashade/render_step.hpp"
+
+namespace parashade {
+
+struct RenderOutputs {
+  std::filesystem::path image, report;  // report: empty for none
+  // The exact reference as an image, the per-pixel error as a colour map, the reference's visible triangle
+  // per pixel; each empty for none. They need the result's reference (RenderRequest::keep_reference).
+  std::filesystem::path reference_image, error_map, triangle_map;
+  bool against_exact = false;  // reference_image and error_map against exact Phong, not the method's ideal
+
+  bool pictures() const { return !reference_image.empty() || !error_map.empty() || !triangle_map.empty(); }
+  // Declares them to `files` by render's option names (-o, --report, --reference-image, --error-map,
+  // --triangle-map).
+  void declare(CommandFiles& files) const;
+  // Writes them all; returns one line per picture saying what it holds (for the summary).
+  std::vector<std::string> write(const RenderResult& r) const;
+};
+
+}  // namespace parashade
