@@ -204,7 +204,7 @@ class TuneRun {
     std::printf("tuning %s (%dx%d) on %s (driver %s, %d compute units)%s; cache %s\n", scene.name.c_str(), scene.width,
                 scene.height, dev.name.c_str(), dev.driver.c_str(), dev.compute_units,
                 group_ ? (" over " + std::to_string(ranks()) + " ranks").c_str() : "", cache_->path().string().c_str());
-    std::printf("space: %zu points: %zu valid, %zu refused by the table of combinations, %zu vary units or batch "
+    std::printf("space: %zu points: %zu valid, %zu refused by the table of combinations, %zu vary cu or batch "
                 "where nothing reads them; strategy %s, seed %llu\n",
                 space_size(space_), points_.valid.size(), points_.refused, points_.not_applicable, a_.strategy.c_str(),
                 (unsigned long long)a_.seed);
