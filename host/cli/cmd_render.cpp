@@ -27,14 +27,21 @@ struct RenderArgs {
   std::string scene, output, method = "gouraud", device, size, report, units, arith = "float", division = "constant",
               coverage = "centre", specular = "exact", normalize = "exact", triangle_choice;
   std::string against;  // --against: a plain method whose frames alternate with this one's
-  int frames = 5, warmup = 1, tile = 0, work_items = 0;  // tile 0: chosen for the scene (tile_choice.hpp)
-  int defer_min_triangles = -1;  // -1: RenderOptions' default (RenderOptions::deferral_threshold)
+  int frames = 5, warmup = 1;
+  // The knobs that are plain values bind straight to the options the renderer and its kernel read (one
+  // name from --NAME to the kernel's macro): --tile (0 here: chosen for the scene, tile_choice.hpp),
+  // --work-items, --defer-min-triangles, --float.
+  RenderOptions options = [] {
+    RenderOptions o;
+    o.tile_size = 0;
+    return o;
+  }();
   // Triangle records a frame may hold at once before it streams in bands of as many (MiB); 0: never
   // streams; -1 (not given): by the frame (default_band_mib, bands of 16).
   int band_mib = -1;
   double max_error = 0;  // 0: not given
   int combined_min_width = -1;
-  bool float_output = false, no_error = false, quiet = false, highlight_test = false;
+  bool no_error = false, quiet = false, highlight_test = false;
   PlanArgs plan;
   std::string tune_cache;
   std::string reference_image, error_map, error_reference = "ideal";  // the pictures of the error
@@ -66,15 +73,11 @@ void combined_options(const RenderArgs& a, RenderOptions& o) {
 
 // Every option that reaches the frame, parsed (usage errors name the option).
 RenderOptions render_options(const RenderArgs& a) {
-  RenderOptions o;
+  RenderOptions o = a.options;
   o.method = parse_method(a.method);
-  o.float_output = a.float_output;
-  o.tile_size = a.tile;
-  if (a.work_items < 0) throw UsageError("--work-items must not be negative");
-  o.work_items = a.work_items;
-  if (a.defer_min_triangles < -1 || a.defer_min_triangles > kMaxDeferMinTriangles)
+  if (o.work_items < 0) throw UsageError("--work-items must not be negative");
+  if (o.defer_min_triangles < -1 || o.defer_min_triangles > kMaxDeferMinTriangles)
     throw UsageError("--defer-min-triangles must be 0.." + std::to_string(kMaxDeferMinTriangles) + " (or -1, the default)");
-  o.defer_min_triangles = a.defer_min_triangles;
   o.band_record_bytes = a.band_mib < 0 ? kBandBytesByFrame : a.band_mib == 0 ? SIZE_MAX : std::size_t(a.band_mib) << 20;
   combined_options(a, o);
   if (!a.units.empty()) o.units = for_option("--units", [&] { return parse_units(a.units); });
@@ -292,16 +295,16 @@ void add_device_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
 // How the modeled hardware computes it (unit, arithmetic, coverage, plan) and the kernel's layout.
 void add_layout_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
   add_size_option(*cmd, a->size);
-  cmd->add_option("--tile", a->tile,
+  cmd->add_option("--tile", a->options.tile_size,
                   "Screen tile size: " + tile_sizes_text() + " (default: " + std::to_string(TILE_MAX) +
                       " for a Gouraud or flat frame on one device that is not streamed in bands, else " +
                       std::to_string(TILE_DEFAULT) + "; a tuned entry's when there is one)")
       ->check(CLI::IsMember(tile_sizes()));
-  cmd->add_option("--work-items", a->work_items,
+  cmd->add_option("--work-items", a->options.work_items,
                   "Kernel work-items, each rendering every N-th tile (0: " + std::to_string(WORK_ITEMS_PER_COMPUTE_UNIT) +
                       " per compute unit)")
       ->capture_default_str();
-  cmd->add_option("--defer-min-triangles", a->defer_min_triangles,
+  cmd->add_option("--defer-min-triangles", a->options.defer_min_triangles,
                   "Phong and the combined method on the stamps: a tile of at least N triangles shades each pixel once, "
                   "after its depth test (-1: the default, every tile for Phong, tile x tile / 16 for combined; 0: every "
                   "tile). "
@@ -344,7 +347,7 @@ void add_output_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
                   "alternating with this method's, and report the median of the pairs' frame ratios: a comparison "
                   "that a host whose speed drifts between processes cannot bias (bench/README.md)")
       ->type_name("METHOD");
-  cmd->add_flag("--float", a->float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
+  cmd->add_flag("--float", a->options.float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
   cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");
   cmd->add_option("--reference-image", a->reference_image,
                   "Also write the exact reference (double precision, --error-reference) as an image; any format -o "
