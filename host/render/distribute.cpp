@@ -1,4 +1,5 @@
-// The --distribute values; compiled with or without MPI.
+// The --distribute values and the figures rank 0 gathers: in the render step (its report reads them),
+// compiled with or without MPI.
 #include "parashade/distributed.hpp"
 
 #include "parashade/errors.hpp"
