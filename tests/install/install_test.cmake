@@ -66,6 +66,14 @@ if(NOT varies OR NOT CMAKE_MATCH_1 GREATER 5)  # levels of 255
 endif()
 message(STATUS "install test: ${image} ok (${stddev})")
 
+# The render step (render_step.hpp) links and runs from the package alone.
+run("running the render step" ${consumer_build}/render_step ${SOURCE_DIR}/scenes/sphere.json)
+string(FIND "${run_output}" "render step ok" ok)
+if(ok EQUAL -1)
+  message(FATAL_ERROR "the render step consumer did not finish:\n${run_output}")
+endif()
+message(STATUS "${run_output}")
+
 # README's "Using parashade from another program" shows this consumer as it is (a code block: indented).
 file(READ ${SOURCE_DIR}/README.md readme)
 file(READ ${SOURCE_DIR}/tests/install/consumer/consumer.cpp consumer)
