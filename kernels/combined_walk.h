@@ -1,5 +1,5 @@
 /* The combined method's walk of one triangle in one tile (method_combined.h), included by
- * render_tiles.cl after depth_test() and keep(). Per block of VEC rows (rows as lanes):
+ * tile_walk.h after depth_test() and keep() (depth_test.h). Per block of VEC rows (rows as lanes):
  * 1. each row's whole span [xl, xr] (segment ends are counted from xl, so a span crossing tiles
  *    gives the same pixels in every tile) and its part [sl, sr] in the tile;
  * 2. rows with no pixel passing the depth test are dropped (occluded triangles cost no shading);

@@ -1,0 +1,56 @@
+/* A tile's private state while its triangles are walked: depth and colour per pixel as TILE_VECTORS vectors
+ * (row segments, or stamps: stamp_layout.h), a deferred tile's winners, and the tile's counters. It stays in
+ * private memory and is written once, so there is no read-modify-write of the frame and the result is
+ * deterministic. */
+#ifndef PARASHADE_TILE_STATE_H
+#define PARASHADE_TILE_STATE_H
+
+#define TILE_VECTORS (TILE * SEGMENTS)
+
+#if REGISTER_COLOUR
+typedef intV colourV;
+#else
+typedef floatV colourV;
+#endif
+
+#if UNIT_PATH
+/* A unit's spans counted in this tile (those whose left pixel it holds), their pixels and modeled clocks. */
+typedef struct { ulong spans, span_pixels, clocks; } TileCounts;
+#else
+/* Per-span normalization's setups, their fallbacks and a sequential unit's steps (SHADE_SPAN; unused, and
+ * compiled away, otherwise). */
+typedef struct { ulong span_setups, span_fallbacks, span_steps; } TileCounts;
+#endif
+
+#if DEFER_STAMPS
+/* Deferred stamps (Phong, deferred_shade.h): in a tile of at least DEFER_MIN_TRIANGLES triangles (deferred) the
+ * walk only keeps, per pixel, the record of the triangle that passed its depth test last (winner, -1: none). */
+#define DEFER_DECL , intV* winner, int deferred
+#define DEFER_ARGS , winner, deferred
+#else
+#define DEFER_DECL
+#define DEFER_ARGS
+#endif
+
+/* Every pixel uncovered (depth infinite) and of the background colour. */
+INLINE void clear_tile(floatV* depth, colourV* cr, colourV* cg, colourV* cb, float4 background) {
+  for (int i = 0; i < TILE_VECTORS; ++i) {
+    depth[i] = (floatV)INFINITY;
+#if REGISTER_COLOUR
+    /* Colour holds span registers: the background as a register value. */
+    cr[i] = (intV)(int)(background.x * (1 << FRAC_BITS));
+    cg[i] = (intV)(int)(background.y * (1 << FRAC_BITS));
+    cb[i] = (intV)(int)(background.z * (1 << FRAC_BITS));
+#else
+    cr[i] = (floatV)background.x;
+    cg[i] = (floatV)background.y;
+    cb[i] = (floatV)background.z;
+#endif
+  }
+}
+
+INLINE void clear_winners(intV* winner) {
+  for (int i = 0; i < TILE_VECTORS; ++i) winner[i] = (intV)(-1);
+}
+
+#endif
