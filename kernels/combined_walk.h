@@ -32,6 +32,74 @@ INLINE floatV walk_load(const floatV* a, int r, int s) { return a[r * SEGMENTS +
 INLINE void walk_store(floatV* a, int r, int s, floatV v) { a[r * SEGMENTS + s] = v; }
 #endif
 
+/* 2. Visible rows of the block from row `block` (rows of them; their parts sl..sr in the tile, relative to x0):
+ * a pixel in the tile passes the depth test (the test proper comes in step 4). Returns whether any row is. */
+INLINE int visible_rows(__global const TriangleGeometry* t, int tile_x, int tile_y, int block, int rows,
+                        const int* sl_, const int* sr_, const floatV* depth, int* visible_) {
+  const int x0 = t->x0, y0 = t->y0;
+  const intV lane = LANE_INDEX;
+  int any_visible = 0;
+  for (int j = 0; j < VEC; ++j) {
+    int vis = 0;
+    if (j < rows && sl_[j] <= sr_[j]) {
+      const int py = block + j;
+      for (int s = (sl_[j] + x0 - tile_x) / VEC; s <= (sr_[j] + x0 - tile_x) / VEC && !vis; ++s) {
+        const intV rel = lane + (tile_x + s * VEC - x0);
+        const floatV z = (floatV)(t->z_ref + t->z_ddy * (float)(py - y0)) + t->z_ddx * convert_floatV(rel);
+        vis = any_lanes((rel >= sl_[j]) & (rel <= sr_[j]) & isless(z, walk_load(depth, py - tile_y, s)));
+      }
+    }
+    visible_[j] = vis;
+    any_visible |= vis;
+  }
+  return any_visible;
+}
+
+/* 4. Row py (lane j of its block; span from row_xl, its part row_sl..row_sr in the tile, segments of 2^kj pixels
+ * from segment first): I = I_a + (I_b - I_a) * v / 2^K between the ends of each pixel's segment. */
+INLINE void interpolate_row(__global const TriangleGeometry* t, int tile_x, int tile_y, int py, int j, int kj,
+                            int row_xl, int row_sl, int row_sr, int first, const float* end_r, const float* end_g,
+                            const float* end_b, floatV* depth, floatV* cr, floatV* cg, floatV* cb DEFER_DECL) {
+  const int x0 = t->x0, y0 = t->y0;
+  const intV lane = LANE_INDEX;
+  const float step = 1.0f / (float)(1 << kj);
+  for (int s = (row_sl + x0 - tile_x) / VEC; s <= (row_sr + x0 - tile_x) / VEC; ++s) {
+    const intV rel = lane + (tile_x + s * VEC - x0);
+    const int r = py - tile_y;
+    floatV d = walk_load(depth, r, s);
+    const intV pass = depth_test(t, py - y0, convert_floatV(rel), (rel >= row_sl) & (rel <= row_sr), &d);
+    if (!any_lanes(pass)) continue;
+    walk_store(depth, r, s, d);
+    const intV i = rel - row_xl;
+    const intV column = (i >> kj) - first;
+    const floatV w = convert_floatV(i & ((1 << kj) - 1)) * step;
+    /* The columns the chunk's covered lanes use (lanes are in increasing x). */
+    const int c_lo = ((max(row_sl, tile_x + s * VEC - x0) - row_xl) >> kj) - first;
+    const int c_hi = ((min(row_sr, tile_x + s * VEC + VEC - 1 - x0) - row_xl) >> kj) - first;
+    floatV ar = 0.0f, ag = 0.0f, ab = 0.0f, br = 0.0f, bg = 0.0f, bb = 0.0f;
+    for (int c = c_lo; c <= c_hi; ++c) {
+      const intV here = column == c;
+      ar = select(ar, (floatV)end_r[c * VEC + j], here);
+      ag = select(ag, (floatV)end_g[c * VEC + j], here);
+      ab = select(ab, (floatV)end_b[c * VEC + j], here);
+      br = select(br, (floatV)end_r[(c + 1) * VEC + j], here);
+      bg = select(bg, (floatV)end_g[(c + 1) * VEC + j], here);
+      bb = select(bb, (floatV)end_b[(c + 1) * VEC + j], here);
+    }
+    floatV kr = walk_load(cr, r, s), kg = walk_load(cg, r, s), kb = walk_load(cb, r, s);
+    keep(pass, ar + (br - ar) * w, ag + (bg - ag) * w, ab + (bb - ab) * w, &kr, &kg, &kb);
+    walk_store(cr, r, s, kr);
+    walk_store(cg, r, s, kg);
+    walk_store(cb, r, s, kb);
+#if DEFER_STAMPS
+    if (deferred) { /* the winners (ints) through the same view: no earlier winner left at these pixels */
+      const intV left = select(as_intV(walk_load((const floatV*)winner, r, s)), (intV)(-1), pass);
+      walk_store((floatV*)winner, r, s, as_floatV(left));
+    }
+#endif
+  }
+}
+
 INLINE void shade_triangle_combined(__global const TriangleGeometry* t, __global const float* attr, int tile_x,
                                     int tile_y, int row_first, int row_last, int lo, int hi, floatV* depth,
                                     floatV* cr, floatV* cg, floatV* cb, __constant float4* lights,
@@ -46,6 +114,7 @@ INLINE void shade_triangle_combined(__global const TriangleGeometry* t, __global
   int xl_[VEC], xr_[VEC], sl_[VEC], sr_[VEC], k_[VEC], first_[VEC], visible_[VEC];
   float end_r[SEG_END_COLUMNS * VEC], end_g[SEG_END_COLUMNS * VEC], end_b[SEG_END_COLUMNS * VEC];
   for (int block = row_first; block <= row_last; block += VEC) {
+    /* 1. The rows' whole spans and their parts in the tile. */
     const int rows = min(VEC, row_last - block + 1);
     const intV dy = lane + (block - y0);
     intV xl, xr;
@@ -56,23 +125,7 @@ INLINE void shade_triangle_combined(__global const TriangleGeometry* t, __global
     vstoreV(xr, 0, xr_);
     vstoreV(sl, 0, sl_);
     vstoreV(sr, 0, sr_);
-
-    /* 2. Visible rows: a pixel in the tile passes the depth test (the test proper comes in step 4). */
-    int any_visible = 0;
-    for (int j = 0; j < VEC; ++j) {
-      int vis = 0;
-      if (j < rows && sl_[j] <= sr_[j]) {
-        const int py = block + j;
-        for (int s = (sl_[j] + x0 - tile_x) / VEC; s <= (sr_[j] + x0 - tile_x) / VEC && !vis; ++s) {
-          const intV rel = lane + (tile_x + s * VEC - x0);
-          const floatV z = (floatV)(t->z_ref + t->z_ddy * (float)(py - y0)) + t->z_ddx * convert_floatV(rel);
-          vis = any_lanes((rel >= sl_[j]) & (rel <= sr_[j]) & isless(z, walk_load(depth, py - tile_y, s)));
-        }
-      }
-      visible_[j] = vis;
-      any_visible |= vis;
-    }
-    if (!any_visible) continue;
+    if (!visible_rows(t, tile_x, tile_y, block, rows, sl_, sr_, depth, visible_)) continue;
 
     /* 3. End columns: row j needs ends m = first_j .. last_j + 1 of its segments (m counted from xl). */
     const floatV fdy = convert_floatV(dy);
@@ -92,47 +145,10 @@ INLINE void shade_triangle_combined(__global const TriangleGeometry* t, __global
       vstoreV(b, 0, end_b + c * VEC);
     }
 
-    /* 4. Per row: I = I_a + (I_b - I_a) * v / 2^K between the ends of each pixel's segment. */
-    for (int j = 0; j < rows; ++j) {
-      if (!visible_[j]) continue;
-      const int py = block + j, kj = k_[j], row_xl = xl_[j], row_sl = sl_[j], row_sr = sr_[j];
-      const float step = 1.0f / (float)(1 << kj);
-      for (int s = (row_sl + x0 - tile_x) / VEC; s <= (row_sr + x0 - tile_x) / VEC; ++s) {
-        const intV rel = lane + (tile_x + s * VEC - x0);
-        const int r = py - tile_y;
-        floatV d = walk_load(depth, r, s);
-        const intV pass = depth_test(t, py - y0, convert_floatV(rel), (rel >= row_sl) & (rel <= row_sr), &d);
-        if (!any_lanes(pass)) continue;
-        walk_store(depth, r, s, d);
-        const intV i = rel - row_xl;
-        const intV column = (i >> kj) - first_[j];
-        const floatV w = convert_floatV(i & ((1 << kj) - 1)) * step;
-        /* The columns the chunk's covered lanes use (lanes are in increasing x). */
-        const int c_lo = ((max(row_sl, tile_x + s * VEC - x0) - row_xl) >> kj) - first_[j];
-        const int c_hi = ((min(row_sr, tile_x + s * VEC + VEC - 1 - x0) - row_xl) >> kj) - first_[j];
-        floatV ar = 0.0f, ag = 0.0f, ab = 0.0f, br = 0.0f, bg = 0.0f, bb = 0.0f;
-        for (int c = c_lo; c <= c_hi; ++c) {
-          const intV here = column == c;
-          ar = select(ar, (floatV)end_r[c * VEC + j], here);
-          ag = select(ag, (floatV)end_g[c * VEC + j], here);
-          ab = select(ab, (floatV)end_b[c * VEC + j], here);
-          br = select(br, (floatV)end_r[(c + 1) * VEC + j], here);
-          bg = select(bg, (floatV)end_g[(c + 1) * VEC + j], here);
-          bb = select(bb, (floatV)end_b[(c + 1) * VEC + j], here);
-        }
-        floatV kr = walk_load(cr, r, s), kg = walk_load(cg, r, s), kb = walk_load(cb, r, s);
-        keep(pass, ar + (br - ar) * w, ag + (bg - ag) * w, ab + (bb - ab) * w, &kr, &kg, &kb);
-        walk_store(cr, r, s, kr);
-        walk_store(cg, r, s, kg);
-        walk_store(cb, r, s, kb);
-#if DEFER_STAMPS
-        if (deferred) { /* the winners (ints) through the same view: no earlier winner left at these pixels */
-          const intV left = select(as_intV(walk_load((const floatV*)winner, r, s)), (intV)(-1), pass);
-          walk_store((floatV*)winner, r, s, as_floatV(left));
-        }
-#endif
-      }
-    }
+    for (int j = 0; j < rows; ++j)
+      if (visible_[j])
+        interpolate_row(t, tile_x, tile_y, block + j, j, k_[j], xl_[j], sl_[j], sr_[j], first_[j], end_r, end_g, end_b,
+                        depth, cr, cg, cb DEFER_ARGS);
   }
 }
 
