@@ -41,46 +41,10 @@ INLINE int list_winners(const FrameArgs* f, intV winner, intV won, int* winners)
   return count;
 }
 
-/* A stamp of several winners of one material, shaded once with each lane's planes and specular mask gathered
- * from its own triangle (lanes without a winner repeat the first one's and are not kept): a stamp has a few
- * winners, so each one's record is read once and blended into the lanes it won. Copying every lane's record
- * into a lane-major array instead compiled to a scatter per lane. Returns 0, shading nothing, when the winners'
- * materials differ. */
-INLINE int shade_winners_blended(const FrameArgs* f, intV winner, intV won, const int* winners, int count, int x,
-                                 int y, floatV* cr, floatV* cg, floatV* cb) {
-  const int first = winners[0];
-  __global const float* a = f->attrs + (size_t)first * ATTR_FLOATS;
-  const int material = (int)a[PHONG_MATERIAL_SLOT];
-  int needed = SPECULAR_NEEDED(a); /* the lanes' specular masks and their union */
-  intV lane_needed = (intV)needed;
-  floatV p[DEFER_PLANE_FLOATS];
-#pragma unroll
-  for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = (floatV)a[k];
-  intV dy = STAMP_ROW + (y - f->tris[first].y0), rel = STAMP_COLUMN + (x - f->tris[first].x0);
-  int materials_differ = 0;
-  for (int w = 1; w < count; ++w) {
-    const int id = winners[w];
-    a = f->attrs + (size_t)id * ATTR_FLOATS;
-    materials_differ |= (int)a[PHONG_MATERIAL_SLOT] != material;
-    const intV mine = winner == id;
-    needed |= SPECULAR_NEEDED(a);
-    lane_needed = select(lane_needed, (intV)SPECULAR_NEEDED(a), mine);
-#pragma unroll
-    for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = select(p[k], (floatV)a[k], mine);
-    dy = select(dy, STAMP_ROW + (y - f->tris[id].y0), mine);
-    rel = select(rel, STAMP_COLUMN + (x - f->tris[id].x0), mine);
-  }
-  if (materials_differ) return 0;
-  floatV sr, sg, sb;
-  shade_pixels_lanes(p, material, needed, lane_needed, convert_floatV(dy), convert_floatV(rel), &sr, &sg, &sb,
-                     f->lights, f->materials, f->viewer);
-  keep(won, sr, sg, sb, cr, cg, cb);
-  return 1;
-}
-
 /* The deferred tile's pixels, a stamp at a time, each by its winner. A stamp of one winner is shaded from its
- * planes, as the walk would; one of several winners blended (shade_winners_blended), or each winner over its
- * own lanes when their materials differ. */
+ * planes, as the walk would. A stamp whose pixels have several winners of one material is shaded once with each
+ * lane's planes and specular mask gathered from its own triangle (lanes without a winner repeat a covered
+ * lane's and are not kept); otherwise each winner shades its own lanes from its planes. */
 INLINE void shade_winners(const FrameArgs* f, const intV* winner, int tile_x, int tile_y, floatV* cr, floatV* cg,
                           floatV* cb) {
   for (int i = 0; i < TILE_VECTORS; ++i) {
@@ -97,8 +61,39 @@ INLINE void shade_winners(const FrameArgs* f, const intV* winner, int tile_x, in
     }
     int winners[VEC];
     const int count = list_winners(f, winner[i], won, winners);
-    if (shade_winners_blended(f, winner[i], won, winners, count, x, y, &cr[i], &cg[i], &cb[i])) continue;
-    for (int w = 0; w < count; ++w)
+    /* Each lane's planes from its own winner: a stamp has a few winners, so each one's record is read once and
+     * blended into the lanes it won (lanes without a winner keep the first one's). Copying every lane's record
+     * into a lane-major array instead compiled to a scatter per lane. */
+    const int first = winners[0];
+    __global const float* a = f->attrs + (size_t)first * ATTR_FLOATS;
+    const int material = (int)a[PHONG_MATERIAL_SLOT];
+    int needed = SPECULAR_NEEDED(a); /* the lanes' specular masks and their union */
+    intV lane_needed = (intV)needed;
+    floatV p[DEFER_PLANE_FLOATS];
+#pragma unroll
+    for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = (floatV)a[k];
+    intV dy = STAMP_ROW + (y - f->tris[first].y0), rel = STAMP_COLUMN + (x - f->tris[first].x0);
+    int materials_differ = 0;
+    for (int w = 1; w < count; ++w) {
+      const int id = winners[w];
+      a = f->attrs + (size_t)id * ATTR_FLOATS;
+      materials_differ |= (int)a[PHONG_MATERIAL_SLOT] != material;
+      const intV mine = winner[i] == id;
+      needed |= SPECULAR_NEEDED(a);
+      lane_needed = select(lane_needed, (intV)SPECULAR_NEEDED(a), mine);
+#pragma unroll
+      for (int k = 0; k < DEFER_PLANE_FLOATS; ++k) p[k] = select(p[k], (floatV)a[k], mine);
+      dy = select(dy, STAMP_ROW + (y - f->tris[id].y0), mine);
+      rel = select(rel, STAMP_COLUMN + (x - f->tris[id].x0), mine);
+    }
+    if (!materials_differ) {
+      floatV sr, sg, sb;
+      shade_pixels_lanes(p, material, needed, lane_needed, convert_floatV(dy), convert_floatV(rel), &sr, &sg, &sb,
+                         f->lights, f->materials, f->viewer);
+      keep(won, sr, sg, sb, &cr[i], &cg[i], &cb[i]);
+      continue;
+    }
+    for (int w = 0; w < count; ++w) /* each winner over its own lanes */
       shade_winner_lanes(f, winners[w], winner[i] == winners[w], x, y, &cr[i], &cg[i], &cb[i]);
   }
 }

@@ -32,18 +32,18 @@ INLINE void render_tile(const FrameArgs* f, int tile, uint begin, uint end) {
     return;
   }
 #endif
-  floatV depth[TILE_VECTORS];
-  colourV cr[TILE_VECTORS], cg[TILE_VECTORS], cb[TILE_VECTORS];
-  clear_tile(depth, cr, cg, cb, f->background);
+  floatV depth[TILE_ARRAY];
+  colourV cr[TILE_ARRAY], cg[TILE_ARRAY], cb[TILE_ARRAY];
 #if DEFER_STAMPS
-  intV winner[TILE_VECTORS];
-  clear_winners(winner);
+  intV winner[TILE_ARRAY];
   const int deferred = (int)(end - begin) >= DEFER_MIN_TRIANGLES;
 #endif
+  clear_tile(depth, cr, cg, cb, f->background DEFER_ARGS);
   TileCounts counts = {0, 0, 0};
   for (uint k = begin; k < end; ++k) {
+    const uint ti = f->tile_tris[k];
     if (k + PREFETCH_AHEAD < end) prefetch_triangle(f, f->tile_tris[k + PREFETCH_AHEAD]);
-    walk_triangle(f, f->tile_tris[k], tile_x, tile_y, depth, cr, cg, cb, &counts DEFER_ARGS);
+    walk_triangle(f, ti, tile_x, tile_y, depth, cr, cg, cb, &counts DEFER_ARGS);
   }
 #if DEFER_STAMPS
   if (deferred) shade_winners(f, winner, tile_x, tile_y, cr, cg, cb);

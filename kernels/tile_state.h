@@ -6,6 +6,10 @@
 #define PARASHADE_TILE_STATE_H
 
 #define TILE_VECTORS (TILE * SEGMENTS)
+/* The tile arrays' length: one vector more than the tile's, so that at TILE 32 and 64 (4 and 16 KiB an array)
+ * they are not a multiple of 4 KiB apart; a load of cr[i] right after a store to depth[i] at such a distance waits
+ * on the store (4K aliasing). 1.3-2.6 % off the kernel time of Gouraud and Phong on the bunny and the teapot. */
+#define TILE_ARRAY (TILE_VECTORS + 1)
 
 #if REGISTER_COLOUR
 typedef intV colourV;
@@ -32,10 +36,13 @@ typedef struct { ulong span_setups, span_fallbacks, span_steps; } TileCounts;
 #define DEFER_ARGS
 #endif
 
-/* Every pixel uncovered (depth infinite) and of the background colour. */
-INLINE void clear_tile(floatV* depth, colourV* cr, colourV* cg, colourV* cb, float4 background) {
+/* Every pixel uncovered (depth infinite), of the background colour and, in a deferred tile, without a winner. */
+INLINE void clear_tile(floatV* depth, colourV* cr, colourV* cg, colourV* cb, float4 background DEFER_DECL) {
   for (int i = 0; i < TILE_VECTORS; ++i) {
     depth[i] = (floatV)INFINITY;
+#if DEFER_STAMPS
+    winner[i] = (intV)(-1);
+#endif
 #if REGISTER_COLOUR
     /* Colour holds span registers: the background as a register value. */
     cr[i] = (intV)(int)(background.x * (1 << FRAC_BITS));
@@ -47,10 +54,6 @@ INLINE void clear_tile(floatV* depth, colourV* cr, colourV* cg, colourV* cb, flo
     cb[i] = (floatV)background.z;
 #endif
   }
-}
-
-INLINE void clear_winners(intV* winner) {
-  for (int i = 0; i < TILE_VECTORS; ++i) winner[i] = (intV)(-1);
 }
 
 #endif
