@@ -8,7 +8,8 @@
 #define TILE_VECTORS (TILE * SEGMENTS)
 /* The tile arrays' length: one vector more than the tile's, so that at TILE 32 and 64 (4 and 16 KiB an array)
  * they are not a multiple of 4 KiB apart; a load of cr[i] right after a store to depth[i] at such a distance waits
- * on the store (4K aliasing). 1.3-2.6 % off the kernel time of Gouraud and Phong on the bunny and the teapot. */
+ * on the store (4K aliasing). 0.7-2.6 % off the kernel time of Gouraud and Phong on the bunny and the teapot
+ * (1920x1080, PoCL pthread on a 2-core AVX-512 VM, bench_kernel_ab). */
 #define TILE_ARRAY (TILE_VECTORS + 1)
 
 #if REGISTER_COLOUR
