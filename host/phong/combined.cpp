@@ -104,6 +104,11 @@ int combined_min_width(const CombinedConfig& c) {
 
 double combined_shading_budget(const CombinedConfig& c) { return std::max(0.0, c.max_error - 0.5); }
 
+double dropped_specular_levels(const CombinedConfig& c, double shading_budget, std::size_t lights) {
+  if (!(c.automatic || c.rule == TriangleRule::bound) || lights == 0) return c.negligible_specular;
+  return std::min(c.negligible_specular, std::max(0.0, shading_budget) / double(lights));
+}
+
 std::string combined_name(const CombinedConfig& c) {
   return c.automatic ? "combined:auto" : "combined:" + std::to_string(c.k);
 }
