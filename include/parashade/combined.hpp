@@ -64,6 +64,10 @@ double combined_shading_budget(const CombinedConfig& c);
 // shading_budget / lights when the lights together would pass it (24 faint lights at 0.05 each made 1.2
 // levels against a budget of 0.5). Without a budget (combined:K --highlight-test): negligible_specular.
 double dropped_specular_levels(const CombinedConfig& c, double shading_budget, std::size_t lights);
+// Float Phong's own error against its ideal in levels, at most 64u 255 sum_l max_c I_l,c (k_d,c + k_s,c (n + 1))
+// for the scene's worst material (docs/error-bounds.md, u = 2^-24). The budget holds against Phong's float
+// image, so 0.5 (the 8-bit rounding) plus this is the floor under --max-error against ideal Phong.
+double phong_float_error_bound(const Scene& s);
 
 // Worst-case |exact - chord| of one segment for a term max(0, A cos(theta - theta0))^n (A <= 1) whose
 // end normals are phi apart on a great circle, the chord linear in the angle (docs/combined.md §2).
