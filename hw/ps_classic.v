@@ -26,7 +26,7 @@ module ps_classic #(
   reg [W-1:0] acc, step;
   reg [LEN-1:0] xr, last;
   reg busy;
-  assign ready = !busy;
+  assign ready = !busy && !rst;  // in reset `load` is ignored: never offer to take it
   always @(posedge clk) begin
     if (rst) begin
       busy <= 1'b0;

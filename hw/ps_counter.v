@@ -27,7 +27,7 @@ module ps_counter #(
   reg [LEN-1:0] xa, xb;  // the left and right lanes' pixels; xa <= xb while busy
   reg busy;
   wire both = xa != xb;  // the right lane has a pixel of its own this clock
-  assign ready = !busy;
+  assign ready = !busy && !rst;  // in reset `load` is ignored: never offer to take it
   always @(posedge clk) begin
     if (rst) begin
       busy <= 1'b0;

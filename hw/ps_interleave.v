@@ -35,7 +35,7 @@ module ps_interleave #(
   reg [W-1:0] lane_step;
   reg [LEN-1:0] first, rest;  // the span's pixel at lane 0; pixels left from it on
   reg busy;
-  assign ready = !busy;
+  assign ready = !busy && !rst;  // in reset `load` is ignored: never offer to take it
   always @(posedge clk) begin
     if (rst) begin
       busy <= 1'b0;

@@ -43,8 +43,8 @@ module ps_pipelined #(
   reg busy;
   wire last = busy && rest <= LANES;      // the active span's last clock
   wire take = full && (!busy || last);    // the shadow bank moves in at this clock's edge
-  wire accept = load && (!full || take);
-  assign ready = !full || take;
+  assign ready = (!full || take) && !rst;  // in reset `load` is ignored: never offer to take it
+  wire accept = load && ready;
   always @(posedge clk) begin
     if (rst) begin
       full <= 1'b0;

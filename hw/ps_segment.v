@@ -32,7 +32,7 @@ module ps_segment #(
   reg busy;
   wire [(P+1)*W-1:0] mult;
   ps_multiples #(.W(W), .N(P)) multiples (.step(step), .mult(mult));
-  assign ready = !busy;
+  assign ready = !busy && !rst;  // in reset `load` is ignored: never offer to take it
   always @(posedge clk) begin
     if (rst) begin
       busy <= 1'b0;

@@ -23,7 +23,8 @@ nlohmann::json to_json(const ErrorMetrics& m) {
           {"mean_abs", number_or_null(m.mean_abs)},
           {"pixels_compared", m.pixels_compared},
           {"pixels_over_1_level", m.pixels_over_1_level},
-          {"coverage_mismatch", m.coverage_mismatch}};
+          {"coverage_mismatch", m.coverage_mismatch},
+          {"front_surface_mismatch", m.front_surface_mismatch}};  // float depth ties: counted apart, not compared
 }
 
 nlohmann::json to_json(const FrameTimings& t) {

@@ -1,5 +1,7 @@
 #include "shading_tables.hpp"
 
+#include <algorithm>
+
 namespace parashade {
 
 std::vector<cl_float4> light_table(const Scene& s) {
@@ -30,9 +32,14 @@ std::vector<cl_float4> material_table(const Scene& s, const SpecularModel& spec)
 }
 
 void set_combined_limits(const Scene& s, const CombinedConfig& c, std::vector<cl_float4>& materials) {
+  // The specular terms --highlight-test drops are charged to the budget first (dropped_specular_levels).
+  const double budget = combined_shading_budget(c);
+  const double segments =
+      c.highlight_test ? std::max(0.0, budget - dropped_specular_levels(c, budget, s.lights.size()) * double(s.lights.size()))
+                       : budget;
   for (std::size_t m = 0; m < s.materials.size() && 3 * m + 2 < materials.size(); ++m)
     materials[3 * m + 2].s[3] =
-        c.automatic && c.rule == TriangleRule::none ? float(psi_limit(s, s.materials[m], combined_shading_budget(c))) : 0.0f;
+        c.automatic && c.rule == TriangleRule::none ? float(psi_limit(s, s.materials[m], segments)) : 0.0f;
 }
 
 }  // namespace parashade

@@ -84,7 +84,7 @@ int run_compare(const CompareArgs& args) {
 
   std::vector<std::string> lines;
   std::optional<StagedFile> diff, report;
-  if (!args.diff.empty()) diff.emplace(stage_error_map(args.diff, a, all, reference, lines));
+  if (!args.diff.empty()) diff.emplace(stage_error_map(args.diff, a, all, reference, {}, lines));
   if (!args.report.empty())
     report.emplace(stage_text(args.report, report_text(compare_report(args, a, channels_a, m, differing, passed), "compare")));
   if (diff) diff->commit();

@@ -104,6 +104,26 @@ int combined_min_width(const CombinedConfig& c) {
 
 double combined_shading_budget(const CombinedConfig& c) { return std::max(0.0, c.max_error - 0.5); }
 
+double dropped_specular_levels(const CombinedConfig& c, double shading_budget, std::size_t lights) {
+  if (!(c.automatic || c.rule == TriangleRule::bound) || lights == 0) return c.negligible_specular;
+  return std::min(c.negligible_specular, std::max(0.0, shading_budget) / double(lights));
+}
+
+double phong_float_error_bound(const Scene& s) {
+  double worst = 0.0;
+  for (const Material& m : s.materials) {
+    double sum = 0.0;
+    for (const Light& l : s.lights) {
+      double largest = 0.0;
+      for (int c = 0; c < 3; ++c)
+        largest = std::max(largest, double(l.color[c]) * (double(m.diffuse[c]) + double(m.specular[c]) * (double(m.shininess) + 1.0)));
+      sum += largest;
+    }
+    worst = std::max(worst, sum);
+  }
+  return 64.0 * 0x1p-24 * 255.0 * worst;
+}
+
 std::string combined_name(const CombinedConfig& c) {
   return c.automatic ? "combined:auto" : "combined:" + std::to_string(c.k);
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <regex>
+#include <stdexcept>
 
 #include "parashade/errors.hpp"
 #include "parashade/minimax.hpp"
@@ -225,17 +226,22 @@ const std::vector<PolyApprox> kArccosFixed = {
     {"0.96-1 (sqrt(1-x) q(x))", {1.55905524, -0.17183946, 0.0269977955}, 0.96, 1.0},
 };
 
+// Piece i of the table at a in [0, 1] (the last piece of the fixed table is sqrt(1 - a) q(a)), clamped at 0.
+double table_piece(const std::vector<PolyApprox>& table, std::size_t i, double a, bool sqrt_last) {
+  double v = eval_poly(table[i].coeffs, a);
+  if (sqrt_last && i + 1 == table.size()) v *= std::sqrt(1.0 - a);
+  return std::max(0.0, v);
+}
+
 double table_arccos(const std::vector<PolyApprox>& table, double x, bool sqrt_last) {
   const double a = std::fabs(std::min(1.0, std::max(-1.0, x)));
   double v = 0.0;
   for (std::size_t i = 0; i < table.size(); ++i) {
     if (a <= table[i].hi || i + 1 == table.size()) {
-      v = eval_poly(table[i].coeffs, a);
-      if (sqrt_last && i + 1 == table.size()) v *= std::sqrt(1.0 - a);
+      v = table_piece(table, i, a, sqrt_last);
       break;
     }
   }
-  v = std::max(0.0, v);
   return x < 0 ? 3.14159265358979323846 - v : v;  // acos(-x) = pi - acos(x)
 }
 
@@ -269,6 +275,13 @@ double arccos_approx(Arccos a, double x) {
     case Arccos::table_fixed: return table_arccos(kArccosFixed, x, true);
   }
   return 0.0;
+}
+
+double arccos_piece(Arccos a, std::size_t piece, double x) {
+  const bool fixed = a == Arccos::table_fixed;
+  const std::vector<PolyApprox>& table = fixed ? kArccosFixed : kArccosSource;
+  if (a == Arccos::exact || piece >= table.size()) throw std::invalid_argument("arccos_piece: no such table piece");
+  return table_piece(table, piece, std::min(1.0, std::max(0.0, x)), fixed);
 }
 
 const std::vector<PolyApprox>& bisector_polys() { return kBisector; }

@@ -355,7 +355,8 @@ MovingLimit moving_psi_limit(const Scene& s, const ScreenGeometry& g, std::size_
 struct ChoiceTables {
   std::vector<double> key;
   std::vector<float> psi;  // psi limits per material and (terminator, specular) class
-  std::vector<double> thresholds;  // negligible_cosines per (material, light)
+  double dropped = 0.0;  // what a specular term the mask drops may add (dropped_specular_levels)
+  std::vector<double> thresholds;  // negligible_cosines of `dropped` per (material, light)
   // Levels per unit of a light's diffuse and specular term, largest channel, per (material, light).
   std::vector<double> diffuse_levels, specular_levels;
   // Per material: x^n on [0, 1], and the chord bound of the specular term (n); beyond pi/2 the bound is 1.
@@ -368,7 +369,8 @@ struct ChoiceTables {
 
 std::shared_ptr<const ChoiceTables> choice_tables(const Scene& s, const CombinedConfig& c, double shading_budget) {
   const bool bound = c.rule == TriangleRule::bound;
-  std::vector<double> key = {double(bound), double(c.automatic), shading_budget, c.negligible_specular,
+  const double dropped = dropped_specular_levels(c, shading_budget, s.lights.size());
+  std::vector<double> key = {double(bound), double(c.automatic), shading_budget, dropped,
                              double(uses_highlight_mask(c)), double(s.materials.size()), double(s.lights.size())};
   for (const Material& m : s.materials) key.insert(key.end(), {m.shininess, m.diffuse.r, m.diffuse.g, m.diffuse.b,
                                                               m.specular.r, m.specular.g, m.specular.b});
@@ -381,16 +383,17 @@ std::shared_ptr<const ChoiceTables> choice_tables(const Scene& s, const Combined
   }
   auto t = std::make_shared<ChoiceTables>();
   t->key = std::move(key);
-  // Specular terms the mask drops add up to negligible_specular each.
+  // Specular terms the mask drops add up to `dropped` each.
   const double segment_budget =
-      std::max(0.0, shading_budget - (uses_highlight_mask(c) ? c.negligible_specular * double(s.lights.size()) : 0.0));
+      std::max(0.0, shading_budget - (uses_highlight_mask(c) ? dropped * double(s.lights.size()) : 0.0));
   t->psi.assign(s.materials.size() * 4, 0.0f);
   if (c.automatic)
     for (std::size_t mi = 0; mi < s.materials.size(); ++mi)
       for (int cls = 0; cls < 4; ++cls)
         t->psi[4 * mi + cls] =
             bound || cls == 3 ? float(psi_limit(s, s.materials[mi], segment_budget, {bool(cls & 1), bool(cls & 2)})) : 0.0f;
-  t->thresholds = negligible_cosines(s, c.negligible_specular);
+  t->dropped = dropped;
+  t->thresholds = negligible_cosines(s, dropped);
   for (const Material& m : s.materials)
     for (const Light& l : s.lights) {
       double d = 0.0, sp = 0.0;
@@ -588,8 +591,8 @@ class RangeChooser {
       for (std::size_t i = 0; i < lights; ++i)
         if (terms.light[i].max_n_dot_h > threshold[i]) mask |= 1u << i;
     }
-    // A light whose specular term the mask drops adds at most negligible_specular.
-    double expected = f_.c.negligible_specular * double(lights - std::size_t(__builtin_popcount(mask)));
+    // A light whose specular term the mask drops adds at most tables_.dropped.
+    double expected = tables_.dropped * double(lights - std::size_t(__builtin_popcount(mask)));
     bool fits = terms.usable && !tri.clipped && expected <= shading_budget;
     for (std::size_t i = 0; i < lights && fits; ++i) {
       if (!(mask & (1u << i))) continue;
@@ -670,7 +673,7 @@ class RangeChooser {
     const glm::dvec3 n0(g.normal[idx.x]), n1(g.normal[idx.y]), n2(g.normal[idx.z]);
     const double kernel_change = glm::length(((n1 - n0) * e2.y - (n2 - n0) * e1.y) * (1.0 / det));
     const double budget =
-        f_.shading_budget - f_.c.negligible_specular * double(lights - std::size_t(__builtin_popcount(mask)));
+        f_.shading_budget - tables_.dropped * double(lights - std::size_t(__builtin_popcount(mask)));
     return moving_psi_limit(f_.s, g, tri.t, terms_, mask, budget, &tables_.diffuse_levels[mat * lights],
                             &tables_.specular_levels[mat * lights], tables_.curvature[mat], tables_.slope[mat],
                             kernel_change, dpdx);
@@ -732,7 +735,7 @@ TriangleChooser::TriangleChooser(const Scene& s, const ScreenGeometry& g, const 
   fit_constants.diffuse_chord = &diffuse_chord_lanes;
   fit_constants.curvature = tables.curvature.data();
   fit_constants.slope = tables.slope.data();
-  fit_constants.negligible_specular = float(c.negligible_specular);
+  fit_constants.negligible_specular = float(tables.dropped);
   fit_constants.budget = float(shading_budget);
 }
 

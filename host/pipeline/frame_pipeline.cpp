@@ -314,7 +314,7 @@ void FramePipeline::setup(const Scene& scene, const FrameRecords& out, const std
       s.highlight = {s.choice->triangles, s.choice->without_highlight, s.choice->light_terms_skipped};
   } else if (method == Method::combined && config.combined.highlight_test) {
     s.highlight = mark_highlights(scene, geometry_, out.attributes, PHONG_ATTR_FLOATS, PHONG_HIGHLIGHT_SLOT,
-                                  config.combined.negligible_specular);
+                                  dropped_specular_levels(config.combined, budget, scene.lights.size()));
   }
   if (config.dda_coverage) {
     dda_ = apply_dda_coverage(geometry_, out.triangles, out.attributes, out.fixed);

@@ -35,6 +35,14 @@ void check_sizes(const RenderedImage& image, const std::vector<std::uint8_t>& re
   }
 }
 
+bool is_flipped(const std::vector<std::uint8_t>& flipped, std::size_t p) { return !flipped.empty() && flipped[p] != 0; }
+
+// ", 4 front-surface flips (float depth ties, not compared)" when there are any.
+std::string front_surface_note(const ErrorMetrics& e) {
+  if (e.front_surface_mismatch == 0) return "";
+  return ", " + std::to_string(e.front_surface_mismatch) + " front-surface flips (float depth ties, not compared)";
+}
+
 }  // namespace
 
 const char* metrics_status_name(MetricsStatus s) {
@@ -51,7 +59,7 @@ std::string describe_error(const ErrorMetrics& e) {
   if (e.status == MetricsStatus::nothing_compared) {
     std::snprintf(buf, sizeof buf, "no pixel covered by both (NMSE, PSNR, max and mean undefined), %llu coverage mismatches",
                   (unsigned long long)e.coverage_mismatch);
-    return buf;
+    return buf + front_surface_note(e);
   }
   char psnr[32];
   if (e.status == MetricsStatus::identical) std::snprintf(psnr, sizeof psnr, "exact");
@@ -59,7 +67,7 @@ std::string describe_error(const ErrorMetrics& e) {
   std::snprintf(buf, sizeof buf, "NMSE %.3g, PSNR %s, max %.2f, mean %.3f levels, %llu px > 1 level, %llu coverage mismatches",
                 e.nmse, psnr, e.max_abs, e.mean_abs, (unsigned long long)e.pixels_over_1_level,
                 (unsigned long long)e.coverage_mismatch);
-  return buf;
+  return buf + front_surface_note(e);
 }
 
 glm::dvec3 channel_errors(const RenderedImage& image, std::size_t pixel, const glm::dvec3& reference) {
@@ -67,11 +75,11 @@ glm::dvec3 channel_errors(const RenderedImage& image, std::size_t pixel, const g
 }
 
 std::vector<double> pixel_errors(const RenderedImage& image, const std::vector<std::uint8_t>& ref_covered,
-                                 const std::vector<glm::dvec3>& ref_values) {
+                                 const std::vector<glm::dvec3>& ref_values, const std::vector<std::uint8_t>& flipped) {
   check_sizes(image, ref_covered, ref_values, "per-pixel error");
   std::vector<double> errors(ref_values.size(), std::numeric_limits<double>::quiet_NaN());
   for (std::size_t p = 0; p < errors.size(); ++p) {
-    if (!image.covered(p) || ref_covered[p] == 0) continue;
+    if (!image.covered(p) || ref_covered[p] == 0 || is_flipped(flipped, p)) continue;
     const glm::dvec3 e = channel_errors(image, p, ref_values[p]);
     errors[p] = std::max({e.x, e.y, e.z});
   }
@@ -79,19 +87,24 @@ std::vector<double> pixel_errors(const RenderedImage& image, const std::vector<s
 }
 
 ErrorMetrics compare_to_reference(const RenderedImage& image, const std::vector<std::uint8_t>& ref_covered,
-                                  const std::vector<glm::dvec3>& ref_values,
-                                  const std::string& reference_name) {
+                                  const std::vector<glm::dvec3>& ref_values, const std::string& reference_name,
+                                  const std::vector<std::uint8_t>& flipped) {
   check_sizes(image, ref_covered, ref_values, reference_name);
   const std::size_t pixels = ref_values.size();
+  if (!flipped.empty() && flipped.size() != pixels)
+    throw InputError("compare_to_reference: the front-surface flips and the reference '" + reference_name + "' differ in size");
 
   ErrorMetrics m;
   m.reference = reference_name;
   glm::dvec3 ref_sum(0.0), ref_first(0.0);
   bool ref_constant = true;  // decided exactly, not from a rounded spread
+  // Compared: covered by both and showing the reference's front surface.
+  const auto compared = [&](std::size_t p) { return image.covered(p) && ref_covered[p] != 0 && !is_flipped(flipped, p); };
   for (std::size_t p = 0; p < pixels; ++p) {
     const bool in_image = image.covered(p), in_ref = ref_covered[p] != 0;
     if (in_image != in_ref) ++m.coverage_mismatch;
-    if (in_image && in_ref) {
+    if (in_image && in_ref && is_flipped(flipped, p)) ++m.front_surface_mismatch;
+    if (compared(p)) {
       if (m.pixels_compared++ == 0) ref_first = ref_values[p];
       ref_constant = ref_constant && ref_values[p] == ref_first;
       ref_sum += ref_values[p];
@@ -108,7 +121,7 @@ ErrorMetrics compare_to_reference(const RenderedImage& image, const std::vector<
   const glm::dvec3 ref_mean = ref_sum / double(m.pixels_compared);
   double error_sq = 0.0, spread_sq = 0.0, abs_sum = 0.0;
   for (std::size_t p = 0; p < pixels; ++p) {
-    if (!image.covered(p) || ref_covered[p] == 0) continue;
+    if (!compared(p)) continue;
     const glm::dvec3 diff = ref_values[p] - image_value(image, p);
     const glm::dvec3 spread = ref_values[p] - ref_mean;
     const glm::dvec3 abs_diff = channel_errors(image, p, ref_values[p]);

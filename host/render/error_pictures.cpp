@@ -9,8 +9,8 @@ namespace parashade {
 
 StagedFile stage_error_map(const std::filesystem::path& path, const RenderedImage& image,
                            const std::vector<std::uint8_t>& covered, const std::vector<glm::dvec3>& reference,
-                           std::vector<std::string>& lines) {
-  const std::vector<double> errors = pixel_errors(image, covered, reference);
+                           const std::vector<std::uint8_t>& flipped, std::vector<std::string>& lines) {
+  const std::vector<double> errors = pixel_errors(image, covered, reference, flipped);
   StagedFile file = stage_image(path, error_map_image(errors, image.width, image.height));
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.2f", error_scale_top(errors));

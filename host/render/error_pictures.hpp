@@ -13,10 +13,10 @@
 
 namespace parashade {
 
-// The error map of `image` against `reference` (values in levels; `covered` as compare_to_reference
-// takes it) staged at `path`; `lines` receives what was written and the scale's top.
+// The error map of `image` against `reference` (values in levels; `covered` and `flipped` as
+// compare_to_reference takes them) staged at `path`; `lines` receives what was written and the scale's top.
 StagedFile stage_error_map(const std::filesystem::path& path, const RenderedImage& image,
                            const std::vector<std::uint8_t>& covered, const std::vector<glm::dvec3>& reference,
-                           std::vector<std::string>& lines);
+                           const std::vector<std::uint8_t>& flipped, std::vector<std::string>& lines);
 
 }  // namespace parashade

@@ -26,7 +26,7 @@ std::vector<StagedFile> stage_pictures(const RenderOutputs& o, const RenderResul
     lines.push_back("reference image " + o.reference_image.string() + ": " + name);
   }
   if (!o.error_map.empty()) {
-    files.push_back(stage_error_map(o.error_map, r.image, ref.covered, values, lines));
+    files.push_back(stage_error_map(o.error_map, r.image, ref.covered, values, front_surface_flips(r.image, ref), lines));
     lines.back() += ", against " + name;
   }
   if (!o.triangle_map.empty()) {

@@ -1,8 +1,10 @@
 // A render request resolved once (render_step.hpp): the options checked against the table, the scene at
 // its rendered size, the files checked, the devices opened, the tuned entry and the default tile applied.
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 
+#include "parashade/combined.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/render_step.hpp"
 #include "parashade/scene_files.hpp"
@@ -94,6 +96,23 @@ void resolve_layout(ResolvedRender& r) {
     r.options.plan->units = std::max(1, r.devices.front()->info().compute_units);
 }
 
+// A budget below its floor (issue 46, item 18) is said, not refused: the 8-bit rounding plus float Phong's
+// own error, which no choice of methods can remove.
+void note_error_floor(ResolvedRender& r) {
+  const CombinedConfig& c = r.options.combined;
+  if (r.request.quiet || r.options.method != Method::combined || !(c.automatic || c.rule == TriangleRule::bound)) return;
+  const double phong = phong_float_error_bound(r.scene), floor = 0.5 + phong;
+  if (!(c.max_error < floor)) return;
+  char text[480];
+  std::snprintf(text, sizeof text,
+                "parashade: note: --max-error %.3g is below its floor on this scene, %.3g levels: the 8-bit rounding "
+                "(0.5) plus float Phong's own error (at most %.3g levels here, docs/error-bounds.md). The budget "
+                "bounds the distance to Phong's float image; against ideal Phong the image may be off by that much "
+                "more, as --method phong's is",
+                c.max_error, floor, phong);
+  r.notes.push_back(text);
+}
+
 }  // namespace
 
 void check_render_options(const RenderOptions& options, DeviceMode mode) {
@@ -120,6 +139,7 @@ ResolvedRender resolve_render(RenderRequest request, CommandFiles& files) {
   open_devices_for(r, selector);
   if (r.mode == DeviceMode::one || r.mode == DeviceMode::unit_sub_devices) apply_tuned(r);
   resolve_layout(r);
+  note_error_floor(r);
   return r;
 }
 

@@ -2,24 +2,13 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <sstream>
 #include <string>
 
 #include "parashade/errors.hpp"
 #include "parashade/scene.hpp"
+#include "short_number.hpp"
 
 namespace parashade {
-
-namespace {
-
-std::string short_number(double v) {
-  std::ostringstream s;
-  s.precision(3);
-  s << v;
-  return s.str();
-}
-
-}  // namespace
 
 Scene scene_for_mesh(const std::filesystem::path& mesh_path) {
   MeshLoadStats stats;
@@ -32,7 +21,11 @@ Scene scene_for_mesh(const std::filesystem::path& mesh_path) {
   const glm::dvec3 centre = 0.5 * (lo + hi);
   double radius = 0.0;
   for (const glm::vec3& p : mesh->positions) radius = std::max(radius, glm::distance(glm::dvec3(p), centre));
-  if (!(radius > 0.0)) radius = 1.0;  // a single point: any distance will do
+  // Every vertex at one point: no triangle has an area, nothing can be drawn (it rendered an empty image
+  // without a word, while a merely tiny mesh is refused below: issue 46, item 17).
+  if (!(radius > 0.0))
+    throw InputError("'" + mesh_path.string() + "': every vertex of the mesh lies at one point (" + short_number(centre.x) +
+                     ", " + short_number(centre.y) + ", " + short_number(centre.z) + "): nothing to frame or draw");
 
   Scene scene;
   if (std::string w = mesh_load_warning(mesh_path.string(), stats); !w.empty()) scene.warnings.push_back(std::move(w));

@@ -8,7 +8,6 @@
 #include <optional>
 #include <tuple>
 #include <memory>
-#include <sstream>
 #include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -19,6 +18,7 @@
 #include "parashade/scene.hpp"
 #include "parashade/scene_files.hpp"
 #include "parashade/shapes.hpp"
+#include "short_number.hpp"
 
 namespace parashade {
 
@@ -42,6 +42,21 @@ double non_negative(const JsonValue& v) {
   const double x = v.number();
   if (x < 0.0) v.fail("must be >= 0 (got " + v.dump() + ")");
   return x;
+}
+
+// The brightest light (colour x intensity), material coefficient or ambient light taken, per channel. The
+// kernels shade in single precision with 255 x each: a light of 3e38 made inf, then NaN (inf x 0), and an
+// all-black image where the reference is white (issue 46, item 17). With every factor at most 1e6 (a million
+// times white), a pixel's sum over lights and a plane's values across 4096 pixels stay far below 3.4e38.
+constexpr double kBrightest = 1e6;
+
+// `value` (the product of `factor` and `colour`, in double: it may pass float's range) within kBrightest,
+// else `where` fails naming `what`.
+void check_brightness(const JsonValue& where, double factor, const glm::vec3& colour, const std::string& what) {
+  const double largest = factor * double(std::max({colour.x, colour.y, colour.z}));
+  if (!(largest <= kBrightest))
+    where.fail(what + " reaches " + short_number(largest) + ", beyond the " + short_number(kBrightest) +
+               " that single-precision shading can take (255 times it must stay finite through every sum)");
 }
 
 // A direction, normalized in double precision: any non-zero float vector has a unit direction (in float a
@@ -272,10 +287,11 @@ Light read_light(const JsonValue& v) {
     light.position = l.required("position").vec3();
   glm::vec3 color(1.0f);
   if (const auto x = l.optional("color")) color = x->color();
-  float intensity = 1.0f;
-  if (const auto x = l.optional("intensity")) intensity = float(non_negative(*x));
-  light.color = color * intensity;
+  double intensity = 1.0;
+  if (const auto x = l.optional("intensity")) intensity = non_negative(*x);
   l.finish();
+  check_brightness(v, intensity, color, "the light's colour x intensity");
+  light.color = color * float(intensity);
   return light;
 }
 
@@ -287,17 +303,24 @@ Material read_material(const std::string& name, const JsonValue& v) {
   glm::vec3 color(1.0f), specular_color(1.0f);
   if (const auto x = m.optional("color")) color = x->color();
   if (const auto x = m.optional("specular_color")) specular_color = x->color();
-  auto coefficient = [&](const char* key, float fallback) {
+  auto coefficient = [&](const char* key, double fallback) {
     const auto x = m.optional(key);
-    return x ? float(non_negative(*x)) : fallback;
+    return x ? non_negative(*x) : fallback;
   };
-  const float ka = coefficient("ka", 0.1f), kd = coefficient("kd", 0.7f), ks = coefficient("ks", 0.5f);
-  mat.ambient = ka * color;
-  mat.diffuse = kd * color;
-  mat.specular = ks * specular_color;
-  if (const auto x = m.optional("ambient")) mat.ambient = x->color();
-  if (const auto x = m.optional("diffuse")) mat.diffuse = x->color();
-  if (const auto x = m.optional("specular")) mat.specular = x->color();
+  const double ka = coefficient("ka", 0.1f), kd = coefficient("kd", 0.7f), ks = coefficient("ks", 0.5f);
+  // Each product checked in double first: in float it may already be inf.
+  const auto product = [&](const char* key, double k, const glm::vec3& c) {
+    if (const auto x = m.optional(key)) {
+      const glm::vec3 given = x->color();
+      check_brightness(v, 1.0, given, std::string("the ") + key + " colour");
+      return given;
+    }
+    check_brightness(v, k, c, std::string("the ") + key + " colour");
+    return float(k) * c;
+  };
+  mat.ambient = product("ambient", ka, color);
+  mat.diffuse = product("diffuse", kd, color);
+  mat.specular = product("specular", ks, specular_color);
   if (const auto x = m.optional("n")) mat.shininess = float(positive(*x));
   m.finish();
   return mat;
@@ -371,7 +394,10 @@ Scene read_scene(const nlohmann::json& doc, const std::filesystem::path& path,
   }
   if (size) std::tie(scene.width, scene.height) = *size;  // budgeted below at the size it will be rendered
   if (const auto x = top.optional("background")) scene.background = x->color();
-  if (const auto x = top.optional("ambient")) scene.ambient_light = x->color();
+  if (const auto x = top.optional("ambient")) {
+    scene.ambient_light = x->color();
+    check_brightness(*x, 1.0, scene.ambient_light, "the ambient light");
+  }
   if (const auto x = top.optional("camera")) scene.camera = read_camera(*x);
   if (const auto x = top.optional("lights"))
     for (const JsonValue& l : x->array()) scene.lights.push_back(read_light(l));

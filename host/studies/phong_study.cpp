@@ -246,11 +246,12 @@ void study_arccos(Study& st) {
   for (std::size_t i = 0; i < arccos_table_source().size(); ++i) {
     const PolyApprox& p = arccos_table_source()[i];
     const double hi = p.hi >= 1.0 ? 1.0 - 1e-9 : p.hi;
+    // Each interval by its own piece, its shared ends included (the lookup would take the lower piece there).
     auto rel_src = [&](double x) {
-      return std::fabs(arccos_approx(Arccos::table_source, x) - std::acos(x)) / std::acos(x);
+      return std::fabs(arccos_piece(Arccos::table_source, i, x) - std::acos(x)) / std::acos(x);
     };
     auto rel_fix = [&](double x) {
-      return std::fabs(arccos_approx(Arccos::table_fixed, x) - std::acos(x)) / std::acos(x);
+      return std::fabs(arccos_piece(Arccos::table_fixed, i, x) - std::acos(x)) / std::acos(x);
     };
     double rs = 0, rf = 0;
     for (int k = 0; k <= 20000; ++k) {

@@ -41,6 +41,10 @@ class Counter {
       events_.saturated_loads += load_saturates(plane_value(p.ref[c], p.ddx[c], p.ddy[c], xl, dy), arith_);
       events_.saturated_loads += load_saturates(plane_value(p.ref[c], p.ddx[c], p.ddy[c], xr, dy), arith_);
       events_.saturated_loads += load_saturates(p.ddx[c], arith_);
+      // A sierpinski copy's adder takes an offset register too (sierpinski_leaf.h: I(P) - I(P - D), or
+      // I(P) + I(C - P) for a reflected copy, up to twice the span's values): saturated, every pixel of the
+      // copy's span is off by what it lost, too little to count as a wrap (issue 46, item 16).
+      if (leaf && !leaf->shaded) events_.saturated_loads += load_saturates(leaf->offset[c], arith_);
       const SpanTrace t = run_unit(unit_, arith_, load_span(p, c, xl, xr, dy, unit_, arith_, leaf, division_));
       for (int i = 0; i < int(t.values.size()); ++i) {
         const double exact = std::ldexp(double(exact_plane_value(p, c, xl + i, dy, leaf)), -PLANE_FRAC);

@@ -2,6 +2,7 @@
 // Combined Gouraud/Phong shading on digital segments ([Romanyuk & Romanyuk, combined shading], docs/combined.md): exact Blinn–Phong
 // at the ends of segments of 2^k pixels along each span, linear interpolation inside. Here: the
 // method's parameters and the worst-case error bounds that `combined:auto` chooses k from.
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -57,6 +58,16 @@ bool uses_highlight_mask(const CombinedConfig& c);
 int combined_min_width(const CombinedConfig& c);
 // The shading error allowed to the segments: the budget minus the 8-bit image's rounding (0.5 level).
 double combined_shading_budget(const CombinedConfig& c);
+// What one specular term the highlight mask drops may add, in levels, with `lights` lights. The dropped
+// terms are charged to the shading budget (combined_shading_budget's, or a caller's), so where a budget
+// applies (combined:auto, --triangle-choice bound) their sum must fit it: negligible_specular, lowered to
+// shading_budget / lights when the lights together would pass it (24 faint lights at 0.05 each made 1.2
+// levels against a budget of 0.5). Without a budget (combined:K --highlight-test): negligible_specular.
+double dropped_specular_levels(const CombinedConfig& c, double shading_budget, std::size_t lights);
+// Float Phong's own error against its ideal in levels, at most 64u 255 sum_l max_c I_l,c (k_d,c + k_s,c (n + 1))
+// for the scene's worst material (docs/error-bounds.md, u = 2^-24). The budget holds against Phong's float
+// image, so 0.5 (the 8-bit rounding) plus this is the floor under --max-error against ideal Phong.
+double phong_float_error_bound(const Scene& s);
 
 // Worst-case |exact - chord| of one segment for a term max(0, A cos(theta - theta0))^n (A <= 1) whose
 // end normals are phi apart on a great circle, the chord linear in the angle (docs/combined.md §2).

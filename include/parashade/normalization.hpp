@@ -6,6 +6,7 @@
 // of their error) and never a NaN or Inf: where a method's formula breaks down (end normals nearly
 // equal or nearly opposite, a zero interpolated normal) it falls back and counts the pixels it did.
 // Templated on the scalar (float as the kernels, double as the reference).
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -65,6 +66,9 @@ std::vector<T> recurrence_dots_difference(T d0, T d1, T k, int length);
 double bisector_scale(BisectorScale s, double u);  // ~ 1/sqrt(2+u)
 double mid_scale(MidScale s, double r);            // ~ 1/sqrt(2(1+r))
 double arccos_approx(Arccos a, double x);          // ~ acos(x), x in [-1, 1] (odd symmetry below 0)
+// Piece `piece` of a table (table_source or table_fixed) at x in [0, 1], whichever interval x lies in: each
+// interval measured by its own piece, also at the ends it shares (arccos_approx takes the lower one there).
+double arccos_piece(Arccos a, std::size_t piece, double x);
 
 // Coefficients (c0 + c1 x + c2 x^2 + ...) and the interval each is documented for.
 struct PolyApprox {

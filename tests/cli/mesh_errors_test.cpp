@@ -75,6 +75,24 @@ TEST_F(CliMesh, MissingMeshFileIsNamed) {
   EXPECT_TRUE(nothing_written());
 }
 
+// Issue 46, item 17: a mesh whose vertices all coincide has nothing to frame or draw. A tiny one was refused
+// (too small to frame), this one rendered an empty image without a word.
+TEST_F(CliMesh, AMeshOfOnePointIsRefused) {
+  const auto mesh = input("point.obj", "v 1 2 3\nv 1 2 3\nv 1 2 3\nv 1 2 3\nf 1 2 3\nf 1 3 4\n");
+  EXPECT_TRUE(fails_with(render(mesh, {"--size", "64x48"}), kBadInput, {"point.obj", "one point"}));
+  EXPECT_TRUE(nothing_written());
+}
+
+// In a scene such a mesh is one object among others; a frame where nothing reaches the screen says so.
+TEST_F(CliMesh, AFrameWhereEveryTriangleVanishesBeforeTheScreenIsWarned) {
+  input("point.obj", "v 0 0 0\nv 0 0 0\nv 0 0 0\nf 1 2 3\n");
+  const auto scene = input("point.json", R"({"resolution": [64, 48], "objects": [{"mesh": "point.obj"}]})");
+  const RunResult r = render(scene);
+  ASSERT_TRUE(succeeds(r));
+  EXPECT_NE(r.err.find("warning: nothing drawn: none of the 1 triangles reached the screen (1 of zero area"),
+            std::string::npos) << r;
+}
+
 // An OFF whose header promises more faces than follow: OpenMesh alone would repeat the last one.
 TEST_F(CliMesh, TruncatedOffIsNamed) {
   const auto mesh = input("cut.off", "OFF\n4 4 0\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n3 0 1 2\n3 0 3 1\n");

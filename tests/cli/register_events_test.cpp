@@ -20,14 +20,14 @@ std::string ramp_obj() {
   return "v -2048 -2 0\nv 2048 -2 0\nv 2048 2 0\nv -2048 2 0\nvn 1 0 0\nvn 0 0 1\n"
          "f 1//1 2//2 3//2\nf 1//1 3//2 4//1\n";
 }
-std::string ramp_scene() {
+std::string ramp_scene(const std::string& colour = "2") {
   return R"({
   "name": "ramp",
   "resolution": [4096, 4],
   "background": [0, 0, 0],
   "camera": {"type": "orthographic", "position": [0, 0, 10], "target": [0, 0, 0], "height": 4, "near": 1, "far": 50},
   "lights": [{"type": "directional", "direction": [0, 0, -1]}],
-  "materials": {"white": {"color": [2, 2, 2], "ka": 0, "kd": 1, "ks": 0, "n": 1}},
+  "materials": {"white": {"color": [)" + colour + ", " + colour + ", " + colour + R"(], "ka": 0, "kd": 1, "ks": 0, "n": 1}},
   "objects": [{"mesh": "ramp.obj", "material": "white"}],
   "cull_backfaces": false
 })";
@@ -35,9 +35,9 @@ std::string ramp_scene() {
 
 class CliRegisterEvents : public CliTest {
  protected:
-  std::filesystem::path ramp() const {
+  std::filesystem::path ramp(const std::string& colour = "2") const {
     input("ramp.obj", ramp_obj());
-    return input("ramp.json", ramp_scene());
+    return input("ramp.json", ramp_scene(colour));
   }
   // Black pixels of the right half, where the exact intensity is 255 levels or more: a register of 9
   // integer bits holds at most 256 - 2^-F, so there only a wrap gives black.
@@ -75,6 +75,25 @@ TEST_F(CliRegisterEvents, WideEnoughRegistersReportNoneAndStayQuiet) {
   EXPECT_EQ(field(rep, "/registers/wrapped_pixels"), 0) << rep.dump(2);
   EXPECT_EQ(field(rep, "/registers/saturated_loads"), 0) << rep.dump(2);
   EXPECT_EQ(r.err.find("warning"), std::string::npos) << r;
+}
+
+// Issue 46, item 16: the sierpinski unit's copies get their values through one adder each from an offset
+// register (I(P) + I(C - P) for a point-reflected copy: up to twice the ramp's 255 levels). With 9 integer
+// bits that load saturates at 256 and the copies come out ~40 levels low; it used to count as nothing (0
+// wrapped, 0 saturated) and no warning was given.
+TEST_F(CliRegisterEvents, SierpinskiCopiesWhoseOffsetSaturatesAreCountedAndWarned) {
+  const RunResult r = render(ramp("1"), {"--units", "sierpinski", "--arith", "fixed:9.23"});
+  ASSERT_TRUE(succeeds(r));
+  const nlohmann::json rep = read_report();
+  EXPECT_EQ(field(rep, "/registers/wrapped_pixels"), 0) << rep.dump(2);
+  EXPECT_GT(field(rep, "/registers/saturated_loads"), 0) << rep.dump(2);
+  EXPECT_NE(r.err.find("warning: fixed:9.23: "), std::string::npos) << r;
+  EXPECT_NE(r.err.find("span register loads saturated"), std::string::npos) << r;
+  // The same frame with room for the offsets: nothing saturates, nothing is said.
+  const RunResult wide = render(ramp("1"), {"--units", "sierpinski", "--arith", "fixed:10.22"});
+  ASSERT_TRUE(succeeds(wide));
+  EXPECT_EQ(field(read_report(), "/registers/saturated_loads"), 0);
+  EXPECT_EQ(wide.err.find("warning"), std::string::npos) << wide;
 }
 
 TEST_F(CliRegisterEvents, FloatRendersHaveNoRegisterSection) {

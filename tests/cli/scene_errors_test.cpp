@@ -23,6 +23,24 @@ std::string sphere_scene_with(const std::string& key, const std::string& value) 
 
 using CliScene = CliTest;
 
+// Issue 46, item 17: a light of colour 3e38 overflowed single-precision shading (255 x 3e38 is inf) and gave
+// an all-black image, exit 0 and no word, where the reference is white. Too bright a light or material is
+// refused naming it; a merely bright one (1000 times white) still renders.
+TEST_F(CliScene, ALightTooBrightForSinglePrecisionIsRefused) {
+  const std::string blinding = R"([{"type": "directional", "direction": [0, 0, -1], "color": [3e38, 3e38, 3e38]}])";
+  EXPECT_TRUE(fails_with(render(input("blinding.json", sphere_scene_with("lights", blinding))), kBadInput,
+                         {"blinding.json", "lights[0]", "3e+38"}));
+  const std::string times = R"([{"type": "directional", "direction": [0, 0, -1], "color": [1, 1, 1], "intensity": 1e37}])";
+  EXPECT_TRUE(fails_with(render(input("intense.json", sphere_scene_with("lights", times))), kBadInput,
+                         {"intense.json", "lights[0]"}));
+  const std::string material = R"({"default": {"kd": 1e38}})";
+  EXPECT_TRUE(fails_with(render(input("material.json", sphere_scene_with("materials", material))), kBadInput,
+                         {"material.json", "materials.default"}));
+  EXPECT_TRUE(nothing_written());
+  const std::string bright = R"([{"type": "directional", "direction": [0, 0, -1], "intensity": 1000}])";
+  EXPECT_TRUE(succeeds(render(input("bright.json", sphere_scene_with("lights", bright)))));
+}
+
 TEST_F(CliScene, MissingFileIsNamed) {
   EXPECT_TRUE(fails_with(render(in_dir() / "absent.json"), kBadInput, {"absent.json"}));
   EXPECT_TRUE(nothing_written());

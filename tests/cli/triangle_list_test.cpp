@@ -75,6 +75,22 @@ TEST_F(CliTriangleList, ListedPixelsArePhongsTheOthersGourauds) {
   EXPECT_EQ(read_report()["triangle_choice_rule"], "list");
 }
 
+// The boundary of the range check (issue 46, "tests that bind"): of an N-triangle frame, triangle N - 1 is the
+// last one and N is one past it. With `> n` for `>= n` a list naming N rendered, exited 0 and wrote one past
+// the frame's flag array; the suite passed.
+TEST_F(CliTriangleList, TheTriangleOnePastTheLastIsRefused) {
+  ASSERT_TRUE(succeeds(listed(list("none.txt", ""))));
+  const int screen = read_report()["triangles"]["after_culling"].get<int>();
+  ASSERT_GT(screen, 10);
+  ASSERT_TRUE(succeeds(listed(list("last.txt", std::to_string(screen - 1)))));
+  std::filesystem::remove_all(out_dir());
+  std::filesystem::create_directories(out_dir());
+  EXPECT_TRUE(fails_with(listed(list("past.txt", "0 " + std::to_string(screen))), kBadInput,
+                         {"past.txt", "names triangle " + std::to_string(screen) + ", the frame has " +
+                                          std::to_string(screen)}));
+  EXPECT_TRUE(nothing_written());
+}
+
 TEST_F(CliTriangleList, BadListsAreNamed) {
   EXPECT_TRUE(fails_with(listed(in_dir() / "missing.txt"), kBadInput, {"missing.txt"}));
   EXPECT_TRUE(fails_with(listed(list("words.txt", "1 2 three")), kBadInput, {"words.txt", "three"}));

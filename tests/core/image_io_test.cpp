@@ -184,6 +184,8 @@ TEST(ImageIoChild, DISABLED_WriteUnderAFileSizeLimit) {
   try {
     if (fs::path(path).extension() == ".json")
       stage_text(path, std::string(100000, ' ')).commit();
+    else if (std::getenv("PARASHADE_CHILD_STAGE_ONLY"))
+      stage_image(path, test_image(256, 256));  // the failure must show here, before any commit()
     else
       write_image(path, test_image(256, 256));  // random pixels: far more than the limit in any format
   } catch (const InputError& e) {
@@ -194,13 +196,14 @@ TEST(ImageIoChild, DISABLED_WriteUnderAFileSizeLimit) {
   std::ofstream(message_file) << message;  // a few bytes: under the limit
 }
 
-std::string write_with_file_size_limit(rlim_t limit, const fs::path& path) {
+std::string write_with_file_size_limit(rlim_t limit, const fs::path& path, bool stage_only = false) {
   const fs::path message_file = path.parent_path().parent_path() / (path.filename().string() + ".message");
   const pid_t pid = ::fork();
   if (pid == 0) {
     ::setenv("PARASHADE_CHILD_PATH", path.c_str(), 1);
     ::setenv("PARASHADE_CHILD_MESSAGE", message_file.c_str(), 1);
     ::setenv("PARASHADE_CHILD_LIMIT", std::to_string(limit).c_str(), 1);
+    if (stage_only) ::setenv("PARASHADE_CHILD_STAGE_ONLY", "1", 1);
     const int null = ::open("/dev/null", O_WRONLY);
     if (null < 0 || ::dup2(null, 1) < 0) ::_exit(126);
     ::execl("/proc/self/exe", "/proc/self/exe", "--gtest_filter=ImageIoChild.DISABLED_WriteUnderAFileSizeLimit",
@@ -233,6 +236,37 @@ TEST_P(ImageIoFullDisk, FailedWriteKeepsTheOldFileAndLeavesNoTemporary) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Formats, ImageIoFullDisk, ::testing::Values("png", "bmp", "tga", "jpg", "tif", "exr", "ppm"));
+
+// The write path's two checks, each with a test that fails without it (issue 46, "tests that bind"): with
+// both in place, removing either one passed every test above, since the other caught the same failure.
+// stage_image's: a failed write throws from stage_image itself, before anything could commit it.
+TEST_F(ImageIo, StageImageThrowsOnAFailedWriteBeforeAnyCommit) {
+  const fs::path path = dir_ / "frame.png";
+  const std::string message = write_with_file_size_limit(8192, path, /*stage_only=*/true);
+  EXPECT_NE(message.find("cannot write " + path.string()), std::string::npos) << message;
+  EXPECT_NE(message.find(std::strerror(EFBIG)), std::string::npos) << message;
+  EXPECT_EQ(entries(), 0u);
+}
+
+// commit()'s: a staged file whose write failed is never renamed over the destination; commit() throws, the
+// previous file stays byte for byte and the temporary file goes.
+TEST_F(ImageIo, CommitOfAFailedStagedFileKeepsTheOldFile) {
+  const fs::path path = dir_ / "report.json";
+  stage_text(path, "{}\n").commit();
+  StagedFile file(path);
+  file.open_fd();
+  ASSERT_TRUE(file.pwrite_all("[1", 2, 0));
+  file.fail("No space left on device");  // as pwrite_all records a failed write
+  try {
+    file.commit();
+    ADD_FAILURE() << "commit() of a failed file did not throw";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot write " + path.string() + ": No space left on device"),
+              std::string::npos) << e.what();
+  }
+  EXPECT_EQ(file_bytes(path), "{}\n");
+  EXPECT_EQ(entries(), 1u);
+}
 
 TEST_F(ImageIo, FailedTextWriteKeepsTheOldFileAndLeavesNoTemporary) {
   const fs::path path = dir_ / "report.json";

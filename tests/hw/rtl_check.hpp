@@ -50,17 +50,25 @@ Outcome check_rtl(const Vectors& v, int lanes, int width, int fill) {
   auto ctx = std::make_unique<VerilatedContext>();
   auto m = std::make_unique<Model>(ctx.get());
   const std::uint64_t in_mask = width == 32 ? 0xffffffffull : (std::uint64_t(1) << width) - 1;
-  auto tick = [&]() {
+  // During reset the testbench already offers the first span: `ready` must stay low (the unit ignores `load`
+  // in reset, so a span taken on a high `ready` would be lost). The span is offered again after reset.
+  m->load = v.spans.empty() ? 0 : 1;
+  if (!v.spans.empty()) {
+    m->s_in = std::uint32_t(std::uint64_t(v.spans[0].start) & in_mask);
+    m->step_in = std::uint32_t(std::uint64_t(v.spans[0].step) & in_mask);
+    m->length_in = std::uint32_t(v.spans[0].length);
+  }
+  m->rst = 1;
+  for (int clock = 0; clock < 2; ++clock) {
     m->clk = 0;
     m->eval();
+    if (m->ready && o.first_error.empty())
+      o.first_error = "reset clock " + std::to_string(clock) + ": ready is high while rst is (a span offered now is dropped)";
     m->clk = 1;
     m->eval();
-  };
-  m->load = 0;
-  m->rst = 1;
-  tick();
-  tick();
+  }
   m->rst = 0;
+  m->load = 0;
 
   std::size_t next_span = 0;          // next span to offer
   std::size_t span = 0, clock = 0;    // next expected output: span, its output clock
