@@ -71,7 +71,7 @@ bool KernelVariant::defers_tiles() const {
 bool KernelVariant::stamps_apply() const {
   // Every method has them on the plain path (the combined method's segment walk reads and writes the stamps'
   // lanes a row at a time, combined_walk.h).
-  return options.stamps && !options.unit_path() && !options.span_normalize() && plan_pass == 0 && !options.float_output;
+  return options.stamps && plain_frame();
 }
 
 std::string KernelVariant::build_options() const {

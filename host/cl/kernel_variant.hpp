@@ -21,9 +21,13 @@ struct KernelVariant {
   bool plan_dynamic = false;
 
   bool need_position() const { return local_viewer || point_lights != 0; }  // per-pixel positions
-  // 4x4 stamps: the plain path only (no unit, per-span normalization, plan or float read-back), for Phong,
-  // Gouraud, flat and the combined method (its segment walk reads and writes the stamps a row at a time), where
-  // they pay (docs/pipeline.md).
+  // The plain frame: no unit, per-span normalization, plan pass or float read-back. The kernel derives the
+  // same from its macros (PLAIN_FRAME, kernels/tile_paths.h) and refuses STAMPS off it; a test ties the two.
+  bool plain_frame() const {
+    return !options.unit_path() && !options.span_normalize() && plan_pass == 0 && !options.float_output;
+  }
+  // 4x4 stamps: the plain frame only, for Phong, Gouraud, flat and the combined method (its segment walk reads
+  // and writes the stamps a row at a time), where they pay (docs/pipeline.md).
   bool stamps_apply() const;
   // Phong and the combined method on the stamps shade a tile of at least RenderOptions::deferral_threshold()
   // triangles after its walk (the combined method's Gouraud and segment triangles in the walk, its Phong ones
