@@ -209,6 +209,8 @@ std::optional<int> Renderer::deferral_threshold(const Scene& scene) const {
   return options_.deferral_threshold();
 }
 
+std::string Renderer::kernel_build() const { return kernel_() ? variant_->build_options() : std::string(); }
+
 int Renderer::work_items(int tiles) const {
   const int wanted = options_.work_items > 0 ? options_.work_items : WORK_ITEMS_PER_COMPUTE_UNIT * std::max(1, device_.info().compute_units);
   return std::max(1, std::min(tiles, wanted));

@@ -101,6 +101,7 @@ nlohmann::json one_device_report(const RenderResult& r, const std::filesystem::p
   report["tuned"] = r.tuned;
   report["work_items"] = r.work_items;
   report["defer_min_triangles"] = r.deferral ? nlohmann::json(*r.deferral) : nlohmann::json(nullptr);
+  report["kernel_build"] = r.kernel_build;
   report["triangles"] = {{"in", r.stats.geometry.triangles_in}, {"after_culling", r.stats.geometry.triangles_out}};
   report["mesh"] = {{"vertices", r.mesh_vertices},
                     {"triangles", r.mesh_triangles},

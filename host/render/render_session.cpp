@@ -86,6 +86,8 @@ std::optional<int> RenderSession::deferral_threshold() const {
   return renderer_ ? renderer_->deferral_threshold(r_.scene) : std::nullopt;
 }
 
+std::string RenderSession::kernel_build() const { return renderer_ ? renderer_->kernel_build() : std::string(); }
+
 std::vector<DeviceShare> RenderSession::shares() const { return split_ ? split_->shares() : std::vector<DeviceShare>{}; }
 
 RenderResult render(const ResolvedRender& r, const std::function<void(int, int)>& progress) {
@@ -94,6 +96,7 @@ RenderResult render(const ResolvedRender& r, const std::function<void(int, int)>
   run_frames(r, session, out, progress);
   out.work_items = session.work_items(out.stats.tiles);
   out.deferral = session.deferral_threshold();
+  out.kernel_build = session.kernel_build();
   out.shares = session.shares();
   // A split frame's bands come from several devices: no error figures in that mode.
   if (r.request.error_figures && r.mode != DeviceMode::bands)

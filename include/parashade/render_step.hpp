@@ -133,6 +133,7 @@ struct RenderResult {
   std::vector<double> frame_ms;     // the timed frames, whole
   int work_items = 0;
   std::optional<int> deferral;      // the kernel's deferral threshold, where it defers
+  std::string kernel_build;         // the frame kernel's -D options: every knob that reached it
   std::vector<DeviceShare> shares;  // a split frame
   std::optional<AgainstSummary> against;
   std::optional<ErrorFigures> errors;
@@ -157,6 +158,7 @@ class RenderSession {
   const Frame& frame(std::string* warning = nullptr);
   int work_items(int tiles) const;
   std::optional<int> deferral_threshold() const;
+  std::string kernel_build() const;
   std::vector<DeviceShare> shares() const;
 
  private:

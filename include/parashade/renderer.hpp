@@ -89,6 +89,9 @@ class Renderer : private FrameStorage {
   // A planned frame's depth keys after render() (kernels/plan_key.h: per pixel, row-major, the least
   // (depth, record index) key, PLAN_NO_KEY where nothing covers it): what sort-last ranks composite.
   std::vector<std::uint64_t> plan_keys(const Scene& scene);
+  // The -D options the last frame's kernel was built with (its variant: every knob that reached the
+  // kernel), or "" before the first frame.
+  std::string kernel_build() const;
 
  private:
   // FrameStorage: the record buffers and the tile list, mapped for the host stages (one round trip).

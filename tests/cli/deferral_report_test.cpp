@@ -42,5 +42,15 @@ TEST_F(CliDeferralReport, AskedThresholdIsReported) {
   EXPECT_EQ(report_of({"--method", "phong", "--defer-min-triangles", "5"})["defer_min_triangles"], 5);
 }
 
+// The report's kernel_build is the kernel's own -D options: a knob that reaches the kernel shows there under its
+// macro's name (-D DEFER_MIN_TRIANGLES for --defer-min-triangles), and is absent where the kernel never reads it.
+TEST_F(CliDeferralReport, TheKernelBuildNamesTheKnobsThatReachedIt) {
+  const std::string phong = report_of({"--method", "phong", "--defer-min-triangles", "5", "--tile", "32"})["kernel_build"];
+  EXPECT_NE(phong.find("-D DEFER_MIN_TRIANGLES=5"), std::string::npos) << phong;
+  EXPECT_NE(phong.find("-D TILE=32"), std::string::npos) << phong;
+  const std::string gouraud = report_of({"--method", "gouraud", "--defer-min-triangles", "5"})["kernel_build"];
+  EXPECT_EQ(gouraud.find("DEFER_MIN_TRIANGLES"), std::string::npos) << gouraud;
+}
+
 }  // namespace
 }  // namespace parashade
