@@ -7,6 +7,7 @@
 
 #include "captured_stderr.hpp"
 #include "parashade/errors.hpp"
+#include "parashade/output_file.hpp"
 #include "pocl_cache_dir.hpp"
 
 namespace parashade {
@@ -179,6 +180,7 @@ cl::Program& Device::program(const std::vector<std::string>& files, const std::s
                       "': " + cl_error_name(e.err()) + "\n--- build log ---\n" + trim(log));
   }
   compiler_output.take();  // a successful build's stray lines ("N warnings generated.") are dropped
+  reclaim_signal_cleanup();  // LLVM's handlers swallow SIGQUIT and SIGUSR1 (output_file.hpp)
   if (strict) {
     std::string log;
     try {
