@@ -94,4 +94,23 @@ class ScopedEnv {
   bool had_ = false;
 };
 
+// Removes an environment variable for this process and the children it starts, and restores it afterwards.
+class ScopedUnsetEnv {
+ public:
+  explicit ScopedUnsetEnv(const char* name) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old, had_ = true;
+    ::unsetenv(name);
+  }
+  ~ScopedUnsetEnv() {
+    if (had_) ::setenv(name_, old_.c_str(), 1);
+  }
+  ScopedUnsetEnv(const ScopedUnsetEnv&) = delete;
+  ScopedUnsetEnv& operator=(const ScopedUnsetEnv&) = delete;
+
+ private:
+  const char* name_;
+  std::string old_;
+  bool had_ = false;
+};
+
 }  // namespace parashade::testing_support

@@ -8,7 +8,7 @@
 #include "captured_stderr.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/output_file.hpp"
-#include "pocl_cache_dir.hpp"
+#include "pocl_environment.hpp"
 
 namespace parashade {
 namespace {
@@ -41,7 +41,7 @@ std::vector<Found> enumerate() {
   // (teapot Phong kernel 3.6 or 7.2 ms, per process at random, docs/pipeline.md). Pinning them
   // (POCL_AFFINITY=1, read when PoCL initializes) removes that; an explicit setting is left alone.
   ::setenv("POCL_AFFINITY", "1", 0);
-  check_pocl_cache_dir();
+  prepare_pocl_environment();
   std::vector<cl::Platform> platforms;
   try {
     cl::Platform::get(&platforms);
