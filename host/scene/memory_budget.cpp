@@ -68,6 +68,13 @@ std::string host_memory_limit_source() {
   return "half of the physical memory; " + std::string(kVariable) + " changes it, e.g. " + kVariable + "=16G";
 }
 
+void check_host_bytes(const std::string& what, std::uint64_t bytes, const std::string& holding) {
+  const std::uint64_t limit = host_memory_limit();
+  if (bytes <= limit) return;
+  throw InputError(what + ": " + holding + " would take about " + bytes_text(bytes) + " of host memory, more than the limit of " +
+                   bytes_text(limit) + " (" + host_memory_limit_source() + ")");
+}
+
 void check_host_memory(const std::string& what, const std::vector<MemoryItem>& objects, int width, int height) {
   const std::uint64_t need = estimate_host_bytes(objects, width, height), limit = host_memory_limit();
   if (need <= limit) return;

@@ -25,6 +25,10 @@ std::uint64_t host_memory_limit();
 // Where the limit came from, for messages.
 std::string host_memory_limit_source();
 
+// Throws InputError "<what>: <holding> would take about X of host memory, more than the limit of Y (...)" when
+// `bytes` exceed the limit: one allocation sized by a file's header (an image, a mesh's counts).
+void check_host_bytes(const std::string& what, std::uint64_t bytes, const std::string& holding);
+
 // Throws InputError "<what>: rendering needs about X of host memory (...), more than the limit of Y
 // (...); largest objects: ..." when the estimate exceeds the limit.
 void check_host_memory(const std::string& what, const std::vector<MemoryItem>& objects, int width, int height);
