@@ -123,6 +123,7 @@ RenderRequest render_request(const RenderArgs& a, const RenderOutputs& outputs) 
   r.warmup = a.warmup;
   r.error_figures = !a.no_error;
   r.keep_reference = outputs.pictures();
+  r.pictures = outputs.picture_options();
   r.use_tuned = !a.no_tuned && !a.explicit_config;
   r.tune_cache = a.tune_cache;
   if (!a.against.empty()) {

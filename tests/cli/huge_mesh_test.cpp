@@ -1,4 +1,4 @@
-// Issue 46, item 12: a mesh too large for the host memory limit is refused from its
+// Issue 46, items 12 and 13: a mesh or a frame too large for the host memory limit is refused from its
 // counts and sizes, before the memory is taken. Each case measures the child's peak resident memory
 // (getrusage) and its time: before the fixes a 3.9 GB sparse OBJ with a NUL on line 5 took 27 s and 4.2 GB
 // before its refusal, an OBJ of millions of triangles was loaded whole before the budget refused it, and a
@@ -87,6 +87,24 @@ TEST_F(CliHugeMesh, ABinaryPlyDeclaringMoreVerticesThanTheLimitIsRefusedFromItsH
   const RunResult r = render_mesh(mesh);
   EXPECT_TRUE(fails_with(r, kBadInput, {"many.ply", "40000000 vertices", "limit"}));
   EXPECT_LT(r.max_rss_kib, kRefusalPeakKib) << r;
+  EXPECT_TRUE(nothing_written());
+}
+
+// Item 13: --float, --reference-image, --error-map and --triangle-map hold whole frames of their own; the
+// estimate left them out (4096x4096 Phong: estimated 1.5 GiB, peak 1.96 GB). A limit the plain frame fits
+// refuses the frame with all four, naming them.
+TEST_F(CliHugeMesh, TheFrameEstimateCountsTheExtraPictures) {
+  const fs::path scene = input("ball.json", sphere_scene());
+  const ScopedEnv limit("PARASHADE_MEMORY_LIMIT", "1700M");
+  std::vector<std::string> args =
+      render_args(scene, {"--size", "4096x4096", "--method", "phong", "--float", "--reference-image",
+                          (out_dir() / "ref.exr").string(), "--error-map", (out_dir() / "map.png").string(),
+                          "--triangle-map", (out_dir() / "ids.png").string()},
+                  ErrorFigures::compute);
+  args[3] = (out_dir() / "f.exr").string();
+  const RunResult r = run_parashade(args, {}, std::chrono::seconds(120));
+  EXPECT_TRUE(fails_with(r, kBadInput, {"ball.json at 4096x4096", "limit", "--float", "--reference-image", "--error-map",
+                                        "--triangle-map"}));
   EXPECT_TRUE(nothing_written());
 }
 
