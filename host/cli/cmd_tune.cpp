@@ -186,6 +186,10 @@ class TuneRun {
       files.output("--export-kt", a_.export_kt);
     }
     const std::filesystem::path cache = a_.cache.empty() ? default_tune_cache() : std::filesystem::path(a_.cache);
+    // The default cache's folder (~/.cache/parashade) is parashade's to make: on a fresh machine the check
+    // of the outputs' folders refused it. A folder --cache names must exist.
+    std::error_code ec;
+    if (a_.cache.empty() && cache.has_parent_path() && rank() == 0) std::filesystem::create_directories(cache.parent_path(), ec);
     files.input_output("--cache", cache);
     base_ = std::make_unique<ResolvedRender>(resolve_with_option_names(request_, files));
     cache_ = std::make_unique<TuneCache>(cache);
@@ -212,6 +216,7 @@ class TuneRun {
       std::cerr << "parashade: note: refused, e.g. " << points_.refusal_example << "\n";
     if (const std::string stale = cache_->stale_entries(dev); !stale.empty() && !a_.quiet)
       std::cerr << "parashade: note: " << stale << "\n";
+    if (const std::string aside = cache_->set_aside(); !aside.empty()) std::cerr << "parashade: warning: " << aside << "\n";
   }
 
   TuneProblem problem_of(const RenderOptions& o) const {

@@ -67,6 +67,7 @@ void apply_tuned(ResolvedRender& r) {
   const DeviceInfo& dev = r.devices.front()->info();
   try {
     const TuneCache cache(path);
+    if (const std::string aside = cache.set_aside(); !aside.empty()) r.warnings.push_back(aside);
     if (const std::string stale = cache.stale_entries(dev, &*problem); !stale.empty() && !r.request.quiet)
       r.notes.push_back(stale);
     const auto best = cache.best(dev, *problem);
