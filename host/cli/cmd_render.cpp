@@ -300,7 +300,7 @@ void add_layout_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
                   "Screen tile size: " + tile_sizes_text() + " (default: " + std::to_string(TILE_MAX) +
                       " for a Gouraud or flat frame on one device that is not streamed in bands, else " +
                       std::to_string(TILE_DEFAULT) + "; a tuned entry's when there is one)")
-      ->check(CLI::IsMember(tile_sizes()));
+      ->check(tile_validator());
   cmd->add_option("--work-items", a->options.work_items,
                   "Kernel work-items, each rendering every N-th tile (0: " + std::to_string(WORK_ITEMS_PER_COMPUTE_UNIT) +
                       " per compute unit)")

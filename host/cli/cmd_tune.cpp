@@ -137,7 +137,7 @@ void check_tune_args(const TuneArgs& a, TuneStrategy strategy) {
   if (a.objective != "fastest")
     throw UsageError("--objective: unknown objective '" + a.objective +
                      "' (valid: fastest; with --max-error or --max-nmse, fastest within that error budget)");
-  if (a.max_error < 0 || a.max_error > 255) throw UsageError("--max-error must be in (0, 255] levels");
+  if (!(a.max_error >= 0 && a.max_error <= 255)) throw UsageError("--max-error must be in (0, 255] levels");  // NaN too
   if (a.max_nmse < 0 || !std::isfinite(a.max_nmse)) throw UsageError("--max-nmse must be a positive number");
   if (a.mpi && strategy == TuneStrategy::anneal)
     throw UsageError("--mpi deals a known list of candidates across the ranks; anneal chooses each candidate from the "

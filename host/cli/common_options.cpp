@@ -3,6 +3,7 @@
 #include <iostream>
 #include <regex>
 
+#include "parashade/frame_config.hpp"
 #include "parashade/report.hpp"
 #include "parashade/report_header.hpp"
 #include "parashade/scene.hpp"
@@ -45,6 +46,18 @@ CLI::Option* add_size_option(CLI::App& cmd, std::string& size) {
   const std::string most = std::to_string(kMaxResolution);
   return cmd.add_option("--size", size, "Resolution WIDTHxHEIGHT (at most " + most + "x" + most + "), overriding the scene's")
       ->check(size_validator());
+}
+
+const CLI::Validator& tile_validator() {
+  // CLI11's IsMember said only "--tile: 99999999999999999999" for a number beyond int (issue 46).
+  static const CLI::Validator v(
+      [](std::string& text) -> std::string {
+        for (const int t : tile_sizes())
+          if (text == std::to_string(t)) return "";
+        return "'" + text + "' is not a tile size: " + tile_sizes_text();
+      },
+      "16|32|64", "tile");
+  return v;
 }
 
 CLI::Validator count_list_validator(int max, bool list) {

@@ -24,6 +24,9 @@ void add_deprecated_spelling(CLI::App& cmd, CLI::Option* current, const std::str
 CLI::Option* add_size_option(CLI::App& cmd, std::string& size);
 const CLI::Validator& size_validator();
 
+// --tile: one of the tile sizes (frame_config.hpp), named in the message when not.
+const CLI::Validator& tile_validator();
+
 // A comma-separated list of integers in 1..max (e.g. --cu); `list` false: exactly one.
 CLI::Validator count_list_validator(int max, bool list);
 

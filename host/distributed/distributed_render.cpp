@@ -216,11 +216,14 @@ class RankRun {
   void read_scene() {
     mpi_.step([&] {
       std::vector<std::filesystem::path> inputs;
+      CommandFiles files;
+      if (rank_ == 0) {
+        job_.outputs.declare(files);
+        files.check_folders();  // before the scene, whose loading may take many seconds
+      }
       if (rank_ != 0 && job_.scatter_scene) return;
       scene_ = load_scene(job_.request.scene_file, inputs, job_.request.size);
       if (rank_ != 0) return;
-      CommandFiles files;
-      job_.outputs.declare(files);
       files.scene(inputs);
       files.check();
       warnings_ = scene_.warnings;

@@ -183,10 +183,8 @@ RenderedImage read_pixels(OIIO::ImageInput& in, const std::string& name) {
 }  // namespace
 
 void check_image_destination(const fs::path& path) {
-  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  check_output_folder("", path);
   std::error_code ec;
-  if (!fs::is_directory(dir, ec))
-    throw InputError("cannot write " + path.string() + ": directory '" + dir.string() + "' does not exist");
   if (fs::is_directory(path, ec)) throw InputError("cannot write " + path.string() + ": it is a directory");
   const std::string ext = lower_extension(path);
   if (ext.empty())

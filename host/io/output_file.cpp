@@ -149,6 +149,17 @@ void StagedFile::commit() {
   committed_ = true;
 }
 
+void check_output_folder(const std::string& option, const fs::path& path) {
+  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  std::error_code ec;
+  if (fs::is_directory(dir, ec)) return;
+  const std::string at = (option.empty() ? "" : option + ": ") + "cannot write " + path.string() + ": ";
+  const fs::file_status st = fs::status(dir, ec);
+  if (st.type() == fs::file_type::not_found) throw InputError(at + "directory '" + dir.string() + "' does not exist");
+  if (ec) throw InputError(at + "'" + dir.string() + "': " + ec.message());
+  throw InputError(at + "'" + dir.string() + "' is not a folder");
+}
+
 StagedFile stage_text(const fs::path& path, const std::string& text) {
   StagedFile file(path);
   file.open_fd();

@@ -140,6 +140,7 @@ ResolvedRender resolve_render(RenderRequest request, CommandFiles& files) {
   const Selector selector = selector_of(request.device);
   r.mode = mode_of(selector.text, request.options);
   check_render_options(request.options, r.mode);
+  files.check_folders();  // before the scene, whose loading may take many seconds
   std::vector<std::filesystem::path> inputs;
   r.scene = load_scene(request.scene_file, inputs, request.size);
   check_frame_memory(r.scene, request);

@@ -46,6 +46,10 @@ class StagedFile {
   std::string error_;
 };
 
+// Throws InputError "<option>: cannot write PATH: directory 'DIR' does not exist" (or "'DIR' is not a
+// folder", or the system's reason) unless the folder `path` goes into is a folder. `option` may be empty.
+void check_output_folder(const std::string& option, const std::filesystem::path& path);
+
 struct RenderedImage;  // image.hpp
 
 // write_image (image.hpp) without the final rename: the image is in the returned file's temporary()
