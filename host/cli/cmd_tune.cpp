@@ -48,6 +48,7 @@ struct TuneArgs {
   double budget_seconds = 0, max_error = 0, max_nmse = 0;  // budgets: 0 = none
   std::uint64_t seed = 2026;
   bool mpi = false, quiet = false;
+  double rank_timeout = 0;  // --mpi: the rank watchdog (off: a rank's whole search is one wait)
 };
 
 // One evaluated candidate.
@@ -494,7 +495,7 @@ int run_tune(const TuneArgs& a) {
   check_tune_args(a, parse_tune_strategy(a.strategy));
   TuneRun tune(a);
   std::unique_ptr<RankGroup> group;
-  if (a.mpi) group = RankGroup::join();
+  if (a.mpi) group = RankGroup::join(a.rank_timeout);
   return tune.run(group.get());
 }
 
@@ -534,6 +535,8 @@ Command add_tune_command(CLI::App& app) {
   cmd->add_flag("--mpi", a->mpi,
                 "Under mpirun: deal the candidates across the ranks (brute, random); rank 0 writes the merged report "
                 "and the cache");
+  add_rank_timeout_option(*cmd, a->rank_timeout, "--mpi",
+                          " (0, the default here: the others wait for the slowest rank's whole share in one call)");
   add_quiet_flag(*cmd, a->quiet);
   return {cmd, [a]() {
             return run_tune(*a);

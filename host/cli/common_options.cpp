@@ -1,5 +1,6 @@
 #include "common_options.hpp"
 
+#include <cstdlib>
 #include <iostream>
 #include <regex>
 
@@ -58,6 +59,23 @@ const CLI::Validator& tile_validator() {
       },
       "16|32|64", "tile");
   return v;
+}
+
+CLI::Option* add_rank_timeout_option(CLI::App& cmd, double& seconds, const std::string& with, const std::string& note) {
+  static const CLI::Validator seconds_validator(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (end != text.c_str() && *end == '\0' && v >= 0 && v <= 1e9) return "";
+        return "'" + text + "' is not a number of seconds from 0 (no limit) to 1e9";
+      },
+      "SECONDS", "seconds");
+  return cmd
+      .add_option("--rank-timeout", seconds,
+                  with + ": end the whole job when a rank waits longer than SECONDS in one MPI call for the others "
+                         "(a rank stopped or hung; exit 4); 0 waits forever" + note)
+      ->check(seconds_validator)
+      ->capture_default_str();
 }
 
 CLI::Validator count_list_validator(int max, bool list) {
