@@ -1,5 +1,6 @@
 #pragma once
 // Helpers shared by the test programs.
+#include <cstddef>
 #include <cstdlib>
 #include <memory>
 #include <vector>
@@ -78,6 +79,11 @@ class ScopedEnv {
     if (const char* old = std::getenv(name)) old_ = old, had_ = true;
     ::setenv(name, value.c_str(), 1);
   }
+  // Removes the variable instead (env -i's environment has no PATH).
+  ScopedEnv(const char* name, std::nullptr_t) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old, had_ = true;
+    ::unsetenv(name);
+  }
   ~ScopedEnv() {
     if (had_) {
       ::setenv(name_, old_.c_str(), 1);
@@ -87,25 +93,6 @@ class ScopedEnv {
   }
   ScopedEnv(const ScopedEnv&) = delete;
   ScopedEnv& operator=(const ScopedEnv&) = delete;
-
- private:
-  const char* name_;
-  std::string old_;
-  bool had_ = false;
-};
-
-// Removes an environment variable for this process and the children it starts, and restores it afterwards.
-class ScopedUnsetEnv {
- public:
-  explicit ScopedUnsetEnv(const char* name) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old, had_ = true;
-    ::unsetenv(name);
-  }
-  ~ScopedUnsetEnv() {
-    if (had_) ::setenv(name_, old_.c_str(), 1);
-  }
-  ScopedUnsetEnv(const ScopedUnsetEnv&) = delete;
-  ScopedUnsetEnv& operator=(const ScopedUnsetEnv&) = delete;
 
  private:
   const char* name_;

@@ -36,7 +36,7 @@ TEST_F(CliPoclEnvironment, AnEmptyPoclCacheDirRenders) {
 
 // env -i HOME=...: no PATH. PoCL's compiler runs `ld` by name to link a kernel it compiled.
 TEST_F(CliPoclEnvironment, NoPathWithAColdKernelCacheRenders) {
-  const ScopedUnsetEnv path("PATH");
+  const ScopedEnv path("PATH", nullptr);
   const ScopedEnv cache("POCL_CACHE_DIR", cold_cache().string());
   const RunResult r = render(scene_, {}, ErrorFigures::skip);
   EXPECT_TRUE(succeeds(r));
@@ -47,7 +47,7 @@ TEST_F(CliPoclEnvironment, NoPathWithAColdKernelCacheRenders) {
 // "install an OpenCL driver".
 TEST_F(CliPoclEnvironment, AnUnusableXdgCacheHomeIsNamed) {
   const fs::path file = input("plain-file", "not a folder");
-  const ScopedUnsetEnv cache("POCL_CACHE_DIR");
+  const ScopedEnv cache("POCL_CACHE_DIR", nullptr);
   const ScopedEnv xdg("XDG_CACHE_HOME", file.string());
   const RunResult r = render(scene_, {"--no-tuned"});
   EXPECT_TRUE(fails_with(r, kDeviceFailure, {"XDG_CACHE_HOME", "plain-file", "is not a folder"}));

@@ -323,7 +323,7 @@ TEST_F(CliTune, TwoRunsOnOneCacheKeepEachOthersEntries) {
 // outputs' folders are checked before the work ("directory '.../parashade' does not exist").
 TEST_F(CliTune, TheDefaultCacheFolderIsMadeOnAFreshMachine) {
   const std::filesystem::path home = out_dir() / "fresh-cache-home";
-  const ScopedUnsetEnv explicit_cache("PARASHADE_TUNE_CACHE");
+  const ScopedEnv explicit_cache("PARASHADE_TUNE_CACHE", nullptr);
   const ScopedEnv xdg("XDG_CACHE_HOME", home.string());
   std::vector<std::string> args = {"tune", scene_.string(), "--report", report().string(), "--frames", "1", "-q",
                                    "--param", "tile=32", "--param", "work_items=0", "--param", "partition=none"};
