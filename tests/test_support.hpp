@@ -1,5 +1,6 @@
 #pragma once
 // Helpers shared by the test programs.
+#include <cstddef>
 #include <cstdlib>
 #include <memory>
 #include <vector>
@@ -77,6 +78,11 @@ class ScopedEnv {
   ScopedEnv(const char* name, const std::string& value) : name_(name) {
     if (const char* old = std::getenv(name)) old_ = old, had_ = true;
     ::setenv(name, value.c_str(), 1);
+  }
+  // Removes the variable instead (env -i's environment has no PATH).
+  ScopedEnv(const char* name, std::nullptr_t) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old, had_ = true;
+    ::unsetenv(name);
   }
   ~ScopedEnv() {
     if (had_) {

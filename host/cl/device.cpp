@@ -7,7 +7,8 @@
 
 #include "captured_stderr.hpp"
 #include "parashade/errors.hpp"
-#include "pocl_cache_dir.hpp"
+#include "parashade/output_file.hpp"
+#include "pocl_environment.hpp"
 
 namespace parashade {
 namespace {
@@ -40,7 +41,7 @@ std::vector<Found> enumerate() {
   // (teapot Phong kernel 3.6 or 7.2 ms, per process at random, docs/pipeline.md). Pinning them
   // (POCL_AFFINITY=1, read when PoCL initializes) removes that; an explicit setting is left alone.
   ::setenv("POCL_AFFINITY", "1", 0);
-  check_pocl_cache_dir();
+  prepare_pocl_environment();
   std::vector<cl::Platform> platforms;
   try {
     cl::Platform::get(&platforms);
@@ -179,6 +180,7 @@ cl::Program& Device::program(const std::vector<std::string>& files, const std::s
                       "': " + cl_error_name(e.err()) + "\n--- build log ---\n" + trim(log));
   }
   compiler_output.take();  // a successful build's stray lines ("N warnings generated.") are dropped
+  reclaim_signal_cleanup();  // LLVM's handlers swallow SIGQUIT and SIGUSR1 (output_file.hpp)
   if (strict) {
     std::string log;
     try {

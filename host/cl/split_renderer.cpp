@@ -12,6 +12,17 @@
 #include "parashade/sub_devices.hpp"
 
 namespace parashade {
+namespace {
+
+// --keep-going with no device left: each named with its error (the warnings that named them as they were
+// dropped are not printed when the run fails).
+DeviceError every_device_failed(const std::vector<Device*>& devices, const std::vector<std::string>& dropped) {
+  std::string each;
+  for (std::size_t i = 0; i < devices.size(); ++i) each += (i ? "; '" : "'") + devices[i]->info().name + "': " + dropped[i];
+  return DeviceError("every device of the list failed (--keep-going has none left): " + each);
+}
+
+}  // namespace
 
 bool is_device_list(const std::string& selector) {
   return selector == "all" || selector.find(',') != std::string::npos || is_sub_device_selector(selector);
@@ -59,7 +70,7 @@ const Frame& SplitRenderer::render(const Scene& scene, std::string* warning) {
   std::vector<std::size_t> active;
   for (std::size_t i = 0; i < devices_.size(); ++i)
     if (dropped_[i].empty()) active.push_back(i);
-  if (active.empty()) throw DeviceError("every device of the list failed");
+  if (active.empty()) throw every_device_failed(devices_, dropped_);
   // Band sizes in proportion to the measured speeds (equal until every active device was measured).
   const bool measured = std::all_of(active.begin(), active.end(), [&](std::size_t i) { return speed_[i] > 0; });
   double total = 0;

@@ -23,8 +23,8 @@ namespace {
 
 struct CompareArgs {
   std::string a, b, diff, report;
-  double fail = -1;  // < 0: not given
-  bool quiet = false;
+  double fail = 0;
+  bool fail_given = false, quiet = false;
 };
 
 // A file's values as a reference in levels: the float values (clamped to [0, 255], as the metrics clamp
@@ -49,12 +49,12 @@ nlohmann::json compare_report(const CompareArgs& args, const RenderedImage& a, i
           {"channels", channels},
           {"error", to_json(m)},
           {"pixels_differing", differing},
-          {"fail_levels", args.fail >= 0 ? nlohmann::json(args.fail) : nlohmann::json()},
+          {"fail_levels", args.fail_given ? nlohmann::json(args.fail) : nlohmann::json()},
           {"passed", passed}};
 }
 
 int run_compare(const CompareArgs& args) {
-  if (args.fail != -1 && !(args.fail >= 0 && args.fail <= 255))
+  if (args.fail_given && !(args.fail >= 0 && args.fail <= 255))  // NaN fails too
     throw UsageError("--fail must be a number of levels in [0, 255]");
   CommandFiles files;
   files.input("A", args.a);
@@ -80,7 +80,7 @@ int run_compare(const CompareArgs& args) {
   const ErrorMetrics m = compare_to_reference(a, all, reference, args.b);
   const std::vector<double> errors = pixel_errors(a, all, reference);
   const std::uint64_t differing = std::uint64_t(std::count_if(errors.begin(), errors.end(), [](double e) { return e > 0; }));
-  const bool passed = args.fail < 0 || m.max_abs <= args.fail;
+  const bool passed = !args.fail_given || m.max_abs <= args.fail;
 
   std::vector<std::string> lines;
   std::optional<StagedFile> diff, report;
@@ -97,7 +97,7 @@ int run_compare(const CompareArgs& args) {
               (unsigned long long)m.pixels_compared, (unsigned long long)m.pixels_over_1_level);
   if (!args.quiet)
     for (const std::string& l : lines) std::printf("%s\n", l.c_str());
-  if (args.fail >= 0)
+  if (args.fail_given)
     std::printf("%s: max %.3f levels %s the limit %g\n", passed ? "PASS" : "FAIL", m.max_abs, passed ? "within" : "over",
                 args.fail);
   if (!args.report.empty() && !args.quiet) std::printf("wrote %s\n", args.report.c_str());
@@ -116,7 +116,9 @@ Command add_compare_command(CLI::App& app) {
       "OpenImageIO's 'idiff A B' (openimageio-tools) does much the same for those who have it.");
   cmd->add_option("a", args->a, "The image to judge")->required();
   cmd->add_option("b", args->b, "The reference image (NMSE's denominator); same size and channels as A")->required();
-  cmd->add_option("--fail", args->fail, "Exit 1 when the max error is above LEVELS (equal passes)")->type_name("LEVELS");
+  cmd->add_option("--fail", args->fail, "Exit 1 when the max error is above LEVELS (equal passes)")
+      ->type_name("LEVELS")
+      ->each([args](const std::string&) { args->fail_given = true; });
   cmd->add_option("--diff", args->diff,
                   "Write the per-pixel error (largest channel difference) as a colour map with its scale "
                   "(as render --error-map)");

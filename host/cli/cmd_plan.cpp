@@ -44,6 +44,7 @@ int run_plan(const PlanCommandArgs& a) {
   config.plan.reset();
   CommandFiles files;
   files.output("--report", a.report);
+  files.check_folders();
   std::vector<std::filesystem::path> inputs;
   const Scene scene = load_scene_at(a.scene, size, &inputs);
   files.scene(inputs);
@@ -75,7 +76,7 @@ Command add_plan_command(CLI::App& app) {
   add_size_option(*cmd, a->size);
   cmd->add_option("--tile", a->tile, "Screen tile size: " + tile_sizes_text())
       ->capture_default_str()
-      ->check(CLI::IsMember(tile_sizes()));
+      ->check(tile_validator());
   cmd->add_option("--units", a->units,
                   "The modeled unit whose clocks are the cost, as render --units takes it: " + unit_specs_help() +
                       "; default classic");

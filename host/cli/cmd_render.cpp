@@ -47,6 +47,7 @@ struct RenderArgs {
   std::string reference_image, error_map, error_reference = "ideal";  // the pictures of the error
   std::string triangle_map;  // the reference's visible triangle per pixel
   std::string distribute, rank_partition, read_scene;  // --distribute: MPI ranks (docs/distributed.md)
+  double rank_timeout = kDefaultRankTimeoutSeconds;     // --distribute: the rank watchdog
   bool no_tuned = false, explicit_config = false, keep_going = false;  // explicit: --tile, --work-items, --cu or --partition given
 };
 
@@ -123,6 +124,7 @@ RenderRequest render_request(const RenderArgs& a, const RenderOutputs& outputs) 
   r.warmup = a.warmup;
   r.error_figures = !a.no_error;
   r.keep_reference = outputs.pictures();
+  r.pictures = outputs.picture_options();
   r.use_tuned = !a.no_tuned && !a.explicit_config;
   r.tune_cache = a.tune_cache;
   if (!a.against.empty()) {
@@ -186,6 +188,7 @@ int run_distributed(const RenderArgs& a, const RenderRequest& request, const Ren
   if (!a.read_scene.empty() && a.read_scene != "every-rank" && a.read_scene != "rank-0")
     throw UsageError("unknown --read-scene '" + a.read_scene + "' (valid: every-rank, rank-0)");
   job.scatter_scene = a.read_scene == "rank-0";
+  job.rank_timeout = a.rank_timeout;
   job.request = request;
   if (job.request.options.tile_size == 0) job.request.options.tile_size = TILE_DEFAULT;
   with_option_names(job.request.options, distribute_device_mode(job.mode),
@@ -283,6 +286,7 @@ void add_device_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
   cmd->add_option("--rank-partition", a->rank_partition,
                   "--distribute sort-last: the planner's strategy for triangles to ranks: lpt (default), round-robin, "
                   "dynamic (batches of --batch)");
+  add_rank_timeout_option(*cmd, a->rank_timeout, "--distribute");
   cmd->add_option("--read-scene", a->read_scene,
                   "--distribute: every-rank (default: each rank reads the scene file) or rank-0 (rank 0 reads it and "
                   "scatters each sort-last rank its share of the triangles, or broadcasts the scene to sort-first ranks)");
@@ -299,7 +303,7 @@ void add_layout_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
                   "Screen tile size: " + tile_sizes_text() + " (default: " + std::to_string(TILE_MAX) +
                       " for a Gouraud or flat frame on one device that is not streamed in bands, else " +
                       std::to_string(TILE_DEFAULT) + "; a tuned entry's when there is one)")
-      ->check(CLI::IsMember(tile_sizes()));
+      ->check(tile_validator());
   cmd->add_option("--work-items", a->options.work_items,
                   "Kernel work-items, each rendering every N-th tile (0: " + std::to_string(WORK_ITEMS_PER_COMPUTE_UNIT) +
                       " per compute unit)")

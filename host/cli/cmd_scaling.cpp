@@ -50,6 +50,7 @@ struct ScalingArgs {
   std::string scene, units = default_units(), arith = kDefaultArith, method = "gouraud", size, device, report;
   int frames = 5, warmup = 1;
   bool float_output = false, markdown = false, quiet = false;
+  double rank_timeout = 0;  // --mpi: the rank watchdog (off: a rank's whole share is one wait)
   bool mpi = false;  // under mpirun: configurations dealt across the ranks, rank 0 merges (docs/distributed.md)
 };
 
@@ -349,7 +350,7 @@ int run_scaling(const ScalingArgs& a) {
   // --mpi: configuration i runs on rank i mod N; every step agrees across the ranks (a failure on any
   // rank stops them all), rank 0 merges the rows and writes the one report.
   std::unique_ptr<RankGroup> group;
-  if (a.mpi) group = RankGroup::join();
+  if (a.mpi) group = RankGroup::join(a.rank_timeout);
   const int rank = group ? group->rank() : 0, ranks = group ? group->size() : 1;
   const auto step = [&](const std::function<void()>& f) { step_in(group.get(), f); };
   std::unique_ptr<ResolvedRender> base;
@@ -424,6 +425,8 @@ Command add_scaling_command(CLI::App& app) {
   cmd->add_flag("--mpi", a->mpi,
                 "Under mpirun: deal the configurations across the ranks (configuration i on rank i mod N); rank 0 "
                 "writes the merged report and table (docs/distributed.md)");
+  add_rank_timeout_option(*cmd, a->rank_timeout, "--mpi",
+                          " (0, the default here: the others wait for the slowest rank's whole share in one call)");
   add_quiet_flag(*cmd, a->quiet);
   return {cmd, [a]() {
             return run_scaling(*a);

@@ -48,6 +48,7 @@ struct TuneArgs {
   double budget_seconds = 0, max_error = 0, max_nmse = 0;  // budgets: 0 = none
   std::uint64_t seed = 2026;
   bool mpi = false, quiet = false;
+  double rank_timeout = 0;  // --mpi: the rank watchdog (off: a rank's whole search is one wait)
 };
 
 // One evaluated candidate.
@@ -137,7 +138,7 @@ void check_tune_args(const TuneArgs& a, TuneStrategy strategy) {
   if (a.objective != "fastest")
     throw UsageError("--objective: unknown objective '" + a.objective +
                      "' (valid: fastest; with --max-error or --max-nmse, fastest within that error budget)");
-  if (a.max_error < 0 || a.max_error > 255) throw UsageError("--max-error must be in (0, 255] levels");
+  if (!(a.max_error >= 0 && a.max_error <= 255)) throw UsageError("--max-error must be in (0, 255] levels");  // NaN too
   if (a.max_nmse < 0 || !std::isfinite(a.max_nmse)) throw UsageError("--max-nmse must be a positive number");
   if (a.mpi && strategy == TuneStrategy::anneal)
     throw UsageError("--mpi deals a known list of candidates across the ranks; anneal chooses each candidate from the "
@@ -186,6 +187,10 @@ class TuneRun {
       files.output("--export-kt", a_.export_kt);
     }
     const std::filesystem::path cache = a_.cache.empty() ? default_tune_cache() : std::filesystem::path(a_.cache);
+    // The default cache's folder (~/.cache/parashade) is parashade's to make: on a fresh machine the check
+    // of the outputs' folders refused it. A folder --cache names must exist.
+    std::error_code ec;
+    if (a_.cache.empty() && cache.has_parent_path() && rank() == 0) std::filesystem::create_directories(cache.parent_path(), ec);
     files.input_output("--cache", cache);
     base_ = std::make_unique<ResolvedRender>(resolve_with_option_names(request_, files));
     cache_ = std::make_unique<TuneCache>(cache);
@@ -212,6 +217,7 @@ class TuneRun {
       std::cerr << "parashade: note: refused, e.g. " << points_.refusal_example << "\n";
     if (const std::string stale = cache_->stale_entries(dev); !stale.empty() && !a_.quiet)
       std::cerr << "parashade: note: " << stale << "\n";
+    if (const std::string aside = cache_->set_aside(); !aside.empty()) std::cerr << "parashade: warning: " << aside << "\n";
   }
 
   TuneProblem problem_of(const RenderOptions& o) const {
@@ -489,7 +495,7 @@ int run_tune(const TuneArgs& a) {
   check_tune_args(a, parse_tune_strategy(a.strategy));
   TuneRun tune(a);
   std::unique_ptr<RankGroup> group;
-  if (a.mpi) group = RankGroup::join();
+  if (a.mpi) group = RankGroup::join(a.rank_timeout);
   return tune.run(group.get());
 }
 
@@ -529,6 +535,8 @@ Command add_tune_command(CLI::App& app) {
   cmd->add_flag("--mpi", a->mpi,
                 "Under mpirun: deal the candidates across the ranks (brute, random); rank 0 writes the merged report "
                 "and the cache");
+  add_rank_timeout_option(*cmd, a->rank_timeout, "--mpi",
+                          " (0, the default here: the others wait for the slowest rank's whole share in one call)");
   add_quiet_flag(*cmd, a->quiet);
   return {cmd, [a]() {
             return run_tune(*a);

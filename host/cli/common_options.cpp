@@ -1,8 +1,10 @@
 #include "common_options.hpp"
 
+#include <cstdlib>
 #include <iostream>
 #include <regex>
 
+#include "parashade/frame_config.hpp"
 #include "parashade/report.hpp"
 #include "parashade/report_header.hpp"
 #include "parashade/scene.hpp"
@@ -45,6 +47,35 @@ CLI::Option* add_size_option(CLI::App& cmd, std::string& size) {
   const std::string most = std::to_string(kMaxResolution);
   return cmd.add_option("--size", size, "Resolution WIDTHxHEIGHT (at most " + most + "x" + most + "), overriding the scene's")
       ->check(size_validator());
+}
+
+const CLI::Validator& tile_validator() {
+  // CLI11's IsMember said only "--tile: 99999999999999999999" for a number beyond int (issue 46).
+  static const CLI::Validator v(
+      [](std::string& text) -> std::string {
+        for (const int t : tile_sizes())
+          if (text == std::to_string(t)) return "";
+        return "'" + text + "' is not a tile size: " + tile_sizes_text();
+      },
+      "16|32|64", "tile");
+  return v;
+}
+
+CLI::Option* add_rank_timeout_option(CLI::App& cmd, double& seconds, const std::string& with, const std::string& note) {
+  static const CLI::Validator seconds_validator(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (end != text.c_str() && *end == '\0' && v >= 0 && v <= 1e9) return "";
+        return "'" + text + "' is not a number of seconds from 0 (no limit) to 1e9";
+      },
+      "SECONDS", "seconds");
+  return cmd
+      .add_option("--rank-timeout", seconds,
+                  with + ": end the whole job when a rank waits longer than SECONDS in one MPI call for the others "
+                         "(a rank stopped or hung; exit 4); 0 waits forever" + note)
+      ->check(seconds_validator)
+      ->capture_default_str();
 }
 
 CLI::Validator count_list_validator(int max, bool list) {

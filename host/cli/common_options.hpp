@@ -24,6 +24,13 @@ void add_deprecated_spelling(CLI::App& cmd, CLI::Option* current, const std::str
 CLI::Option* add_size_option(CLI::App& cmd, std::string& size);
 const CLI::Validator& size_validator();
 
+// --tile: one of the tile sizes (frame_config.hpp), named in the message when not.
+const CLI::Validator& tile_validator();
+
+// --rank-timeout SECONDS (under mpirun: --distribute, --mpi): the rank watchdog's limit on one wait for
+// the other ranks, a number of seconds >= 0 (0: none); the default is `seconds`' value. `note` ends the help.
+CLI::Option* add_rank_timeout_option(CLI::App& cmd, double& seconds, const std::string& with, const std::string& note = "");
+
 // A comma-separated list of integers in 1..max (e.g. --cu); `list` false: exactly one.
 CLI::Validator count_list_validator(int max, bool list);
 

@@ -6,14 +6,16 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "standard_streams.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/output_file.hpp"
 #include "parashade/version.hpp"
 #include "parashade/report_header.hpp"
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv) {
   using namespace parashade;
-  install_signal_cleanup();  // SIGINT/SIGTERM: no temporary output file left behind, exit 128 + signal
   set_report_command_line(argc, argv);  // every report names it
   CLI::App app{"parashade — parallel Gouraud and Phong shading units, emulated in OpenCL and measured"};
   app.set_version_flag("--version", std::string("parashade ") + version + " (git " + git_hash + ")");
@@ -53,4 +55,12 @@ int main(int argc, char** argv) {
     std::cerr << "parashade: internal error: " << e.what() << "\n";
     return int(ExitCode::internal);
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  parashade::cli::guard_standard_streams();  // escaped; a closed stdout never taken by an output file
+  parashade::install_signal_cleanup();  // no temporary output file left behind, exit 128 + signal
+  return parashade::cli::finish_standard_output(run(argc, argv));  // printed results checked
 }

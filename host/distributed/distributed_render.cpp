@@ -175,9 +175,11 @@ std::vector<char> scatter_parts(MpiSession& mpi, const std::vector<std::vector<c
     for (const auto& p : parts) all.insert(all.end(), p.begin(), p.end());
   }
   int mine = 0;
-  MPI_Scatter(counts.data(), 1, MPI_INT, &mine, 1, MPI_INT, 0, mpi.comm);
+  mpi.collective([&] { MPI_Scatter(counts.data(), 1, MPI_INT, &mine, 1, MPI_INT, 0, mpi.comm); });
   std::vector<char> out(static_cast<std::size_t>(mine));
-  MPI_Scatterv(all.data(), counts.data(), displs.data(), MPI_CHAR, out.data(), mine, MPI_CHAR, 0, mpi.comm);
+  mpi.collective([&] {
+    MPI_Scatterv(all.data(), counts.data(), displs.data(), MPI_CHAR, out.data(), mine, MPI_CHAR, 0, mpi.comm);
+  });
   return out;
 }
 
@@ -203,7 +205,9 @@ class RankRun {
     if (sort_last_ && rank_ == 0) unpack_composite();
     double peak = peak_rss_mb();
     figures_.peak_rss_mb.resize(rank_ == 0 ? n_ : 0);
-    MPI_Gather(&peak, 1, MPI_DOUBLE, figures_.peak_rss_mb.data(), 1, MPI_DOUBLE, 0, mpi_.comm);
+    mpi_.collective([&] {
+      MPI_Gather(&peak, 1, MPI_DOUBLE, figures_.peak_rss_mb.data(), 1, MPI_DOUBLE, 0, mpi_.comm);
+    });
     // Rank 0 writes the outputs; the others wait for its word.
     mpi_.step([&] {
       if (rank_ == 0) finish(result, lines);
@@ -216,11 +220,14 @@ class RankRun {
   void read_scene() {
     mpi_.step([&] {
       std::vector<std::filesystem::path> inputs;
+      CommandFiles files;
+      if (rank_ == 0) {
+        job_.outputs.declare(files);
+        files.check_folders();  // before the scene, whose loading may take many seconds
+      }
       if (rank_ != 0 && job_.scatter_scene) return;
       scene_ = load_scene(job_.request.scene_file, inputs, job_.request.size);
       if (rank_ != 0) return;
-      CommandFiles files;
-      job_.outputs.declare(files);
       files.scene(inputs);
       files.check();
       warnings_ = scene_.warnings;
@@ -262,11 +269,13 @@ class RankRun {
       bytes = scene_to_bytes(scene_, {});
       size = bytes.size();
     });
-    MPI_Bcast(&size, 1, MPI_UINT64_T, 0, mpi_.comm);
+    mpi_.collective([&] { MPI_Bcast(&size, 1, MPI_UINT64_T, 0, mpi_.comm); });
     bytes.resize(size);
     for (std::uint64_t first = 0; first < size; first += std::uint64_t(1) << 30)
-      MPI_Bcast(bytes.data() + first, int(std::min<std::uint64_t>(size - first, std::uint64_t(1) << 30)), MPI_CHAR, 0,
-                mpi_.comm);
+      mpi_.collective([&] {
+        MPI_Bcast(bytes.data() + first, int(std::min<std::uint64_t>(size - first, std::uint64_t(1) << 30)), MPI_CHAR, 0,
+            mpi_.comm);
+      });
     mpi_.step([&] {
       std::vector<std::uint32_t> none;
       if (rank_ != 0) scene_ = scene_from_bytes(bytes, none);
@@ -282,7 +291,7 @@ class RankRun {
     owner.resize(faces_);
     for (std::size_t first = 0; first < faces_; first += std::size_t(1) << 30) {
       const int count = int(std::min<std::uint64_t>(faces_ - first, std::uint64_t(1) << 30));
-      MPI_Bcast(owner.data() + first, count, MPI_UINT16_T, 0, mpi_.comm);
+      mpi_.collective([&] { MPI_Bcast(owner.data() + first, count, MPI_UINT16_T, 0, mpi_.comm); });
     }
     mpi_.step([&] {
       share_ = share_of(scene_, owner, rank_, global_face_);
@@ -338,7 +347,7 @@ class RankRun {
   // One frame of every rank; rank 0 keeps the timed ones' figures.
   void frame(bool timed) {
     RankFigures fig;
-    MPI_Barrier(mpi_.comm);
+    mpi_.collective([&] { MPI_Barrier(mpi_.comm); });
     const double t_frame = now_ms();
     if (!sort_last_) place_band(fig);
     else if (!renderer_) mpi_.step([&] { renderer_ = std::make_unique<Renderer>(*device_, options_); });
@@ -354,10 +363,12 @@ class RankRun {
     const double t_comp = sort_last_ ? composite_keys(*frame, keys, fig) : gather_band(frame, fig);
     fig.composite_ms = now_ms() - t_comp;
     if (!sort_last_) fig.gather_ms = fig.composite_ms;  // sort-first's composite is its gather
-    MPI_Barrier(mpi_.comm);
+    mpi_.collective([&] { MPI_Barrier(mpi_.comm); });
     const double whole = now_ms() - t_frame;
     std::vector<RankFigures> gathered(rank_ == 0 ? n_ : 0);
-    MPI_Gather(&fig, kFigures, MPI_DOUBLE, gathered.data(), kFigures, MPI_DOUBLE, 0, mpi_.comm);
+    mpi_.collective([&] {
+      MPI_Gather(&fig, kFigures, MPI_DOUBLE, gathered.data(), kFigures, MPI_DOUBLE, 0, mpi_.comm);
+    });
     if (sort_last_ && rank_ == 0) count_won_pixels(gathered);
     if (timed && rank_ == 0) {
       figures_.frames.push_back(gathered);
@@ -401,15 +412,17 @@ class RankRun {
     fig.faces = double(global_face_.size());
     fig.pixels = double(covered);
     fig.pack_ms = now_ms() - t_pack;
-    MPI_Barrier(mpi_.comm);
+    mpi_.collective([&] { MPI_Barrier(mpi_.comm); });
     const double t_comp = now_ms();
     const CompositeBlocks blocks{block_, pixel_bytes_, pixel_type_, mpi_.comm, rank_, n_};
-    exchange_blocks(blocks, send_, received_);
+    mpi_.collective([&] { exchange_blocks(blocks, send_, received_); });
     reduce_received(blocks, received_, min_op_);
     const char* mine = blocks.own(received_);
     if (rank_ == 0) all_.resize(block_ * n_ * pixel_bytes_);
     const double t_gather = now_ms();
-    MPI_Gather(mine, int(block_), pixel_type_, all_.data(), int(block_), pixel_type_, 0, mpi_.comm);
+    mpi_.collective([&] {
+      MPI_Gather(mine, int(block_), pixel_type_, all_.data(), int(block_), pixel_type_, 0, mpi_.comm);
+    });
     fig.gather_ms = now_ms() - t_gather;
     // At least what leaves the rank: the other ranks' blocks of its keys, and its block to rank 0.
     fig.bytes_sent = double(pixel_bytes_) * block_ * ((n_ - 1) + (rank_ == 0 ? 0 : 1));
@@ -423,31 +436,35 @@ class RankRun {
     const int y0 = std::min(H, band_.first * options_.tile_size);
     const int y1 = std::min(H, (band_.first + band_.second) * options_.tile_size);
     fig.pixels = double(y1 - y0) * W;
-    MPI_Barrier(mpi_.comm);
+    mpi_.collective([&] { MPI_Barrier(mpi_.comm); });
     const double t_comp = now_ms();
     std::vector<int> counts(n_), displs(n_);
     const int mine_bytes = int(std::size_t(y1 - y0) * pitch);
-    MPI_Allgather(&mine_bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, mpi_.comm);
+    mpi_.collective([&] { MPI_Allgather(&mine_bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, mpi_.comm); });
     const int mine_first = int(std::size_t(y0) * pitch);
-    MPI_Allgather(&mine_first, 1, MPI_INT, displs.data(), 1, MPI_INT, mpi_.comm);
+    mpi_.collective([&] { MPI_Allgather(&mine_first, 1, MPI_INT, displs.data(), 1, MPI_INT, mpi_.comm); });
     const std::size_t pixels = std::size_t(W) * H;
     if (rank_ == 0) image_.rgba.assign(pixels * 4, 0);
     const std::uint8_t* src = frame ? frame->image.rgba.data() + mine_first : nullptr;
-    MPI_Gatherv(src, mine_bytes, MPI_BYTE, image_.rgba.data(), counts.data(), displs.data(), MPI_BYTE, 0, mpi_.comm);
+    mpi_.collective([&] {
+      MPI_Gatherv(src, mine_bytes, MPI_BYTE, image_.rgba.data(), counts.data(), displs.data(), MPI_BYTE, 0, mpi_.comm);
+    });
     fig.bytes_sent = rank_ == 0 ? 0 : mine_bytes;
     if (options_.float_output) {  // the band's unclamped RGB too: 3 floats a pixel where rgba has 4 bytes
       for (int r = 0; r < n_; ++r) counts[r] *= 3, displs[r] *= 3;
       if (rank_ == 0) image_.rgb_float.assign(pixels * 3, 0.0f);
       const char* fsrc =
           frame ? reinterpret_cast<const char*>(frame->image.rgb_float.data()) + 3 * std::size_t(mine_first) : nullptr;
-      MPI_Gatherv(fsrc, 3 * mine_bytes, MPI_BYTE, image_.rgb_float.data(), counts.data(), displs.data(), MPI_BYTE, 0,
-                  mpi_.comm);
+      mpi_.collective([&] {
+        MPI_Gatherv(fsrc, 3 * mine_bytes, MPI_BYTE, image_.rgb_float.data(), counts.data(), displs.data(), MPI_BYTE, 0,
+            mpi_.comm);
+      });
       fig.bytes_sent += rank_ == 0 ? 0 : 3.0 * mine_bytes;
     }
     // The next frame's bands: rows per ms of the shading kernel (the host stages are the whole frame's).
     const double my_speed = frame && frame->timings.kernel_ms > 0 ? band_.second / frame->timings.kernel_ms : 0;
     std::vector<double> got(n_);
-    MPI_Allgather(&my_speed, 1, MPI_DOUBLE, got.data(), 1, MPI_DOUBLE, mpi_.comm);
+    mpi_.collective([&] { MPI_Allgather(&my_speed, 1, MPI_DOUBLE, got.data(), 1, MPI_DOUBLE, mpi_.comm); });
     for (int r = 0; r < n_; ++r)
       if (got[r] > 0) speed_[r] = got[r];
     return t_comp;
@@ -541,6 +558,7 @@ namespace {
 
 class MpiRankGroup : public RankGroup {
  public:
+  explicit MpiRankGroup(double rank_timeout) : mpi_(rank_timeout) {}
   int rank() const override { return mpi_.rank; }
   int size() const override { return mpi_.size; }
   void step(const std::function<void()>& f) override {
@@ -553,11 +571,13 @@ class MpiRankGroup : public RankGroup {
   std::vector<std::string> gather(const std::string& mine) override {
     const int n = mpi_.size, bytes = int(mine.size());
     std::vector<int> counts(mpi_.rank == 0 ? n : 0), displs(counts.size());
-    MPI_Gather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, mpi_.comm);
+    mpi_.collective([&] { MPI_Gather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, mpi_.comm); });
     std::size_t total = 0;
     for (int r = 0; r < int(counts.size()); ++r) displs[r] = int(total), total += std::size_t(counts[r]);
     std::vector<char> all(total);
-    MPI_Gatherv(mine.data(), bytes, MPI_CHAR, all.data(), counts.data(), displs.data(), MPI_CHAR, 0, mpi_.comm);
+    mpi_.collective([&] {
+      MPI_Gatherv(mine.data(), bytes, MPI_CHAR, all.data(), counts.data(), displs.data(), MPI_CHAR, 0, mpi_.comm);
+    });
     std::vector<std::string> out;
     for (int r = 0; r < int(counts.size()); ++r) out.emplace_back(all.data() + displs[r], std::size_t(counts[r]));
     return out;
@@ -569,10 +589,10 @@ class MpiRankGroup : public RankGroup {
 
 }  // namespace
 
-std::unique_ptr<RankGroup> RankGroup::join() { return std::make_unique<MpiRankGroup>(); }
+std::unique_ptr<RankGroup> RankGroup::join(double rank_timeout) { return std::make_unique<MpiRankGroup>(rank_timeout); }
 
 int run_distributed_render(const DistributedRender& job, RenderResult* result, std::vector<std::string>* lines) {
-  distributed::MpiSession mpi;
+  distributed::MpiSession mpi(job.rank_timeout);
   try {
     return distributed::RankRun(mpi, job).run(result, lines);
   } catch (const distributed::RanksStopped& s) {

@@ -16,7 +16,7 @@ void set_default_env(const char* name, const std::string& value) {
 
 }  // namespace
 
-MpiSession::MpiSession() {
+MpiSession::MpiSession(double rank_timeout) {
   int ready = 0;
   MPI_Initialized(&ready);
   if (!ready) {
@@ -39,24 +39,26 @@ MpiSession::MpiSession() {
   set_default_env("POCL_MAX_PTHREAD_COUNT", std::to_string(threads_per_rank));
   set_default_env("PARASHADE_HOST_THREADS", std::to_string(threads_per_rank));
   if (local_size > 1) set_default_env("POCL_AFFINITY", "0");
+  watchdog_.start(comm, rank, size, rank_timeout);
 }
 
 MpiSession::~MpiSession() {
   int finalized = 0;
   MPI_Finalized(&finalized);
-  if (initialized_here_ && !finalized) MPI_Finalize();
+  if (initialized_here_ && !finalized) collective([] { MPI_Finalize(); });  // waits for every rank
+  watchdog_.stop();
 }
 
 void MpiSession::agree(int code, const std::string& message) {
   int worst = 0;
-  MPI_Allreduce(&code, &worst, 1, MPI_INT, MPI_MAX, comm);
+  collective([&] { MPI_Allreduce(&code, &worst, 1, MPI_INT, MPI_MAX, comm); });
   if (worst == 0) return;
   // Every rank's message to rank 0 (a fixed-size slot each), which prints one line per distinct cause.
   constexpr int kSlot = 2048;
   std::vector<char> mine(kSlot, '\0');
   if (code != 0) std::strncpy(mine.data(), message.empty() ? "failed" : message.c_str(), kSlot - 1);
   std::vector<char> all(rank == 0 ? std::size_t(kSlot) * size : 0);
-  MPI_Gather(mine.data(), kSlot, MPI_CHAR, all.data(), kSlot, MPI_CHAR, 0, comm);
+  collective([&] { MPI_Gather(mine.data(), kSlot, MPI_CHAR, all.data(), kSlot, MPI_CHAR, 0, comm); });
   if (rank == 0) {
     std::vector<std::pair<std::string, std::vector<int>>> causes;
     for (int r = 0; r < size; ++r) {

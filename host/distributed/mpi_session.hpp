@@ -9,6 +9,7 @@
 #include <mpi.h>
 
 #include "parashade/errors.hpp"
+#include "rank_watchdog.hpp"
 
 namespace parashade::distributed {
 
@@ -19,7 +20,9 @@ struct RanksStopped {
 
 class MpiSession {
  public:
-  MpiSession();
+  // `rank_timeout`: seconds a rank may wait in one MPI call for the others before the watchdog ends the
+  // whole job (0: never). A rank stopped (kill -STOP) or hung used to leave every other rank waiting forever.
+  explicit MpiSession(double rank_timeout);
   ~MpiSession();
   MpiSession(const MpiSession&) = delete;
   MpiSession& operator=(const MpiSession&) = delete;
@@ -50,9 +53,24 @@ class MpiSession {
     agree(code, message);
   }
 
+  // Runs `f`, a blocking MPI call, watched: when it waits longer than the rank timeout, the watchdog prints
+  // "rank R of N waited S s for the other ranks (--rank-timeout S) ..." and ends the job (MPI_Abort, exit 4).
+  template <typename F>
+  void collective(F&& f) {
+    const Watched watched(watchdog_);
+    f();
+  }
+
  private:
+  // While alive, this rank waits in MPI since the time it was made.
+  struct Watched {
+    explicit Watched(RankWatchdog& w) : w_(w) { w_.waiting(true); }
+    ~Watched() { w_.waiting(false); }
+    RankWatchdog& w_;
+  };
   void agree(int code, const std::string& message);
   bool initialized_here_ = false;
+  RankWatchdog watchdog_;
 };
 
 }  // namespace parashade::distributed

@@ -5,6 +5,7 @@
 
 #include "parashade/errors.hpp"
 #include "parashade/image.hpp"
+#include "parashade/output_file.hpp"
 
 namespace parashade {
 namespace {
@@ -40,10 +41,7 @@ void check_destination(const std::string& option, const fs::path& path, OutputKi
   if (const std::string what = not_regular(path); !what.empty())
     throw InputError(option + ": cannot write " + path.string() + ": it is " + what +
                      ", not a regular file (an output is written beside it and renamed over it)");
-  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec))
-    throw InputError(option + ": cannot write " + path.string() + ": directory '" + dir.string() + "' does not exist");
+  check_output_folder(option, path);
   if (kind == OutputKind::image) check_image_destination(path);
   if (kind == OutputKind::triangle_map) check_triangle_map_destination(path);
 }
@@ -66,18 +64,26 @@ void CommandFiles::input_output(const std::string& option, const fs::path& path)
   if (!path.empty()) outputs_.push_back({option, path, OutputKind::text});
 }
 
-void CommandFiles::check() const {
-  for (std::size_t i = 0; i < outputs_.size(); ++i) {
-    const File& out = outputs_[i];
+void CommandFiles::check_apart() const {
+  for (std::size_t i = 0; i < outputs_.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
-      if (same_file(outputs_[j].path, out.path))
-        throw UsageError(outputs_[j].name + " '" + outputs_[j].path.string() + "' and " + out.name + " '" +
-                         out.path.string() + "' are the same file: one would overwrite the other");
+      if (same_file(outputs_[j].path, outputs_[i].path))
+        throw UsageError(outputs_[j].name + " '" + outputs_[j].path.string() + "' and " + outputs_[i].name + " '" +
+                         outputs_[i].path.string() + "' are the same file: one would overwrite the other");
+}
+
+void CommandFiles::check_folders() const {
+  check_apart();
+  for (const File& out : outputs_) check_output_folder(out.name, out.path);
+}
+
+void CommandFiles::check() const {
+  check_apart();
+  for (const File& out : outputs_)
     for (const File& in : inputs_)
       if (same_file(in.path, out.path))
         throw UsageError(out.name + " '" + out.path.string() + "' is the input file '" + in.path.string() + "' (" +
                          in.name + "): writing it would destroy the input");
-  }
   for (const File& out : outputs_) check_destination(out.name, out.path, out.kind);
 }
 

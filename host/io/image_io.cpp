@@ -3,6 +3,7 @@
 // place, so readers never see a partial image and a failed write never replaces a good one.
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -12,12 +13,15 @@
 #include <cstdio>
 #include <cstring>
 #include <mutex>
+#include <new>
 #include <string>
 #include <system_error>
 #include <vector>
 
+#include "../scene/input_file.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/image.hpp"
+#include "parashade/memory_budget.hpp"
 #include "parashade/output_file.hpp"
 
 namespace parashade {
@@ -132,13 +136,55 @@ void write_file(StagedFile& file, const RenderedImage& image, bool as_float) {
   file.close_fd();
 }
 
+// Why OpenImageIO could not read the pixels: its own error, else the global one, else what it means
+// (a truncated PPM gave "cannot read X: " with nothing after the colon).
+std::string read_failure(OIIO::ImageInput& in) {
+  std::string why = in.geterror();
+  if (why.empty()) why = take_global_oiio_error();
+  return why.empty() ? "the pixels cannot be read (the file is truncated or corrupt)" : why;
+}
+
+// Host memory reading a file takes: its 8-bit channels and RGBA copy, and for float files the float
+// channels and the RGB levels.
+std::uint64_t image_read_bytes(const OIIO::ImageSpec& spec) {
+  const std::uint64_t n = std::uint64_t(spec.width) * std::uint64_t(spec.height), c = std::uint64_t(spec.nchannels);
+  return n * (c + 4 + (spec.format.basetype == OIIO::TypeDesc::UINT8 ? 0 : 4 * c + 12));
+}
+
+// The pixels of an opened file: 1 channel grey; 2 grey + alpha; 3 RGB; 4 or more RGBA (extra channels
+// ignored). Float files keep their unquantized values, in levels.
+RenderedImage read_pixels(OIIO::ImageInput& in, const std::string& name) {
+  const OIIO::ImageSpec& spec = in.spec();
+  const int channels = spec.nchannels;
+  RenderedImage image;
+  image.width = spec.width;
+  image.height = spec.height;
+  const std::size_t n = std::size_t(spec.width) * std::size_t(spec.height);
+  std::vector<std::uint8_t> u8(n * channels);
+  if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, u8.data())) throw InputError(name + ": " + read_failure(in));
+  image.rgba.resize(4 * n);
+  for (std::size_t p = 0; p < n; ++p) {
+    const std::uint8_t* s = &u8[p * channels];
+    const bool grey = channels < 3;
+    for (int c = 0; c < 3; ++c) image.rgba[4 * p + c] = grey ? s[0] : s[c];
+    image.rgba[4 * p + 3] = channels == 2 ? s[1] : channels >= 4 ? s[3] : 255;
+  }
+  const OIIO::TypeDesc::BASETYPE base = OIIO::TypeDesc::BASETYPE(spec.format.basetype);
+  if (base == OIIO::TypeDesc::FLOAT || base == OIIO::TypeDesc::HALF || base == OIIO::TypeDesc::DOUBLE) {
+    std::vector<float> f(n * channels);
+    if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, f.data())) throw InputError(name + ": " + read_failure(in));
+    image.rgb_float.resize(3 * n);
+    for (std::size_t p = 0; p < n; ++p)
+      for (int c = 0; c < 3; ++c) image.rgb_float[3 * p + c] = 255.0f * f[p * channels + (channels < 3 ? 0 : c)];
+  }
+  return image;
+}
+
 }  // namespace
 
 void check_image_destination(const fs::path& path) {
-  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  check_output_folder("", path);
   std::error_code ec;
-  if (!fs::is_directory(dir, ec))
-    throw InputError("cannot write " + path.string() + ": directory '" + dir.string() + "' does not exist");
   if (fs::is_directory(path, ec)) throw InputError("cannot write " + path.string() + ": it is a directory");
   const std::string ext = lower_extension(path);
   if (ext.empty())
@@ -168,54 +214,35 @@ StagedFile stage_image(const fs::path& path, const RenderedImage& image) {
 }
 
 RenderedImage read_image(const fs::path& path, int* channels_out) {
-  // OpenImageIO says only "Could not open file": open it first to give the system's reason.
+  const std::string name = "cannot read " + path.string();
+  // OpenImageIO says only "Could not open file": the system's reason first. A FIFO would block the open,
+  // /dev/zero would be read without end (issue 46, item 8): a regular file only.
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) throw InputError(name + ": " + std::strerror(errno));
+  if (S_ISDIR(st.st_mode)) throw InputError(name + ": it is a directory");
+  detail::check_input_file(path, name, detail::kMaxImageFileBytes, "raster image");
   if (std::FILE* f = std::fopen(path.c_str(), "rb")) {
     std::fclose(f);
   } else {
-    throw InputError("cannot read " + path.string() + ": " + std::strerror(errno));
+    throw InputError(name + ": " + std::strerror(errno));
   }
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) throw InputError("cannot read " + path.string() + ": it is a directory");
   auto in = OIIO::ImageInput::open(path.string());
   if (!in) {
     const std::string why = take_global_oiio_error();
-    throw InputError("cannot read " + path.string() + ": " + (why.empty() ? "unreadable image" : why));
+    throw InputError(name + ": " + (why.empty() ? "unreadable image" : why));
   }
   const OIIO::ImageSpec& spec = in->spec();
-  const int channels = spec.nchannels;
-  if (spec.width < 1 || spec.height < 1 || channels < 1)
-    throw InputError("cannot read " + path.string() + ": empty image");
-  if (channels_out) *channels_out = channels;
-
-  RenderedImage image;
-  image.width = spec.width;
-  image.height = spec.height;
-  const std::size_t n = std::size_t(spec.width) * std::size_t(spec.height);
-  std::vector<std::uint8_t> u8(n * channels);
-  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, u8.data()))
-    throw InputError("cannot read " + path.string() + ": " + in->geterror());
-
-  // 1 channel: grey; 2: grey + alpha; 3: RGB; 4 or more: RGBA (extra channels ignored).
-  image.rgba.resize(4 * n);
-  for (std::size_t p = 0; p < n; ++p) {
-    const std::uint8_t* s = &u8[p * channels];
-    const bool grey = channels < 3;
-    for (int c = 0; c < 3; ++c) image.rgba[4 * p + c] = grey ? s[0] : s[c];
-    image.rgba[4 * p + 3] = channels == 2 ? s[1] : channels >= 4 ? s[3] : 255;
+  if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1) throw InputError(name + ": empty image");
+  check_host_bytes(name, image_read_bytes(spec),
+                   "a " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + " image of " +
+                       std::to_string(spec.nchannels) + " channels");
+  if (channels_out) *channels_out = spec.nchannels;
+  try {
+    return read_pixels(*in, name);
+  } catch (const std::bad_alloc&) {
+    throw InputError(name + ": out of host memory for a " + std::to_string(spec.width) + "x" +
+                     std::to_string(spec.height) + " image");
   }
-
-  // Float files keep their unquantized values, in levels.
-  const OIIO::TypeDesc::BASETYPE base = OIIO::TypeDesc::BASETYPE(spec.format.basetype);
-  if (base == OIIO::TypeDesc::FLOAT || base == OIIO::TypeDesc::HALF || base == OIIO::TypeDesc::DOUBLE) {
-    std::vector<float> f(n * channels);
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, f.data()))
-      throw InputError("cannot read " + path.string() + ": " + in->geterror());
-    image.rgb_float.resize(3 * n);
-    for (std::size_t p = 0; p < n; ++p)
-      for (int c = 0; c < 3; ++c)
-        image.rgb_float[3 * p + c] = 255.0f * f[p * channels + (channels < 3 ? 0 : c)];
-  }
-  return image;
 }
 
 }  // namespace parashade

@@ -22,6 +22,7 @@ namespace fs = std::filesystem;
 // is `busy` while its path is written and `live` once it may be unlinked.
 constexpr int kSlots = 16;
 constexpr std::size_t kPathMax = 4096;
+constexpr std::size_t kNameMax = 255;  // NAME_MAX of Linux file systems
 enum : int { kFree = 0, kBusy = 1, kLive = 2 };
 struct Slot {
   std::atomic<int> state{kFree};
@@ -64,10 +65,15 @@ StagedFile::StagedFile(fs::path destination) : destination_(std::move(destinatio
     if (!ec) destination_ = std::move(target);
   }
   static std::atomic<unsigned> counter{0};
-  const std::string name = "." + destination_.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                           std::to_string(counter++) + destination_.extension().string();
-  temporary_ = destination_.parent_path() / name;
+  const std::string tail = ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) +
+                           destination_.extension().string();
+  // A legal name of up to 255 bytes must leave a legal temporary name: the stem is cut to fit (issue 46).
+  std::string stem = destination_.stem().string();
+  const std::size_t room = kNameMax > tail.size() + 1 ? kNameMax - tail.size() - 1 : 0;
+  if (stem.size() > room) stem.resize(room);
+  temporary_ = destination_.parent_path() / ("." + stem + tail);
   slot_ = register_temporary(temporary_);
+  reclaim_signal_cleanup();
 }
 
 StagedFile::StagedFile(StagedFile&& o) noexcept
@@ -143,6 +149,17 @@ void StagedFile::commit() {
   committed_ = true;
 }
 
+void check_output_folder(const std::string& option, const fs::path& path) {
+  const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  std::error_code ec;
+  if (fs::is_directory(dir, ec)) return;
+  const std::string at = (option.empty() ? "" : option + ": ") + "cannot write " + path.string() + ": ";
+  const fs::file_status st = fs::status(dir, ec);
+  if (st.type() == fs::file_type::not_found) throw InputError(at + "directory '" + dir.string() + "' does not exist");
+  if (ec) throw InputError(at + "'" + dir.string() + "': " + ec.message());
+  throw InputError(at + "'" + dir.string() + "' is not a folder");
+}
+
 StagedFile stage_text(const fs::path& path, const std::string& text) {
   StagedFile file(path);
   file.open_fd();
@@ -152,12 +169,42 @@ StagedFile stage_text(const fs::path& path, const std::string& text) {
   return file;
 }
 
-void install_signal_cleanup() {
+namespace {
+
+// The signals that end a run: their default would leave temporary files. SIGQUIT and SIGUSR1 are also
+// those LLVM (inside PoCL) swallows once it has registered its own handlers: it runs its cleanup for
+// SIGQUIT and returns, and prints nothing for SIGUSR1, so the render went on (issue 46). LLVM hands
+// SIGINT, SIGTERM, SIGHUP and SIGUSR2 back to the handler it found, which is ours.
+constexpr int kEndingSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2};
+constexpr int kSwallowedSignals[] = {SIGQUIT, SIGUSR1};
+std::atomic<unsigned> g_claimed{0};  // bit s: signal s is ours (not ignored when the process started)
+
+void claim(int sig) {
   struct sigaction sa {};
   sa.sa_handler = remove_temporaries_and_exit;
   sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, nullptr);
-  sigaction(SIGTERM, &sa, nullptr);
+  sigaction(sig, &sa, nullptr);
+}
+
+}  // namespace
+
+void install_signal_cleanup() {
+  for (const int sig : kEndingSignals) {
+    struct sigaction old {};
+    // A signal ignored from the start stays ignored (nohup's SIGHUP, a background job's SIGQUIT).
+    if (sig != SIGINT && sig != SIGTERM && sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) continue;
+    claim(sig);
+    g_claimed.fetch_or(1u << sig);
+  }
+}
+
+void reclaim_signal_cleanup() {
+  for (const int sig : kSwallowedSignals) {
+    struct sigaction now {};
+    if ((g_claimed.load() & (1u << sig)) && sigaction(sig, nullptr, &now) == 0 &&
+        now.sa_handler != remove_temporaries_and_exit)
+      claim(sig);
+  }
 }
 
 }  // namespace parashade

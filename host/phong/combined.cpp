@@ -7,6 +7,7 @@
 #include <fstream>
 #include <limits>
 
+#include "../scene/input_file.hpp"
 #include "parashade/errors.hpp"
 
 namespace parashade {
@@ -34,6 +35,8 @@ namespace {
 
 // list:FILE's triangles: whitespace-separated indices, each below 2^31.
 std::shared_ptr<const std::vector<std::uint32_t>> read_phong_list(const std::string& file) {
+  // Before opening: a FIFO would block, /dev/zero would fill memory (issue 46, item 9).
+  detail::check_input_file(file, "--triangle-choice list: '" + file + "'", detail::kMaxListFileBytes, "triangle list");
   std::ifstream in(file);
   if (!in) throw InputError("--triangle-choice list: cannot read '" + file + "'");
   auto listed = std::make_shared<std::vector<std::uint32_t>>();

@@ -39,6 +39,14 @@ std::vector<StagedFile> stage_pictures(const RenderOutputs& o, const RenderResul
 
 }  // namespace
 
+std::vector<std::string> RenderOutputs::picture_options() const {
+  std::vector<std::string> given;
+  if (!reference_image.empty()) given.push_back("--reference-image");
+  if (!error_map.empty()) given.push_back("--error-map");
+  if (!triangle_map.empty()) given.push_back("--triangle-map");
+  return given;
+}
+
 void RenderOutputs::declare(CommandFiles& files) const {
   files.output("-o", image, OutputKind::image);
   files.output("--report", report);

@@ -6,6 +6,7 @@
 
 #include "parashade/combined.hpp"
 #include "parashade/errors.hpp"
+#include "parashade/memory_budget.hpp"
 #include "parashade/render_step.hpp"
 #include "parashade/scene_files.hpp"
 #include "parashade/split_renderer.hpp"
@@ -68,6 +69,7 @@ void apply_tuned(ResolvedRender& r) {
   const DeviceInfo& dev = r.devices.front()->info();
   try {
     const TuneCache cache(path);
+    if (const std::string aside = cache.set_aside(); !aside.empty()) r.warnings.push_back(aside);
     if (const std::string stale = cache.stale_entries(dev, &*problem); !stale.empty() && !r.request.quiet)
       r.notes.push_back(stale);
     const auto best = cache.best(dev, *problem);
@@ -113,6 +115,37 @@ void note_error_floor(ResolvedRender& r) {
   r.notes.push_back(text);
 }
 
+// Host bytes a pixel of what a render keeps beyond the frame it shades, rounded up from the peak resident
+// memory of 4096x4096 Phong frames with and without each option (+35, +7, +3.3 and +0.5; docs/robustness.md).
+constexpr std::uint64_t kFloatBytesPerPixel = 40, kReferenceImageBytesPerPixel = 8, kErrorMapBytesPerPixel = 8,
+                        kTriangleMapBytesPerPixel = 4;
+
+FrameExtras frame_extras(const RenderRequest& request) {
+  FrameExtras x;
+  const auto add = [&x](const std::string& option, std::uint64_t bytes) {
+    x.bytes_per_pixel += bytes;
+    x.options += (x.options.empty() ? "" : ", ") + option;
+  };
+  if (request.options.float_output) add("--float", kFloatBytesPerPixel);
+  for (const std::string& p : request.pictures)
+    add(p, p == "--reference-image" ? kReferenceImageBytesPerPixel
+           : p == "--error-map"     ? kErrorMapBytesPerPixel
+                                    : kTriangleMapBytesPerPixel);
+  return x;
+}
+
+// The loaded scene's objects and frame with the extras, before any frame is allocated (the scene's own
+// budget, judged while it loaded, leaves the extras out: it knows no render options).
+void check_frame_memory(const Scene& scene, const RenderRequest& request) {
+  const FrameExtras extras = frame_extras(request);
+  if (extras.bytes_per_pixel == 0) return;
+  std::vector<MemoryItem> objects;
+  for (const Object& o : scene.objects)
+    if (o.mesh) objects.push_back({"'" + o.name + "'", o.mesh->triangles.size(), o.mesh->positions.size()});
+  check_host_memory(request.scene_file.string() + " at " + std::to_string(scene.width) + "x" + std::to_string(scene.height),
+                    objects, scene.width, scene.height, extras);
+}
+
 }  // namespace
 
 void check_render_options(const RenderOptions& options, DeviceMode mode) {
@@ -126,8 +159,10 @@ ResolvedRender resolve_render(RenderRequest request, CommandFiles& files) {
   const Selector selector = selector_of(request.device);
   r.mode = mode_of(selector.text, request.options);
   check_render_options(request.options, r.mode);
+  files.check_folders();  // before the scene, whose loading may take many seconds
   std::vector<std::filesystem::path> inputs;
   r.scene = load_scene(request.scene_file, inputs, request.size);
+  check_frame_memory(r.scene, request);
   files.scene(inputs);
   files.input("--triangle-choice list:", request.options.combined.list_file);
   if (request.use_tuned || !request.tune_cache.empty())

@@ -2,6 +2,7 @@
 #include "against_frames.hpp"
 #include "frame_medians.hpp"
 #include "parashade/render_step.hpp"
+#include "parashade/output_file.hpp"
 #include "parashade/split_renderer.hpp"
 
 namespace parashade {
@@ -37,6 +38,7 @@ void run_frames(const ResolvedRender& r, RenderSession& session, RenderResult& o
   std::string warning;
   const auto frame = [&]() -> const Frame& {
     const Frame& f = session.frame(&warning);
+    reclaim_signal_cleanup();  // LLVM takes SIGQUIT and SIGUSR1 when a kernel is first compiled or linked
     if (!warning.empty()) out.warnings.push_back(warning), warning.clear();
     return f;
   };

@@ -1,12 +1,19 @@
 #include "tune_cache.hpp"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdlib>
 #include <fstream>
+#include <set>
 
 #include "parashade/errors.hpp"
 #include "parashade/json_number.hpp"
 #include "parashade/report.hpp"
 #include "parashade/version.hpp"
+#include "tune_cache_entry.hpp"
 
 namespace parashade {
 namespace {
@@ -14,6 +21,51 @@ namespace {
 // The build an entry was measured with, "0.1.0+abc123def456": a timing from another build of the
 // kernels or the host stages says nothing about this one.
 std::string build_id() { return std::string(version) + "+" + git_hash; }
+
+// The entries of the cache file at `path` (none when it does not exist); InputError when it is not a tune cache.
+nlohmann::json read_entries(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return nlohmann::json::array();
+  std::ifstream in(path);
+  nlohmann::json read;
+  try {
+    in >> read;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError("tune cache '" + path.string() + "' is not valid JSON: " + e.what());
+  }
+  if (!read.is_object() || !read.contains("entries") || !read["entries"].is_array())
+    throw InputError("tune cache '" + path.string() + "' has no \"entries\" array");
+  return read["entries"];
+}
+
+// What makes two entries one measurement: the device, the build, the problem and the parameters.
+std::string identity(const nlohmann::json& e) {
+  if (!e.is_object()) return e.dump();
+  nlohmann::json id = nlohmann::json::object();
+  for (const char* key : {"device_name", "driver_version", "compute_units", "version", "problem", "params"})
+    id[key] = e.value(key, nlohmann::json());
+  return id.dump();
+}
+
+// An exclusive lock on the cache's folder while a write reads, merges and renames (flock on a folder
+// descriptor: no lock file beside the cache). Without it (a file system without locks) the write goes on.
+class FolderLock {
+ public:
+  explicit FolderLock(const std::filesystem::path& folder)
+      : fd_(::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
+    if (fd_ >= 0)
+      while (::flock(fd_, LOCK_EX) != 0 && errno == EINTR) {
+      }
+  }
+  ~FolderLock() {
+    if (fd_ >= 0) ::close(fd_);  // releases the lock
+  }
+  FolderLock(const FolderLock&) = delete;
+  FolderLock& operator=(const FolderLock&) = delete;
+
+ private:
+  int fd_;
+};
 
 }  // namespace
 
@@ -51,20 +103,27 @@ TuneCache::TuneCache(std::filesystem::path path) : path_(std::move(path)) {
   doc_ = {{"format", "parashade tune cache 3"}, {"objective", "frame_ms (median, lower is better)"},
           {"tune_params_keys", {"tile", "work_items", "partition", "cu", "batch"}},
           {"entries", nlohmann::json::array()}};
-  std::error_code ec;
-  if (!std::filesystem::exists(path_, ec)) return;
-  std::ifstream in(path_);
-  nlohmann::json read;
-  try {
-    in >> read;
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError("tune cache '" + path_.string() + "' is not valid JSON: " + e.what());
+  take(read_entries(path_), false);
+}
+
+void TuneCache::take(const nlohmann::json& entries, bool only_new) {
+  std::set<std::string> held;
+  if (only_new)
+    for (const auto& e : doc_["entries"]) held.insert(identity(e));
+  for (const auto& e : entries) {
+    if (only_new && !held.insert(identity(e)).second) continue;
+    const std::string fault = tune_entry_fault(e);
+    doc_["entries"].push_back(e);
+    usable_.push_back(fault.empty());
+    if (!fault.empty()) faults_.push_back("entry " + std::to_string(doc_["entries"].size()) + ": " + fault);
   }
-  if (!read.is_object() || !read.contains("entries") || !read["entries"].is_array())
-    throw InputError("tune cache '" + path_.string() + "' has no \"entries\" array");
-  for (const auto& e : read["entries"])
-    if (!e.is_object()) throw InputError("tune cache '" + path_.string() + "' has an entry that is not an object");
-  doc_["entries"] = read["entries"];
+}
+
+std::string TuneCache::set_aside() const {
+  if (faults_.empty()) return "";
+  const std::size_t n = faults_.size();
+  return "tune cache '" + path_.string() + "': " + std::to_string(n) + (n == 1 ? " entry" : " entries") +
+         " not understood, not used (" + faults_.front() + (n > 1 ? "; and more" : "") + ")";
 }
 
 bool TuneCache::ours(const nlohmann::json& e, const DeviceInfo& d) const {
@@ -74,9 +133,10 @@ bool TuneCache::ours(const nlohmann::json& e, const DeviceInfo& d) const {
 
 std::optional<nlohmann::json> TuneCache::find(const DeviceInfo& d, const TuneProblem& p, const nlohmann::json& params) const {
   const nlohmann::json problem = p.to_json();
-  for (const auto& e : doc_["entries"])
-    if (ours(e, d) && e.value("problem", nlohmann::json()) == problem && e.value("params", nlohmann::json()) == params)
-      return e;
+  const nlohmann::json& entries = doc_["entries"];
+  for (std::size_t i = 0; i < entries.size(); ++i)
+    if (usable_[i] && ours(entries[i], d) && entries[i]["problem"] == problem && entries[i]["params"] == params)
+      return entries[i];
   return std::nullopt;
 }
 
@@ -93,30 +153,37 @@ void TuneCache::add(const DeviceInfo& d, const TuneProblem& p, const nlohmann::j
                              {"verified", m.verified},
                              {"max_error", m.max_error},
                              {"nmse", number_or_null(m.nmse)}});
+  usable_.push_back(true);
 }
 
-void TuneCache::write() const {
+void TuneCache::write() {
   std::error_code ec;
   if (path_.has_parent_path()) std::filesystem::create_directories(path_.parent_path(), ec);
+  FolderLock lock(path_.parent_path());
+  take(read_entries(path_), true);  // what other runs wrote since this one read the file
   write_text_atomically(path_, doc_.dump(1) + "\n");
 }
 
 std::optional<nlohmann::json> TuneCache::best(const DeviceInfo& d, const TuneProblem& p) const {
   const nlohmann::json problem = p.to_json();
   std::optional<nlohmann::json> out;
-  for (const auto& e : doc_["entries"])
-    if (ours(e, d) && e.value("problem", nlohmann::json()) == problem && e.value("verified", false) &&
-        e.contains("objective") && e["objective"].is_number() &&
+  const nlohmann::json& entries = doc_["entries"];
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const nlohmann::json& e = entries[i];
+    if (usable_[i] && ours(e, d) && e["problem"] == problem && e["verified"].get<bool>() &&
         (!out || e["objective"].get<double>() < (*out)["objective"].get<double>()))
       out = e;
+  }
   return out;
 }
 
 std::string TuneCache::stale_entries(const DeviceInfo& d, const TuneProblem* p) const {
   int other_build = 0, other_device = 0;
   std::string build_example, device_example;
-  for (const auto& e : doc_["entries"]) {
-    if (ours(e, d)) continue;
+  const nlohmann::json& entries = doc_["entries"];
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const nlohmann::json& e = entries[i];
+    if (!usable_[i] || ours(e, d)) continue;
     if (p) {
       const nlohmann::json q = e.value("problem", nlohmann::json::object());
       if (q.value("scene", "") != p->scene || q.value("width", 0) != p->width || q.value("height", 0) != p->height)

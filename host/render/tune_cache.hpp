@@ -3,11 +3,14 @@
 // the device (name, driver, compute units), the parashade build (version and git commit, <parashade/version.hpp>), the problem (scene,
 // size and the shading: method, unit, normalization, specular model), the layout parameters, the
 // measured times, the objective (median frame ms) and the error against the exact reference. Rewritten
-// whole (atomically) after every candidate, so an interrupted `tune` resumes where it stopped. An entry
-// of another device or build is never used (stale_entries says how many there are and why).
+// whole (atomically) after every candidate, so an interrupted `tune` resumes where it stopped; each write
+// holds a lock (flock on the cache's folder) and first takes in the entries other runs wrote meanwhile,
+// so two runs on one cache keep each other's entries. An entry of another device or build is never used
+// (stale_entries says how many there are and why); an entry with a fault is set aside (set_aside).
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -46,28 +49,37 @@ struct TuneMeasurement {
 
 class TuneCache {
  public:
-  // Reads `path` when it exists; a file that is not a tune cache is an InputError naming it.
+  // Reads `path` when it exists; a file that is not a tune cache (not JSON, no "entries" array) is an
+  // InputError naming it.
   explicit TuneCache(std::filesystem::path path);
   // The entry of this device, build, problem and parameters, if any.
   std::optional<nlohmann::json> find(const DeviceInfo& d, const TuneProblem& p, const nlohmann::json& params) const;
   bool has(const DeviceInfo& d, const TuneProblem& p, const nlohmann::json& params) const {
     return find(d, p, params).has_value();
   }
-  // Appends an entry (in memory); write() rewrites the file.
+  // Appends an entry (in memory); write() rewrites the file with the entries written since it was read.
   void add(const DeviceInfo& d, const TuneProblem& p, const nlohmann::json& params, const TuneMeasurement& m);
-  void write() const;
+  void write();
   // The verified entry with the least objective for this device, build and problem.
   std::optional<nlohmann::json> best(const DeviceInfo& d, const TuneProblem& p) const;
   // Why entries are not used here: "" when every entry (of `p`'s scene and size, when given) is of this
   // device and build, else one sentence with the counts of entries of another build and of another
   // device, and an example of each.
   std::string stale_entries(const DeviceInfo& d, const TuneProblem* p = nullptr) const;
+  // "" when every entry is understood, else one sentence: how many entries are set aside (not used, kept in
+  // the file) and the first one's fault (tune_cache_entry.hpp).
+  std::string set_aside() const;
   const std::filesystem::path& path() const { return path_; }
 
  private:
   bool ours(const nlohmann::json& e, const DeviceInfo& d) const;  // this device and build
+  // Appends `entries` (only_new: those whose device, build, problem and parameters are not held yet),
+  // checking each (tune_cache_entry.hpp).
+  void take(const nlohmann::json& entries, bool only_new);
   std::filesystem::path path_;
   nlohmann::json doc_;
+  std::vector<bool> usable_;  // per entry of doc_["entries"]: understood
+  std::vector<std::string> faults_;  // of the entries set aside, "entry N: fault"
 };
 
 // The parameters of an entry as render options (tile, work-items, plan).

@@ -34,8 +34,10 @@ std::uint64_t item_bytes(const MemoryItem& o) {
 
 }  // namespace
 
-std::uint64_t estimate_host_bytes(const std::vector<MemoryItem>& objects, int width, int height) {
-  std::uint64_t total = std::uint64_t(std::max(width, 0)) * std::uint64_t(std::max(height, 0)) * kHostBytesPerPixel;
+std::uint64_t estimate_host_bytes(const std::vector<MemoryItem>& objects, int width, int height,
+                                  std::uint64_t extra_bytes_per_pixel) {
+  std::uint64_t total = std::uint64_t(std::max(width, 0)) * std::uint64_t(std::max(height, 0)) *
+                        (kHostBytesPerPixel + extra_bytes_per_pixel);
   for (const MemoryItem& o : objects) total += item_bytes(o);
   return total;
 }
@@ -68,8 +70,17 @@ std::string host_memory_limit_source() {
   return "half of the physical memory; " + std::string(kVariable) + " changes it, e.g. " + kVariable + "=16G";
 }
 
-void check_host_memory(const std::string& what, const std::vector<MemoryItem>& objects, int width, int height) {
-  const std::uint64_t need = estimate_host_bytes(objects, width, height), limit = host_memory_limit();
+void check_host_bytes(const std::string& what, std::uint64_t bytes, const std::string& holding) {
+  const std::uint64_t limit = host_memory_limit();
+  if (bytes <= limit) return;
+  throw InputError(what + ": " + holding + " would take about " + bytes_text(bytes) + " of host memory, more than the limit of " +
+                   bytes_text(limit) + " (" + host_memory_limit_source() + ")");
+}
+
+void check_host_memory(const std::string& what, const std::vector<MemoryItem>& objects, int width, int height,
+                       const FrameExtras& extras) {
+  const std::uint64_t need = estimate_host_bytes(objects, width, height, extras.bytes_per_pixel);
+  const std::uint64_t limit = host_memory_limit();
   if (need <= limit) return;
   std::uint64_t triangles = 0;
   for (const MemoryItem& o : objects) triangles += o.triangles;
@@ -84,7 +95,8 @@ void check_host_memory(const std::string& what, const std::vector<MemoryItem>& o
   if (largest.size() > 3) list += " and " + std::to_string(largest.size() - 3) + " more";
   throw InputError(what + ": rendering needs about " + bytes_text(need) + " of host memory (" +
                    std::to_string(objects.size()) + (objects.size() == 1 ? " object, " : " objects, ") + std::to_string(triangles) + " triangles, a " +
-                   std::to_string(width) + "x" + std::to_string(height) + " frame), more than the limit of " +
+                   std::to_string(width) + "x" + std::to_string(height) + " frame" +
+                   (extras.options.empty() ? "" : " with " + extras.options) + "), more than the limit of " +
                    bytes_text(limit) + " (" + host_memory_limit_source() + "); largest objects: " + list);
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "parashade/errors.hpp"
+#include "parashade/memory_budget.hpp"
 
 namespace parashade::detail {
 
@@ -25,6 +26,23 @@ std::vector<std::string> split(const std::string& line) {
   return tokens;
 }
 
+LineRead read_line(std::istream& in, std::string& line) {
+  line.clear();
+  std::streambuf* buf = in.rdbuf();
+  using traits = std::char_traits<char>;
+  int c = buf->sbumpc();
+  if (c == traits::eof()) {
+    in.setstate(std::ios::eofbit);
+    return LineRead::end;
+  }
+  for (; c != traits::eof() && c != '\n'; c = buf->sbumpc()) {
+    if (c == 0) return LineRead::nul;
+    if (line.size() == kMaxMeshLineBytes) return LineRead::too_long;
+    line += char(c);
+  }
+  return LineRead::line;
+}
+
 namespace {
 
 class ObjChecker {
@@ -35,11 +53,7 @@ class ObjChecker {
     std::ifstream in(path_);
     if (!in) throw InputError(path_.string() + ": cannot open");
     std::string line;
-    while (std::getline(in, line)) {
-      ++line_number_;
-      // OpenMesh's reader skips a record whose numbers stop at a NUL byte, shifting every later index
-      // (fuzzing finding F1): refuse the byte rather than guess what it would do.
-      if (line.find('\0') != std::string::npos) fail(line_number_, "contains a NUL byte (not a text OBJ file?)");
+    while (next_line(in, line)) {
       if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
       const std::vector<std::string> tokens = split(line);
       if (tokens.empty()) continue;
@@ -55,6 +69,7 @@ class ObjChecker {
       } else if (keyword == "f") {
         check_face(tokens);
         ++summary_.faces;
+        summary_.triangles += tokens.size() - 3;  // corners - 2
       }
       // Other records (o, g, s, usemtl, mtllib, l, p, ...) carry nothing the renderer uses.
     }
@@ -66,6 +81,20 @@ class ObjChecker {
   }
 
  private:
+  // The next line, read byte by byte and bounded: a NUL byte is refused where it is read, so a file of one
+  // endless line (a sparse file) is refused at once, not read into memory whole (issue 46, item 12).
+  // OpenMesh's reader skips a record whose numbers stop at a NUL byte, shifting every later index
+  // (fuzzing finding F1): refuse the byte rather than guess what it would do.
+  bool next_line(std::istream& in, std::string& line) {
+    const LineRead r = read_line(in, line);
+    if (r == LineRead::end) return false;
+    ++line_number_;
+    if (r == LineRead::nul) fail(line_number_, "contains a NUL byte (not a text OBJ file?)");
+    if (r == LineRead::too_long)
+      fail(line_number_, "longer than " + std::to_string(kMaxMeshLineBytes) + " bytes (not a text OBJ file?)");
+    return true;
+  }
+
   // The largest positive index seen and its line: OpenMesh accepts faces before their vertices, so
   // positive indices are checked against the final counts.
   struct MaxIndex {
@@ -135,6 +164,11 @@ class ObjChecker {
 }  // namespace
 
 ObjSummary check_obj(const std::filesystem::path& path) { return ObjChecker(path).run(); }
+
+void check_mesh_memory(const std::string& name, std::uint64_t triangles, std::uint64_t vertices) {
+  check_host_bytes(name, estimate_host_bytes({{name, triangles, vertices}}, 0, 0),
+                   std::to_string(triangles) + " triangles and " + std::to_string(vertices) + " vertices");
+}
 
 std::size_t count_stl_facets(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);

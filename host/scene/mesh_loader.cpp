@@ -199,6 +199,10 @@ Mesh load_mesh(const std::filesystem::path& path, MeshLoadStats* stats_out) {
   if (ext == ".obj") faces_in_file = (obj = detail::check_obj(path)).faces;
   if (ext == ".ply") detail::check_ply(path);
   if (ext == ".stl") faces_in_file = detail::count_stl_facets(path);
+  // The counts against the memory limit before OpenMesh reads (PLY's and OFF's in their scans); an STL
+  // facet's corners are shared by about six facets.
+  if (ext == ".obj") detail::check_mesh_memory(name, obj.triangles, obj.vertices);
+  if (ext == ".stl") detail::check_mesh_memory(name, faces_in_file, faces_in_file / 2);
 
   PolyMesh poly;
   poly.request_vertex_normals();

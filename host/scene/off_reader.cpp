@@ -35,6 +35,7 @@ class OffReader {
     if (tokens.size() < 2 || tokens.size() > 3) fail("expected the counts 'vertices faces [edges]'");
     const long vertices = count(tokens[0]), faces = count(tokens[1]);
     check_counts_fit(vertices, faces);
+    check_mesh_memory(path_.string(), std::uint64_t(faces), std::uint64_t(vertices));
 
     std::vector<OpenMesh::VertexHandle> handles;
     handles.reserve(static_cast<std::size_t>(vertices));

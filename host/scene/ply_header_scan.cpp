@@ -64,8 +64,9 @@ class PlyHeaderChecker {
     std::string format;
     std::string line;
     bool ended = false;
-    while (std::getline(in, line)) {
+    for (LineRead r; (r = read_line(in, line)) != LineRead::end;) {
       ++line_number_;
+      if (r != LineRead::line) fail(r == LineRead::nul ? "a NUL byte in the header" : "a header line longer than 1 MiB");
       const std::vector<std::string> tokens = split(line);
       if (line_number_ == 1) {
         if (tokens.size() != 1 || tokens[0] != "ply") fail("no 'ply' magic line");
@@ -117,6 +118,7 @@ class PlyHeaderChecker {
     body_start_ = static_cast<std::uintmax_t>(header_end);
     const std::uintmax_t body = std::filesystem::file_size(path_) - body_start_;
     check_sizes(format == "ascii", body);
+    check_memory();
     // OpenMesh's body readers trust every list length and every number (a length it cannot read loops
     // 2^32 times at the end of the file): walk the body once to make sure it holds what the header says.
     if (format == "ascii") {
@@ -188,6 +190,17 @@ class PlyHeaderChecker {
                          " records (at least " + std::to_string(bytes) + " bytes), but only " +
                          std::to_string(body) + " bytes follow the header: corrupt or truncated");
     }
+  }
+
+  // The counts the file can hold, against the host memory limit, before the body is walked or read: a
+  // sparse file can hold hundreds of millions of vertices (issue 46, item 12). Faces as triangles.
+  void check_memory() const {
+    std::uint64_t vertices = 0, faces = 0;
+    for (const Element& e : elements_) {
+      if (e.name == "vertex") vertices = e.count;
+      if (e.name == "face") faces = e.count;
+    }
+    check_mesh_memory(path_.string(), faces, vertices);
   }
 
   [[noreturn]] void fail_record(const Element& e, std::uint64_t record, const std::string& reason) const {

@@ -32,8 +32,13 @@ class CommandFiles {
   // destination that is not a regular file, a folder that does not exist or an image format no writer
   // knows. Call after every input is known (a scene's meshes are read with the scene) and before the work.
   void check() const;
+  // The cheap part of check(), for before a scene is loaded (which may take many seconds): no two outputs
+  // are one file (UsageError), and every output's folder exists and is a folder (InputError naming the
+  // option, the file and the folder).
+  void check_folders() const;
 
  private:
+  void check_apart() const;  // no output is another output
   struct File {
     std::string name;
     std::filesystem::path path;

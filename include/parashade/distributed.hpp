@@ -29,6 +29,11 @@ namespace parashade {
 
 enum class Distribute { sort_last, sort_first };
 
+// --rank-timeout's default: seconds a rank may wait in one MPI call for the others before the job is ended
+// (a stopped or hung rank); longer than any wait of a healthy job (rank 0 reading and scattering a large
+// scene, or computing the error figures of a 4096x4096 frame while the others wait to finish).
+constexpr double kDefaultRankTimeoutSeconds = 600;
+
 // "sort-last" or "sort-first"; throws UsageError naming the value.
 Distribute parse_distribute(const std::string& name);
 const char* distribute_name(Distribute d);
@@ -72,6 +77,7 @@ struct DistributedRender {
   // false: every rank reads the scene file; true (--read-scene rank-0): rank 0 reads it and scatters the
   // sort-last shares (MPI_Scatterv) or broadcasts the whole scene to sort-first ranks
   bool scatter_scene = false;
+  double rank_timeout = kDefaultRankTimeoutSeconds;  // --rank-timeout: seconds, 0 for none
 };
 
 // Runs under mpirun (MPI_Init here, MPI_Finalize before returning). Every rank returns the same exit
@@ -85,7 +91,8 @@ int run_distributed_render(const DistributedRender& job, RenderResult* result, s
 // when the group is destroyed.
 class RankGroup {
  public:
-  static std::unique_ptr<RankGroup> join();
+  // `rank_timeout`: as DistributedRender's, off by default (a rank's whole share is one wait).
+  static std::unique_ptr<RankGroup> join(double rank_timeout = 0);
   virtual ~RankGroup() = default;
   virtual int rank() const = 0;
   virtual int size() const = 0;

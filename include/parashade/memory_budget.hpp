@@ -17,7 +17,15 @@ struct MemoryItem {
 // scene through the mesh, the vertex stage, setup, binning and the reference, and per pixel of the frame.
 constexpr std::uint64_t kHostBytesPerTriangle = 400, kHostBytesPerVertex = 48, kHostBytesPerPixel = 96;
 
-std::uint64_t estimate_host_bytes(const std::vector<MemoryItem>& objects, int width, int height);
+// What a render keeps per pixel beyond the frame it shades (--float's values, the pictures of the error):
+// bytes a pixel, and the options that ask for them ("--float, --error-map") for messages.
+struct FrameExtras {
+  std::uint64_t bytes_per_pixel = 0;
+  std::string options;
+};
+
+std::uint64_t estimate_host_bytes(const std::vector<MemoryItem>& objects, int width, int height,
+                                  std::uint64_t extra_bytes_per_pixel = 0);
 
 // The limit: PARASHADE_MEMORY_LIMIT (bytes, or with a suffix K, M, G, T: powers of 1024) when set, else
 // half of the physical memory (sysconf). A malformed PARASHADE_MEMORY_LIMIT is an InputError.
@@ -25,8 +33,13 @@ std::uint64_t host_memory_limit();
 // Where the limit came from, for messages.
 std::string host_memory_limit_source();
 
+// Throws InputError "<what>: <holding> would take about X of host memory, more than the limit of Y (...)" when
+// `bytes` exceed the limit: one allocation sized by a file's header (an image, a mesh's counts).
+void check_host_bytes(const std::string& what, std::uint64_t bytes, const std::string& holding);
+
 // Throws InputError "<what>: rendering needs about X of host memory (...), more than the limit of Y
 // (...); largest objects: ..." when the estimate exceeds the limit.
-void check_host_memory(const std::string& what, const std::vector<MemoryItem>& objects, int width, int height);
+void check_host_memory(const std::string& what, const std::vector<MemoryItem>& objects, int width, int height,
+                       const FrameExtras& extras = {});
 
 }  // namespace parashade

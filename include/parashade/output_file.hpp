@@ -46,6 +46,10 @@ class StagedFile {
   std::string error_;
 };
 
+// Throws InputError "<option>: cannot write PATH: directory 'DIR' does not exist" (or "'DIR' is not a
+// folder", or the system's reason) unless the folder `path` goes into is a folder. `option` may be empty.
+void check_output_folder(const std::string& option, const std::filesystem::path& path);
+
 struct RenderedImage;  // image.hpp
 
 // write_image (image.hpp) without the final rename: the image is in the returned file's temporary()
@@ -58,8 +62,13 @@ StagedFile stage_image(const std::filesystem::path& path, const RenderedImage& i
 // the system's error.
 StagedFile stage_text(const std::filesystem::path& path, const std::string& text);
 
-// SIGINT and SIGTERM remove every staged temporary file and end the process with 128 + the signal
-// (only unlink and _exit in the handler). Call once, early in main.
+// SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1 and SIGUSR2 remove every staged temporary file and end the
+// process with 128 + the signal (only unlink and _exit in the handler); one ignored when the process
+// started stays ignored. Call once, early in main.
 void install_signal_cleanup();
+// Takes SIGQUIT and SIGUSR1 back from a library that replaced the handler (LLVM, inside PoCL, does when it
+// first compiles or links a kernel, and then swallows both). Cheap: called after kernel builds, after each
+// frame and whenever a staged file is created.
+void reclaim_signal_cleanup();
 
 }  // namespace parashade

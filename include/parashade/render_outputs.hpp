@@ -18,6 +18,8 @@ struct RenderOutputs {
   bool against_exact = false;  // reference_image and error_map against exact Phong, not the method's ideal
 
   bool pictures() const { return !reference_image.empty() || !error_map.empty() || !triangle_map.empty(); }
+  // The picture options given ("--reference-image", "--error-map", "--triangle-map"), in that order.
+  std::vector<std::string> picture_options() const;
   // Declares them to `files` by render's option names (-o, --report, --reference-image, --error-map,
   // --triangle-map).
   void declare(CommandFiles& files) const;

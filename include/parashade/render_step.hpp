@@ -50,6 +50,9 @@ struct RenderRequest {
   int frames = 5, warmup = 1;
   bool error_figures = true;   // the exact reference and the error against it
   bool keep_reference = false;  // the reference's values and visible triangles in the result (pictures)
+  // The pictures asked for, by option name ("--reference-image", "--error-map", "--triangle-map"): each
+  // holds a frame of its own, budgeted with --float against the host memory limit before rendering.
+  std::vector<std::string> pictures;
   bool use_tuned = true;       // the best entry of the tune cache for this device, build and problem
   std::filesystem::path tune_cache;  // empty: default_tune_cache()
   std::optional<Method> against;     // a plain method whose frames alternate with these (render --against)

@@ -177,5 +177,39 @@ TEST_F(CliHostileInput, ProgressOnATerminalOnly) {
   EXPECT_NE(quiet.find("wrote"), std::string::npos) << quiet;
 }
 
+// Issue 46, item 8: compare read /dev/zero (or /dev/urandom, a FIFO, a link to one) until killed. Its
+// images are checked as scene files are: a regular file, before anything is read.
+TEST_F(CliHostileInput, CompareRefusesDevicesAndFifosAtOnce) {
+  fs::create_directories(in_dir());
+  const fs::path good = input("good.ppm", std::string("P6\n2 1\n255\n") + std::string(6, '\x40'));
+  fs::create_symlink("/dev/urandom", in_dir() / "noise.png");
+  ASSERT_EQ(::mkfifo((in_dir() / "pipe.png").c_str(), 0600), 0);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"/dev/zero", "character device"}, {(in_dir() / "noise.png").string(), "character device"},
+      {(in_dir() / "pipe.png").string(), "FIFO"}};
+  for (const auto& [path, kind] : cases) {
+    for (const bool as_reference : {true, false}) {
+      const std::vector<std::string> args = as_reference ? std::vector<std::string>{"compare", good.string(), path}
+                                                         : std::vector<std::string>{"compare", path, good.string()};
+      const RunResult r = run_parashade(args, {}, std::chrono::seconds(10));
+      EXPECT_TRUE(fails_with(r, kBadInput, {fs::path(path).filename().string(), "not a regular file", kind}));
+    }
+  }
+}
+
+// Item 9: --triangle-choice list:/dev/zero grew without bound (4.2 GB in 20 s); a FIFO hung.
+TEST_F(CliHostileInput, TriangleListFromADeviceOrAFifoIsRefusedAtOnce) {
+  fs::create_directories(in_dir());
+  const fs::path scene = input("ball.json", sphere_scene());
+  ASSERT_EQ(::mkfifo((in_dir() / "pipe.txt").c_str(), 0600), 0);
+  fs::create_symlink("/dev/zero", in_dir() / "zeros.txt");
+  for (const std::string list : {std::string("/dev/zero"), (in_dir() / "pipe.txt").string(), (in_dir() / "zeros.txt").string()}) {
+    const RunResult r = run_parashade(
+        render_args(scene, {"--method", "combined:0", "--triangle-choice", "list:" + list}), {}, std::chrono::seconds(10));
+    EXPECT_TRUE(fails_with(r, kBadInput, {fs::path(list).filename().string(), "not a regular file"}));
+  }
+  EXPECT_TRUE(nothing_written());
+}
+
 }  // namespace
 }  // namespace parashade

@@ -3,6 +3,7 @@
 // status, stdout and stderr. A child that outlives its time limit is killed and reported as a hang.
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -22,6 +23,7 @@ struct RunResult {
   int exit_code = -1;      // valid when the child exited normally
   int signal = 0;          // the signal that ended it (a crash), or 0
   bool timed_out = false;  // killed after the time limit
+  long max_rss_kib = 0;    // the child's peak resident memory (getrusage's ru_maxrss)
   std::string out, err;
   bool exited() const { return signal == 0 && !timed_out && exit_code >= 0; }
 };
@@ -82,15 +84,17 @@ inline RunResult run_parashade(const std::vector<std::string>& args, const std::
 
   const auto deadline = std::chrono::steady_clock::now() + limit;
   int status = 0;
-  while (::waitpid(pid, &status, WNOHANG) == 0) {
+  struct rusage usage {};
+  while (::wait4(pid, &status, WNOHANG, &usage) == 0) {
     if (std::chrono::steady_clock::now() > deadline) {
       ::kill(pid, SIGKILL);
-      ::waitpid(pid, &status, 0);
+      ::wait4(pid, &status, 0, &usage);
       r.timed_out = true;
       break;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
+  r.max_rss_kib = usage.ru_maxrss;
   if (!r.timed_out) {
     if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);

@@ -2,7 +2,10 @@
 // and budgets, the error-budget objective, cache invalidation by build and device, and the Kernel Tuner
 // export. A small procedural scene at a small size; one timed frame per candidate.
 #include <algorithm>
+#include <chrono>
 #include <fstream>
+#include <future>
+#include <thread>
 #include <iterator>
 #include <set>
 #include <sstream>
@@ -276,6 +279,91 @@ TEST_F(CliTune, CacheEntriesOfAnotherBuildOrDeviceAreNotUsed) {
     ASSERT_TRUE(succeeds(again));
     EXPECT_NE(again.out.find("0 already in the cache"), std::string::npos) << again;
     EXPECT_EQ(field(read_report(), "/candidates").size(), 1u);
+  }
+}
+
+// Issue 46, item 5: two tune runs on one cache. Each run read the cache once and every write replaced the
+// file with what it had read plus its own entries: the entries the other run wrote meanwhile were lost
+// (whichever wrote last won). Now every write merges with the file under a lock. The first run measures
+// 180 configurations of a 21 000-triangle frame (several seconds); the second starts while it runs.
+TEST_F(CliTune, TwoRunsOnOneCacheKeepEachOthersEntries) {
+  const std::filesystem::path fine = input("fine.json", many_triangles_scene());
+  const auto tune_fine = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"tune", fine.string(), "--cache", cache().string(), "--frames", "3", "-q"};
+    const std::vector<std::string> device = device_args();
+    args.insert(args.end(), device.begin(), device.end());
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_parashade(args, {}, std::chrono::seconds(300));
+  };
+  std::string many;
+  for (int w = 1; w <= 60; ++w) many += (w > 1 ? "," : "") + std::to_string(w);
+  auto first = std::async(std::launch::async, [&] {
+    return tune_fine({"--param", "tile=16,32,64", "--param", "work_items=" + many, "--param", "partition=none",
+                      "--budget-runs", "180"});
+  });
+  // The first run has read the cache once it has written its first entry.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!std::filesystem::exists(cache()) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_TRUE(std::filesystem::exists(cache())) << "the first run wrote no cache";
+  const bool overlapped = first.wait_for(std::chrono::seconds(0)) == std::future_status::timeout;
+  const RunResult second = tune_fine({"--param", "tile=16", "--param", "work_items=97", "--param", "partition=none"});
+  const RunResult first_run = first.get();
+  ASSERT_TRUE(succeeds(second));
+  ASSERT_TRUE(succeeds(first_run));
+  ASSERT_TRUE(overlapped) << "the first run ended before the second started: make it longer" << first_run;
+  int of_first = 0, of_second = 0;
+  for (const auto& e : field(read_json(cache()), "/entries"))
+    (e["params"]["work_items"] == 97 ? of_second : of_first) += 1;
+  EXPECT_EQ(of_second, 1);
+  EXPECT_EQ(of_first, 180);
+}
+
+// The default cache's folder may not exist yet (a fresh machine): tune makes it. It was refused since the
+// outputs' folders are checked before the work ("directory '.../parashade' does not exist").
+TEST_F(CliTune, TheDefaultCacheFolderIsMadeOnAFreshMachine) {
+  const std::filesystem::path home = out_dir() / "fresh-cache-home";
+  const ScopedEnv explicit_cache("PARASHADE_TUNE_CACHE", nullptr);
+  const ScopedEnv xdg("XDG_CACHE_HOME", home.string());
+  std::vector<std::string> args = {"tune", scene_.string(), "--report", report().string(), "--frames", "1", "-q",
+                                   "--param", "tile=32", "--param", "work_items=0", "--param", "partition=none"};
+  const std::vector<std::string> device = device_args();
+  args.insert(args.end(), device.begin(), device.end());
+  ASSERT_TRUE(succeeds(run_parashade(args)));
+  EXPECT_EQ(field(read_json(home / "parashade" / "tune.json"), "/entries").size(), 1u);
+}
+
+// A message of issue 46: entries a hand or another program broke were used and printed as if valid
+// (work_items -1), or ended tune with an internal error (a string for max_error). Such entries are set
+// aside with one warning naming the cache and the first fault; the valid ones are still used.
+TEST_F(CliTune, EntriesThatAreNotUnderstoodAreSetAsideWithAWarning) {
+  ASSERT_TRUE(succeeds(tune({"--param", "tile=32", "--param", "work_items=0,5", "--param", "partition=none"})));
+  const nlohmann::json good = read_json(cache());
+  ASSERT_EQ(field(good, "/entries").size(), 2u) << good.dump(2);
+  const std::vector<std::pair<std::string, nlohmann::json>> faults = {
+      {"/params/work_items", -1},      {"/params/work_items", 0.5},   {"/params/tile", 17},
+      {"/params/tile", "big"},         {"/problem/units", "bogus:999"}, {"/objective", "fast"},
+      {"/max_error", "x"},             {"/params", "none"}};
+  for (const auto& [pointer, value] : faults) {
+    SCOPED_TRACE(pointer + " = " + value.dump());
+    nlohmann::json c = good;
+    nlohmann::json bad = c["entries"][0];
+    bad["objective"] = 1e-6;  // the best, were it used
+    bad[nlohmann::json::json_pointer(pointer)] = value;
+    c["entries"].push_back(bad);
+    const std::filesystem::path path = out_dir() / "garbage.json";
+    std::ofstream(path) << c.dump(1);
+    const RunResult r = run_parashade({"render", scene_.string(), "-o", image().string(), "--frames", "1", "--warmup",
+                                       "0", "--no-error", "--tune-cache", path.string()});
+    ASSERT_TRUE(succeeds(r));
+    EXPECT_NE(r.err.find("garbage.json"), std::string::npos) << r;
+    EXPECT_NE(r.err.find("1 entry not understood"), std::string::npos) << r;
+    EXPECT_NE(r.err.find("using the tuned configuration"), std::string::npos) << r;  // a valid entry
+    EXPECT_EQ(r.err.find(value.dump() + "}"), std::string::npos) << r;
+    const RunResult t = tune({"--param", "tile=32", "--param", "work_items=0,5", "--param", "partition=none"}, path);
+    EXPECT_TRUE(succeeds(t));
+    EXPECT_NE(t.err.find("1 entry not understood"), std::string::npos) << t;
+    EXPECT_EQ(field(read_json(path), "/entries").size(), 3u) << "the entry set aside is kept in the file";
   }
 }
 

@@ -180,8 +180,19 @@ TEST_P(CliSignal, DuringTheWriteLeavesNoTemporaryFile) {
   EXPECT_TRUE(nothing_written());
 }
 
-INSTANTIATE_TEST_SUITE_P(Signals, CliSignal, ::testing::Values(SIGINT, SIGTERM),
-                         [](const ::testing::TestParamInfo<int>& i) { return i.param == SIGINT ? "SIGINT" : "SIGTERM"; });
+// Issue 46: SIGQUIT and SIGUSR1 were swallowed once PoCL's LLVM had compiled a kernel (its handlers
+// replaced the defaults) and the render completed; SIGHUP and SIGUSR2 are handled the same way.
+INSTANTIATE_TEST_SUITE_P(Signals, CliSignal, ::testing::Values(SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2),
+                         [](const ::testing::TestParamInfo<int>& i) { return std::string("SIG") + sigabbrev_np(i.param); });
+
+// Issue 46: a legal name of 250 bytes: the temporary file beside it (".NAME.tmp-PID-N.png") was longer than 255.
+TEST_F(CliWriteSafety, ALongButLegalOutputNameIsWritten) {
+  const fs::path long_image = out_dir() / (std::string(246, 'a') + ".png");
+  const fs::path long_report = out_dir() / (std::string(245, 'r') + ".json");
+  EXPECT_TRUE(succeeds(run_parashade(args(long_image, long_report, {}))));
+  EXPECT_TRUE(fs::is_regular_file(long_image));
+  EXPECT_TRUE(fs::is_regular_file(long_report));
+}
 
 // Item 4: replaced outputs keep their permission bits.
 TEST_F(CliWriteSafety, ReplacedOutputsKeepTheirPermissionBits) {

@@ -158,6 +158,81 @@ def error_pictures(tmp, mode):
               "%s: the distributed %s differs from the one-process one" % (mode, name))
 
 
+def descendants(pid):
+    """The processes below `pid` (children, their children, ...), from /proc."""
+    parent = {}
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                parent[int(entry)] = int(open("/proc/%s/stat" % entry).read().rsplit(")", 1)[1].split()[1])
+            except (OSError, IndexError, ValueError):
+                pass
+    out, todo = [], [pid]
+    while todo:
+        p = todo.pop()
+        kids = [c for c, pp in parent.items() if pp == p]
+        out += kids
+        todo += kids
+    return out
+
+
+def rank_pid(mpirun_pid, rank):
+    """The pid of parashade rank `rank` started by mpirun (its OMPI_COMM_WORLD_RANK), or None."""
+    for pid in descendants(mpirun_pid):
+        try:
+            env = open("/proc/%d/environ" % pid, "rb").read().split(b"\0")
+            comm = open("/proc/%d/comm" % pid).read().strip()
+        except OSError:
+            continue
+        if comm == "parashade" and ("OMPI_COMM_WORLD_RANK=%d" % rank).encode() in env:
+            return pid
+    return None
+
+
+def stopped_rank(tmp):
+    """Issue 46, item 11: a rank stopped by SIGSTOP left the others waiting in MPI forever (mpirun never
+    ended). The watchdog (--rank-timeout) ends the job within about the timeout, naming the option."""
+    img = os.path.join(tmp, "stopped.png")
+    for mode in ("sort-first", "sort-last"):
+        cmd = [MPIEXEC, "--oversubscribe", "-np", "2", PARASHADE, "render", SCENE, "-o", img, "--frames", "100000",
+               "--size", SIZE, "--no-error", "-q", "--no-tuned", "--warmup", "0", "--distribute", mode,
+               "--rank-timeout", "3"]
+        p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
+        victim = None
+        try:
+            deadline = time.time() + 60
+            while victim is None and time.time() < deadline and p.poll() is None:
+                time.sleep(0.2)
+                victim = rank_pid(p.pid, 1)
+            check(victim is not None, "%s: rank 1 never started" % mode)
+            if victim is None:
+                continue
+            time.sleep(5)  # both ranks in their frames (kernels built)
+            os.kill(victim, signal.SIGSTOP)
+            t0 = time.time()
+            try:
+                out, err = p.communicate(timeout=60)
+            except subprocess.TimeoutExpired:
+                check(False, "%s: the job still waits 60 s after rank 1 was stopped (--rank-timeout 3)" % mode)
+                continue
+            print("  %.1fs after SIGSTOP rc=%d %s" % (time.time() - t0, p.returncode, mode), flush=True)
+            check(p.returncode != 0, "%s: exit 0 with a rank stopped" % mode)
+            check("--rank-timeout" in err and "rank 0 of 2" in err,
+                  "%s: the message names neither the waiting rank nor the option: %s" % (mode, err.strip()))
+            check(not os.path.exists(img), "%s: an image was written with a rank stopped" % mode)
+        finally:
+            for pid in [victim] if victim else []:
+                try:
+                    os.kill(pid, signal.SIGCONT)
+                except OSError:
+                    pass
+            try:
+                os.killpg(p.pid, signal.SIGKILL)
+            except OSError:
+                pass
+            p.wait()
+
+
 def main():
     with tempfile.TemporaryDirectory() as tmp:
         tie = os.path.join(tmp, "tie.json")
@@ -250,6 +325,7 @@ def main():
                 check(rc == 2, "%s: exit %d (want 2): %s" % (" ".join(opts), rc, err.strip()))
                 check(all(w in err for w in words), "%s: message lacks %s: %s" % (" ".join(opts), words, err.strip()))
                 check(not os.path.exists(img), "%s: an image was written" % " ".join(opts))
+            stopped_rank(tmp)
         elif GROUP == "sweep":
             # scaling --mpi deals its configurations across the ranks; rank 0's merged report must equal the
             # one-process report up to the timing fields (and the device's compute units: each rank gets its

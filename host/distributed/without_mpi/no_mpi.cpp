@@ -12,7 +12,7 @@ int run_distributed_render(const DistributedRender&, RenderResult*, std::vector<
                    "scripts/install-deps.sh, then configure again)");
 }
 
-std::unique_ptr<RankGroup> RankGroup::join() {
+std::unique_ptr<RankGroup> RankGroup::join(double) {
   throw UsageError("--mpi needs MPI, and this parashade was built without it (install Open MPI: "
                    "scripts/install-deps.sh, then configure again)");
 }
