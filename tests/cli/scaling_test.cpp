@@ -1,6 +1,7 @@
 // parashade scaling: the sweep over the modeled shading units runs, its report holds every row with the
 // modeled clocks and the error figures, and the clocks order as the units' definitions say. Bad command
 // lines and inputs fail with the documented codes and write nothing.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -15,9 +16,11 @@ using namespace testing_support;
 
 class CliScaling : public CliTest {
  protected:
-  // scaling SCENE --report out/report.json --frames 1 -q on the test device, then `extra`.
+  // scaling SCENE --report out/report.json -q on the test device, then `extra`, then --frames 1 unless
+  // `extra` gives --frames (a second --frames would be refused by the parser, not by the check under test).
   RunResult scaling(const std::filesystem::path& scene, std::vector<std::string> extra) const {
-    std::vector<std::string> args = {"scaling", scene.string(), "--report", report().string(), "--frames", "1", "-q"};
+    std::vector<std::string> args = {"scaling", scene.string(), "--report", report().string(), "-q"};
+    if (std::find(extra.begin(), extra.end(), "--frames") == extra.end()) extra.insert(extra.end(), {"--frames", "1"});
     const std::vector<std::string> device = device_args();
     args.insert(args.end(), device.begin(), device.end());
     args.insert(args.end(), extra.begin(), extra.end());
@@ -131,7 +134,9 @@ TEST_F(CliScaling, BadUnitIsAUsageErrorNamingIt) {
 TEST_F(CliScaling, BadArithmeticOrEmptyEntryIsAUsageError) {
   EXPECT_TRUE(fails_with(scaling(sphere_, {"--arith", "fixed:4.4"}), kUsage, {"fixed:4.4"}));
   EXPECT_TRUE(fails_with(scaling(sphere_, {"--units", "classic,,counter"}), kUsage, {"--units"}));
-  EXPECT_TRUE(fails_with(scaling(sphere_, {"--frames", "0"}), kUsage, {"--frames"}));
+  EXPECT_TRUE(fails_with(scaling(sphere_, {"--frames", "0"}), kUsage, {"--frames must be 1..100000"}));
+  // Issue 46, item 10: the render's cap holds here too (999999999 frames were accepted).
+  EXPECT_TRUE(fails_with(scaling(sphere_, {"--frames", "999999999"}), kUsage, {"--frames must be 1..100000"}));
   EXPECT_TRUE(nothing_written());
 }
 
