@@ -7,8 +7,9 @@ A refactoring that must change no behaviour is checked by running it before and 
     scripts/image_hashes.py --build build-before -o before.json
     scripts/image_hashes.py --build build -o after.json --compare before.json
 
---compare prints every case whose image or figures differ and exits 1 if any does. The matrix covers the
-scenes, methods, units, arithmetics, divisions, coverage rules, normalizations, specular models, combined
+--compare prints every case whose image or figures differ and exits 1 if any does; --drop KEY leaves
+out a report key the change added on purpose (e.g. --drop kernel_build), so the rest is still compared.
+The matrix covers the scenes, methods, units, arithmetics, divisions, coverage rules, normalizations, specular models, combined
 variants, plans, tile sizes and device splits that the tests and `scripts/bench-suite.sh --quick` use; meshes
 from PARASHADE_MESH_DIR (bunny, fandisk) are added when it is set.
 """
@@ -86,9 +87,10 @@ def case_list(mesh_dir):
     return out
 
 
-def deterministic(report):
-    """The report without timings, host load, device names or paths: what must not change."""
-    drop_keys = {"device", "devices", "device_info", "host", "command", "time", "load", "scene_file", "output", "tuned", "image",
+def deterministic(report, extra_drops=()):
+    """The report without timings, host load, device names or paths: what must not change. extra_drops:
+    keys a change added on purpose (--drop), left out so the rest can be compared with an earlier run."""
+    drop_keys = set(extra_drops) | {"device", "devices", "device_info", "host", "command", "time", "load", "scene_file", "output", "tuned", "image",
                  # the report header (docs/reports.md): which build, when, from which command line
                  "schema", "parashade", "created_utc", "command_line", "timing"}
 
@@ -104,7 +106,7 @@ def deterministic(report):
     return strip(report)
 
 
-def run_case(build, scene, opts, tmp, index):
+def run_case(build, scene, opts, tmp, index, drops):
     image = os.path.join(tmp, "case%d.png" % index)
     report = os.path.join(tmp, "case%d.json" % index)
     cmd = [os.path.join(build, "parashade"), "render", scene, "-o", image, "--size", SIZE, "--frames", "1",
@@ -116,7 +118,7 @@ def run_case(build, scene, opts, tmp, index):
     with open(image, "rb") as f:
         image_hash = hashlib.sha256(f.read()).hexdigest()
     with open(report) as f:
-        figures = json.dumps(deterministic(json.load(f)), sort_keys=True)
+        figures = json.dumps(deterministic(json.load(f), drops), sort_keys=True)
     os.remove(image)
     os.remove(report)
     return key, {"exit": 0, "image": image_hash, "figures": hashlib.sha256(figures.encode()).hexdigest()}
@@ -128,6 +130,8 @@ def main():
     ap.add_argument("-o", "--out", required=True, help="write the hashes as JSON here")
     ap.add_argument("--compare", help="hashes JSON of an earlier run: report every difference, exit 1 on any")
     ap.add_argument("--jobs", type=int, default=2, help="renders run at once (default 2)")
+    ap.add_argument("--drop", action="append", default=[], metavar="KEY",
+                    help="leave report key KEY (at any depth) out of the figures: a key the change added on purpose")
     args = ap.parse_args()
     os.chdir(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
     if not os.access(os.path.join(args.build, "parashade"), os.X_OK):
@@ -139,7 +143,7 @@ def main():
     results = {}
     start = time.time()
     with tempfile.TemporaryDirectory() as tmp, concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-        futures = [pool.submit(run_case, args.build, s, o, tmp, i) for i, (s, o) in enumerate(cases)]
+        futures = [pool.submit(run_case, args.build, s, o, tmp, i, args.drop) for i, (s, o) in enumerate(cases)]
         for n, fut in enumerate(concurrent.futures.as_completed(futures), 1):
             key, value = fut.result()
             results[key] = value
@@ -165,6 +169,9 @@ def main():
     differ = [k for k in sorted(set(before) | set(results)) if not same(before.get(k), results.get(k))]
     for k in differ:
         print("DIFFERS: %s\n  before %s\n  after  %s" % (k, before.get(k), results.get(k)))
+    image_differ = sum(1 for k in differ if before.get(k) and results.get(k) and before[k]["exit"] == 0
+                       and results[k]["exit"] == 0 and before[k]["image"] != results[k]["image"])
+    print("image_hashes.py: %d of the differing cases differ in the image" % image_differ)
     same_images = sum(1 for k, v in results.items() if v["exit"] == 0 and before.get(k) == v)
     print("image_hashes.py: %d of %d cases identical (%d images byte-identical with identical figures), %d differ"
           % (len(results) - len(differ), len(results), same_images, len(differ)))
