@@ -227,7 +227,7 @@ def strip_plot(images, scene, size, out_dir):
     diffs = [np.abs(load_rgb(path) - exact).max(axis=2) for _, _, path in cols]
     # One colour scale for every map, up to the largest error of any (at least 1 level, never clipped):
     # the maps compare with each other and the worst pixel keeps its true value. Viridis, as
-    # `parashade render --error-map` and `compare --diff` draw it.
+    # `parashade render --error-map` and `compare --error-map` draw it; gamma 0.4 is their default scale too.
     vmax = max(1.0, max(float(d.max()) for d in diffs))
     # A thumbnail drops most pixels: each map is shrunk by the largest error of each block, so an error of
     # one pixel still shows; the scale is a power law (gamma 0.4), so 1 level shows beside 124.
