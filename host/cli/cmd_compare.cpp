@@ -16,6 +16,7 @@
 #include "parashade/errors.hpp"
 #include "parashade/flip.hpp"
 #include "parashade/image.hpp"
+#include "parashade/memory_budget.hpp"
 #include "parashade/metrics.hpp"
 #include "parashade/output_file.hpp"
 #include "parashade/report.hpp"
@@ -108,6 +109,9 @@ Comparison compare_files(const CompareArgs& args) {
   c.max_at = max_location(c.a, reference, c.errors, c.m.max_abs);
   c.verdict = verdict_of(args, c.m, c.errors);
   if (args.flip || !args.flip_map.empty()) {
+    // FLIP's two float RGB inputs and its map: 28 bytes a pixel beside the images already read.
+    check_host_bytes("--flip", 28 * std::uint64_t(c.a.width) * std::uint64_t(c.a.height),
+                     "LDR-FLIP of two " + std::to_string(c.a.width) + "x" + std::to_string(c.a.height) + " images");
     c.flip_map = ldr_flip(flip_input(reference), flip_input(c.a), c.a.width, c.a.height);
     c.m.flip = flip_figures(c.flip_map);
   }
