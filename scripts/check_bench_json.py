@@ -3,9 +3,10 @@
 the GL renderer is llvmpipe; every case ran (no error, no skip); frame times, throughputs and peak memory
 are positive and finite; the peer and parashade agree on geometry (coverage mismatches at most
 --max-mismatch of the compared pixels: a few edge pixels, not a different picture); the error against
-exact Phong is finite, and llvmpipe's and parashade's NMSE for the same scene, size and method agree within
-a factor --nmse-agree (the same picture shaded the same way), and below --max-nmse except for flat
-shading and on fullscreen_quad (two triangles: Gouraud's worst case; a large NMSE is right there). Exit 0 when sane, 1 otherwise.
+exact Phong is finite (and its mean FLIP, where the run has it, in [0, 1]), and llvmpipe's and parashade's
+NMSE for the same scene, size and method agree within a factor --nmse-agree (the same picture shaded the
+same way), and below --max-nmse except for flat shading and on fullscreen_quad (two triangles: Gouraud's
+worst case; a large NMSE is right there). Exit 0 when sane, 1 otherwise.
 
     scripts/check_bench_json.py peer.json
 """
@@ -56,6 +57,9 @@ def main():
                     (nmse >= args.max_nmse and "/fullscreen_quad/" not in name and "/flat" not in name):
                 problems.append(f"{name}: NMSE against exact Phong = {nmse}")
             nmse_by_case[name] = nmse
+            flip = b.get("flip_mean")
+            if flip is not None and not (isinstance(flip, (int, float)) and 0 <= flip <= 1):
+                problems.append(f"{name}: mean FLIP against exact Phong = {flip} (LDR-FLIP is in [0, 1])")
     for name, nmse in nmse_by_case.items():
         if not name.startswith("llvmpipe/"):
             continue

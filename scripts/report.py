@@ -4,6 +4,8 @@
                               point and the llvmpipe points, with the combined and Phong-variant points
                               of combined-study.json and phong-methods.json when given; the Pareto front
                               marked;
+  speed_flip_SCENE_SIZE.png   the same against mean LDR-FLIP (bench_llvmpipe's flip_mean, in runs that
+                              have it; the study files carry NMSE only);
   scaling_SCENE.png           interpolators per clock -> modeled and measured speed-up, and error
                               (`parashade scaling --report` files);
   strip_SCENE_SIZE.png        exact Phong | parashade Gouraud | llvmpipe Gouraud | parashade Phong, and
@@ -34,6 +36,10 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from bench_results import find, load_results  # noqa: E402
 
 NMSE_FLOOR = 1e-9  # plotted in place of an NMSE of 0 (identical images) on the log axis
+# The error axes of the speed/error plots: the result key, its floor on the log axis (identical images), the
+# axis label and the file name's prefix. FLIP: bench_llvmpipe's flip_mean (LDR-FLIP, docs/pictures.md).
+ERROR_AXES = {"nmse": (NMSE_FLOOR, "NMSE against exact Phong (log)", "speed_error"),
+              "flip_mean": (1e-6, "mean LDR-FLIP against exact Phong (log)", "speed_flip")}
 
 
 def point_label(r):
@@ -83,18 +89,20 @@ def place_labels(fig, ax, items):
         placed.append(box)
 
 
-def speed_error_plot(rows, variants, scene, size, out_dir):
-    """Frame time against NMSE vs exact Phong: the peer run's points and, from the study files (other
-    runs of the same scene and size, at another load), the combined and Phong-variant points placed by
-    their time ratio to plain Phong in their own run, times parashade Phong's time in this run."""
-    pts = [(r["frame_ms"], max(r["nmse"], NMSE_FLOOR), point_family(r), point_label(r)) for r in rows
+def speed_error_plot(rows, variants, scene, size, out_dir, metric="nmse"):
+    """Frame time against an error vs exact Phong (ERROR_AXES: NMSE, or FLIP's mean where the run has it):
+    the peer run's points and, from the study files (other runs of the same scene and size, at another
+    load), the combined and Phong-variant points placed by their time ratio to plain Phong in their own
+    run, times parashade Phong's time in this run (the studies carry NMSE only)."""
+    floor, ylabel, prefix = ERROR_AXES[metric]
+    pts = [(r["frame_ms"], max(r[metric], floor), point_family(r), point_label(r)) for r in rows
            if r["scene"] == scene and r["size"] == size and r["peer"] in ("llvmpipe", "parashade")
-           and isinstance(r.get("nmse"), (int, float)) and math.isfinite(r["nmse"])]
+           and isinstance(r.get(metric), (int, float)) and math.isfinite(r[metric])]
     phong = find(rows, peer="parashade", scene=scene, size=size, method="phong")
     if phong:
-        pts += [(v["frame_ms"] / v["phong_ms"] * phong["frame_ms"], max(v["nmse"], NMSE_FLOOR), v["family"], v["label"])
+        pts += [(v["frame_ms"] / v["phong_ms"] * phong["frame_ms"], max(v[metric], floor), v["family"], v["label"])
                 for v in variants if v["scene"] == scene and v["size"] == size and v.get("phong_ms")
-                and math.isfinite(v["nmse"])]
+                and isinstance(v.get(metric), (int, float)) and math.isfinite(v[metric])]
     if len(pts) < 2:
         return None
     fig, ax = plt.subplots(figsize=(11, 7))
@@ -117,7 +125,7 @@ def speed_error_plot(rows, variants, scene, size, out_dir):
     ax.yaxis.set_minor_formatter(ticker.LogFormatterSciNotation(labelOnlyBase=False, minor_thresholds=(2, 0.5)))
     ax.tick_params(axis="both", which="minor", labelsize=7)
     ax.set_xlabel("frame time, ms (median, whole frame; log)")
-    ax.set_ylabel("NMSE against exact Phong (log)")
+    ax.set_ylabel(ylabel)
     ax.set_title(f"{scene} {size}: speed against error (study points: their run's time ratio to Phong "
                  f"x this run's Phong)", fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
@@ -130,7 +138,7 @@ def speed_error_plot(rows, variants, scene, size, out_dir):
     # axes are final, so that place_labels can see where they fall).
     place_labels(fig, ax, [(t, e, lab.replace("parashade ", "")) for t, e, fam, lab in pts
                            if (t, e, (fam, lab)) in on_front or fam in ("llvmpipe", "parashade")])
-    name = f"speed_error_{scene}_{size}.png"
+    name = f"{prefix}_{scene}_{size}.png"
     fig.savefig(os.path.join(out_dir, name), dpi=110)
     plt.close(fig)
     return name
@@ -227,7 +235,7 @@ def strip_plot(images, scene, size, out_dir):
     diffs = [np.abs(load_rgb(path) - exact).max(axis=2) for _, _, path in cols]
     # One colour scale for every map, up to the largest error of any (at least 1 level, never clipped):
     # the maps compare with each other and the worst pixel keeps its true value. Viridis, as
-    # `parashade render --error-map` and `compare --diff` draw it.
+    # `parashade render --error-map` and `compare --error-map` draw it; gamma 0.4 is their default scale too.
     vmax = max(1.0, max(float(d.max()) for d in diffs))
     # A thumbnail drops most pixels: each map is shrunk by the largest error of each block, so an error of
     # one pixel still shows; the scale is a power law (gamma 0.4), so 1 level shows beside 124.
@@ -410,9 +418,10 @@ def main():
     plots = []
     for size in sizes:
         for scene in scenes:
-            n = speed_error_plot(rows, res["variants"], scene, size, args.output)
-            if n:
-                plots.append(n)
+            for metric in ERROR_AXES:
+                n = speed_error_plot(rows, res["variants"], scene, size, args.output, metric)
+                if n:
+                    plots.append(n)
     if plots:
         md += ["## Speed against error", ""] + [f"- [{p}]({p})" for p in plots] + [""]
     scal = [scaling_plot(d, args.output) for d in res["scaling"]]

@@ -15,7 +15,7 @@ nlohmann::json to_json(const DeviceInfo& d) {
 }
 
 nlohmann::json to_json(const ErrorMetrics& m) {
-  return {{"reference", m.reference},
+  nlohmann::json j = {{"reference", m.reference},
           {"status", metrics_status_name(m.status)},  // says why a figure is null: identical or nothing compared
           {"nmse", number_or_null(m.nmse)},
           {"psnr_db", number_or_null(m.psnr_db)},
@@ -25,6 +25,8 @@ nlohmann::json to_json(const ErrorMetrics& m) {
           {"pixels_over_1_level", m.pixels_over_1_level},
           {"coverage_mismatch", m.coverage_mismatch},
           {"front_surface_mismatch", m.front_surface_mismatch}};  // float depth ties: counted apart, not compared
+  if (m.flip) j["flip"] = {{"metric", "LDR-FLIP"}, {"mean", m.flip->mean}, {"max", m.flip->max}, {"ppd", m.flip->ppd}};
+  return j;
 }
 
 nlohmann::json to_json(const FrameTimings& t) {

@@ -10,6 +10,7 @@
 #include "device_option.hpp"
 #include "plan_cli.hpp"
 #include "progress.hpp"
+#include "../render/error_pictures.hpp"
 #include "parashade/combined.hpp"
 #include "parashade/distributed.hpp"
 #include "parashade/errors.hpp"
@@ -45,6 +46,8 @@ struct RenderArgs {
   PlanArgs plan;
   std::string tune_cache;
   std::string reference_image, error_map, error_reference = "ideal";  // the pictures of the error
+  std::string error_scale = "gamma", error_legend, flip_map;         // docs/pictures.md
+  bool flip = false;                                                 // LDR-FLIP in the figures
   std::string triangle_map;  // the reference's visible triangle per pixel
   std::string distribute, rank_partition, read_scene;  // --distribute: MPI ranks (docs/distributed.md)
   double rank_timeout = kDefaultRankTimeoutSeconds;     // --distribute: the rank watchdog
@@ -93,17 +96,31 @@ RenderOptions render_options(const RenderArgs& a) {
   return o;
 }
 
-// The first picture option given, for messages.
+// The first picture option given (or --flip), for messages.
 std::string picture_option(const RenderOutputs& o) {
-  return !o.error_map.empty() ? "--error-map" : !o.reference_image.empty() ? "--reference-image" : "--triangle-map";
+  return !o.error_map.empty()         ? "--error-map"
+         : !o.reference_image.empty() ? "--reference-image"
+         : !o.triangle_map.empty()    ? "--triangle-map"
+         : !o.flip_map.empty()        ? "--flip-map"
+                                      : "--flip";
 }
 
 RenderOutputs render_outputs(const RenderArgs& a) {
   if (a.error_reference != "ideal" && a.error_reference != "exact")
     throw UsageError("--error-reference must be ideal (the method's own ideal) or exact (exact Phong), not '" +
                      a.error_reference + "'");
-  RenderOutputs o{a.output, a.report, a.reference_image, a.error_map, a.triangle_map, a.error_reference == "exact"};
-  if (o.pictures() && a.no_error)
+  RenderOutputs o;
+  o.image = a.output;
+  o.report = a.report;
+  o.reference_image = a.reference_image;
+  o.error_map = a.error_map;
+  o.triangle_map = a.triangle_map;
+  o.against_exact = a.error_reference == "exact";
+  o.error_scale = parse_error_scale(a.error_scale);
+  o.error_legend = a.error_legend;
+  o.flip_map = a.flip_map;
+  check_error_picture_options({o.error_map, o.error_legend, o.error_scale}, "--error-map");
+  if ((o.pictures() || a.flip) && a.no_error)
     throw UsageError(picture_option(o) + " needs the exact reference, which --no-error skips");
   return o;
 }
@@ -125,6 +142,7 @@ RenderRequest render_request(const RenderArgs& a, const RenderOutputs& outputs) 
   r.error_figures = !a.no_error;
   r.keep_reference = outputs.pictures();
   r.pictures = outputs.picture_options();
+  r.flip = {a.flip || !outputs.flip_map.empty(), outputs.against_exact, !outputs.flip_map.empty()};
   r.use_tuned = !a.no_tuned && !a.explicit_config;
   r.tune_cache = a.tune_cache;
   if (!a.against.empty()) {
@@ -159,7 +177,7 @@ void print_notes(const RenderArgs& a, const ResolvedRender& r) {
 // What the devices the request resolved to allow (after resolve: the selector may come from the environment).
 void check_device_use(const RenderArgs& a, const ResolvedRender& r, const RenderOutputs& outputs) {
   const std::string selector = a.device.empty() ? std::string("the default device") : "'" + a.device + "'";
-  if (outputs.pictures() && r.mode == DeviceMode::bands)
+  if ((outputs.pictures() || a.flip) && r.mode == DeviceMode::bands)
     throw UsageError(picture_option(outputs) + " needs the error figures, which a frame split across devices (" +
                      selector + ") does not compute; render on one device");
   if (a.keep_going && r.mode == DeviceMode::unit_sub_devices)
@@ -357,15 +375,17 @@ void add_output_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
                   "Also write the exact reference (double precision, --error-reference) as an image; any format -o "
                   "takes (EXR keeps the unrounded values)");
   cmd->add_option("--error-map", a->error_map,
-                  "Also write the per-pixel error (levels, largest channel difference, as the report's max) as a "
-                  "viridis colour map with its scale; white: not compared (docs/pictures.md)");
+                  "Also write the per-pixel error (levels, largest channel difference, as the report's max): a viridis "
+                  "colour map of the image's size (white: not compared; scale: --error-scale, --error-legend), or to "
+                  ".exr the values in levels, one float channel (docs/pictures.md)");
   cmd->add_option("--triangle-map", a->triangle_map,
                   "Also write the exact reference's visible triangle per pixel (its index + 1 in 24 bits, R the high "
                   "byte, B the low; 0 where none) as a png, tif or ppm: an ID buffer for studies (docs/pictures.md)");
   cmd->add_option("--error-reference", a->error_reference,
-                  "Reference of --reference-image and --error-map: ideal (the method's own ideal, the report's "
+                  "Reference of --reference-image, --error-map and --flip: ideal (the method's own ideal, the report's "
                   "'implementation' error) or exact (exact Phong, the report's 'method' error)")
       ->capture_default_str();
+  add_error_picture_options(*cmd, a->error_scale, a->error_legend, a->flip, a->flip_map);
 }
 
 }  // namespace

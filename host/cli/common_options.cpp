@@ -33,6 +33,22 @@ void add_deprecated_spelling(CLI::App& cmd, CLI::Option* current, const std::str
   old->excludes(current);
 }
 
+void add_error_picture_options(CLI::App& cmd, std::string& scale, std::string& legend, bool& flip, std::string& flip_map) {
+  cmd.add_option("--error-scale", scale,
+                 "Colours of --error-map's picture: linear, gamma (t^0.4: one-level errors show beside a large "
+                 "maximum), gamma:G, or log (ln(1 + e) / ln(1 + max)); an EXR map holds the values whatever the scale")
+      ->capture_default_str();
+  cmd.add_option("--error-legend", legend,
+                 "Also write the error map's scale (a colour bar labelled in levels) as a picture of its own, as tall "
+                 "as the map (the map itself keeps the image's size, to lay over it)");
+  cmd.add_flag("--flip", flip,
+               "Also compute LDR-FLIP (NVIDIA's perceptual difference, 67 pixels per degree) over the whole frame: its "
+               "mean and max in the figures and the report (about 0.8 s of host time at 1920x1080)");
+  cmd.add_option("--flip-map", flip_map,
+                 "Also write the per-pixel FLIP (implies --flip): magma from 0 to 1 as FLIP's tools draw it, or to "
+                 ".exr the values, one float channel");
+}
+
 const CLI::Validator& size_validator() {
   static const CLI::Validator v(
       [](std::string& text) -> std::string {

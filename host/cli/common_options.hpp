@@ -20,6 +20,9 @@ CLI::Option* add_report_option(CLI::App& cmd, std::string& report, const std::st
 // exclude each other.
 void add_deprecated_spelling(CLI::App& cmd, CLI::Option* current, const std::string& old_name, std::string& value);
 
+// --error-scale, --error-legend, --flip and --flip-map, spelled alike by render and compare (docs/pictures.md).
+void add_error_picture_options(CLI::App& cmd, std::string& scale, std::string& legend, bool& flip, std::string& flip_map);
+
 // --size WIDTHxHEIGHT, checked for its form when the command line is parsed.
 CLI::Option* add_size_option(CLI::App& cmd, std::string& size);
 const CLI::Validator& size_validator();

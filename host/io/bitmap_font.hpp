@@ -1,8 +1,8 @@
 #pragma once
 // A 5x7 pixel font for the few labels parashade draws into images (the error map's scale): digits, '.',
-// '-', ' ' and the lower-case letters of "levels" and "max". Built in because OpenImageIO's render_text
-// needs a TrueType font file, which a fresh machine may not have (Debian's OpenImageIO ships none), and so
-// that the same run writes the same bytes on every machine.
+// '-', ' ' and the lower-case letters of "levels", "max" and the scales' names ("linear", "gamma", "log").
+// Built in because OpenImageIO's render_text needs a TrueType font file, which a fresh machine may not have
+// (Debian's OpenImageIO ships none), and so that the same run writes the same bytes on every machine.
 #include <cstdint>
 #include <string>
 

@@ -77,15 +77,17 @@ class StagedProxy : public OIIO::Filesystem::IOProxy {
 };
 
 // No time stamp in the file (TIFF's DateTime, EXR's capDate), so identical runs give identical bytes.
-OIIO::ImageSpec spec_without_time(int width, int height, OIIO::TypeDesc type) {
-  OIIO::ImageSpec spec(width, height, 3, type);
+OIIO::ImageSpec spec_without_time(int width, int height, int channels, OIIO::TypeDesc type) {
+  OIIO::ImageSpec spec(width, height, channels, type);
   spec.attribute("DateTime", "");
   return spec;
 }
 
-// Pixel data as the file stores it: 3 channels, float levels/255 for EXR, else 8-bit.
+// Pixel data as the file stores it: 3 channels, float levels/255 for EXR, else 8-bit; or one float channel
+// of values (stage_values).
 struct Pixels {
   OIIO::TypeDesc type;
+  int channels = 3;
   std::vector<std::uint8_t> u8;
   std::vector<float> f32;
   const void* data() const {
@@ -113,7 +115,7 @@ Pixels pixels_for(const RenderedImage& image, bool as_float) {
 }
 
 // Writes the staged file; a failure is recorded in `file` (its error()).
-void write_file(StagedFile& file, const RenderedImage& image, bool as_float) {
+void write_file(StagedFile& file, int width, int height, const Pixels& px) {
   const std::string name = file.temporary().string();
   StagedProxy proxy(file);  // declared first: it must outlive `out`, whose destructor may still use it
   auto out = OIIO::ImageOutput::create(name);
@@ -127,8 +129,9 @@ void write_file(StagedFile& file, const RenderedImage& image, bool as_float) {
     proxy.fd_ = file.open_fd();
     out->set_ioproxy(&proxy);
   }
-  const Pixels px = pixels_for(image, as_float);
-  if (!out->open(name, spec_without_time(image.width, image.height, px.type))) return file.fail(out->geterror());
+  OIIO::ImageSpec spec = spec_without_time(width, height, px.channels, px.type);
+  if (px.channels == 1) spec.channelnames = {"Y"};
+  if (!out->open(name, spec)) return file.fail(out->geterror());
   const bool written = out->write_image(px.type, px.data());
   if (!written) file.fail(out->geterror());
   if (!out->close()) file.fail(out->geterror());
@@ -207,11 +210,30 @@ StagedFile stage_image(const fs::path& path, const RenderedImage& image) {
     throw InputError("cannot write " + path.string() + ": the image is empty or inconsistent");
   check_image_destination(path);  // before touching the file system
   StagedFile file(path);
-  write_file(file, image, lower_extension(path) == ".exr");
+  write_file(file, image.width, image.height, pixels_for(image, lower_extension(path) == ".exr"));
   take_global_oiio_error();
   if (!file.error().empty()) throw InputError("cannot write " + path.string() + ": " + file.error());
   return file;
 }
+
+StagedFile stage_values(const fs::path& path, const std::vector<float>& values, int width, int height) {
+  if (width < 1 || height < 1 || values.size() != std::size_t(width) * std::size_t(height))
+    throw InputError("cannot write " + path.string() + ": the values are empty or inconsistent");
+  check_image_destination(path);
+  if (lower_extension(path) != ".exr")
+    throw InputError("cannot write " + path.string() + ": values are written as OpenEXR only (.exr)");
+  StagedFile file(path);
+  Pixels px;
+  px.type = OIIO::TypeDesc::FLOAT;
+  px.channels = 1;
+  px.f32 = values;
+  write_file(file, width, height, px);
+  take_global_oiio_error();
+  if (!file.error().empty()) throw InputError("cannot write " + path.string() + ": " + file.error());
+  return file;
+}
+
+bool is_exr(const fs::path& path) { return lower_extension(path) == ".exr"; }
 
 RenderedImage read_image(const fs::path& path, int* channels_out) {
   const std::string name = "cannot read " + path.string();

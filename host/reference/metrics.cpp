@@ -37,6 +37,14 @@ void check_sizes(const RenderedImage& image, const std::vector<std::uint8_t>& re
 
 bool is_flipped(const std::vector<std::uint8_t>& flipped, std::size_t p) { return !flipped.empty() && flipped[p] != 0; }
 
+// ", FLIP 0.0123 (LDR-FLIP mean; max 0.410)" when FLIP was computed.
+std::string flip_note(const ErrorMetrics& e) {
+  if (!e.flip) return "";
+  char buf[96];
+  std::snprintf(buf, sizeof buf, ", FLIP %.4g (LDR-FLIP mean; max %.3g)", e.flip->mean, e.flip->max);
+  return buf;
+}
+
 // ", 4 front-surface flips (float depth ties, not compared)" when there are any.
 std::string front_surface_note(const ErrorMetrics& e) {
   if (e.front_surface_mismatch == 0) return "";
@@ -59,7 +67,7 @@ std::string describe_error(const ErrorMetrics& e) {
   if (e.status == MetricsStatus::nothing_compared) {
     std::snprintf(buf, sizeof buf, "no pixel covered by both (NMSE, PSNR, max and mean undefined), %llu coverage mismatches",
                   (unsigned long long)e.coverage_mismatch);
-    return buf + front_surface_note(e);
+    return buf + front_surface_note(e) + flip_note(e);
   }
   char psnr[32];
   if (e.status == MetricsStatus::identical) std::snprintf(psnr, sizeof psnr, "exact");
@@ -67,7 +75,7 @@ std::string describe_error(const ErrorMetrics& e) {
   std::snprintf(buf, sizeof buf, "NMSE %.3g, PSNR %s, max %.2f, mean %.3f levels, %llu px > 1 level, %llu coverage mismatches",
                 e.nmse, psnr, e.max_abs, e.mean_abs, (unsigned long long)e.pixels_over_1_level,
                 (unsigned long long)e.coverage_mismatch);
-  return buf + front_surface_note(e);
+  return buf + front_surface_note(e) + flip_note(e);
 }
 
 glm::dvec3 channel_errors(const RenderedImage& image, std::size_t pixel, const glm::dvec3& reference) {

@@ -1,5 +1,6 @@
 // The error of a frame against the exact reference (render_step.hpp).
 #include "parashade/combined.hpp"
+#include "parashade/flip.hpp"
 #include "parashade/geometry_stage.hpp"
 #include "parashade/render_step.hpp"
 #include "parashade/triangle_choice.hpp"
@@ -44,10 +45,17 @@ ErrorFigures error_against(const ReferenceImage& ref, Method method, const Rende
 }
 
 ErrorFigures error_figures(const Scene& scene, const RenderOptions& options, const RenderedImage& image,
-                           bool keep_reference) {
+                           bool keep_reference, const FlipRequest& flip) {
   const ScreenGeometry g = reference_geometry(scene, options.method, options.chooses_per_triangle());
   ReferenceImage ref = render_reference(scene, g, options.method);
   ErrorFigures e = error_against(ref, options.method, image);
+  if (flip.enabled) {
+    // The whole frame, background included, as FLIP's own tools compare two image files.
+    std::vector<float> map = ldr_flip(flip_input(flip.against_exact ? ref.exact : ref.ideal), flip_input(image),
+                                      image.width, image.height);
+    (flip.against_exact ? e.method : e.implementation).flip = flip_figures(map);
+    if (flip.keep_map) e.flip_map = std::move(map);
+  }
   if (options.chooses_per_triangle()) e.choice_pixels = choice_pixels_of(scene, options, g, ref);
   if (keep_reference) e.reference = std::move(ref);
   return e;

@@ -5,6 +5,7 @@
 
 #include "error_pictures.hpp"
 #include "parashade/errors.hpp"
+#include "parashade/metrics.hpp"
 #include "parashade/output_file.hpp"
 #include "parashade/render_report.hpp"
 #include "parashade/report_header.hpp"
@@ -26,7 +27,15 @@ std::vector<StagedFile> stage_pictures(const RenderOutputs& o, const RenderResul
     lines.push_back("reference image " + o.reference_image.string() + ": " + name);
   }
   if (!o.error_map.empty()) {
-    files.push_back(stage_error_map(o.error_map, r.image, ref.covered, values, front_surface_flips(r.image, ref), lines));
+    const std::vector<double> errors = pixel_errors(r.image, ref.covered, values, front_surface_flips(r.image, ref));
+    const std::size_t first = lines.size();
+    for (StagedFile& f : stage_error_pictures({o.error_map, o.error_legend, o.error_scale}, errors, ref.width, ref.height,
+                                              lines))
+      files.push_back(std::move(f));
+    for (std::size_t i = first; i < lines.size(); ++i) lines[i] += ", against " + name;
+  }
+  if (!o.flip_map.empty()) {
+    files.push_back(stage_flip_map(o.flip_map, r.errors->flip_map, ref.width, ref.height, lines));
     lines.back() += ", against " + name;
   }
   if (!o.triangle_map.empty()) {
@@ -44,6 +53,7 @@ std::vector<std::string> RenderOutputs::picture_options() const {
   if (!reference_image.empty()) given.push_back("--reference-image");
   if (!error_map.empty()) given.push_back("--error-map");
   if (!triangle_map.empty()) given.push_back("--triangle-map");
+  if (!flip_map.empty()) given.push_back("--flip-map");
   return given;
 }
 
@@ -52,7 +62,9 @@ void RenderOutputs::declare(CommandFiles& files) const {
   files.output("--report", report);
   files.output("--reference-image", reference_image, OutputKind::image);
   files.output("--error-map", error_map, OutputKind::image);
+  files.output("--error-legend", error_legend, OutputKind::image);
   files.output("--triangle-map", triangle_map, OutputKind::triangle_map);
+  files.output("--flip-map", flip_map, OutputKind::image);
 }
 
 std::vector<std::string> RenderOutputs::write(const RenderResult& r) const {

@@ -117,8 +117,9 @@ void note_error_floor(ResolvedRender& r) {
 
 // Host bytes a pixel of what a render keeps beyond the frame it shades, rounded up from the peak resident
 // memory of 4096x4096 Phong frames with and without each option (+35, +7, +3.3 and +0.5; docs/robustness.md).
+// FLIP: its two float RGB inputs and its map (24 + 4; its bands of rows are a few MB whatever the frame).
 constexpr std::uint64_t kFloatBytesPerPixel = 40, kReferenceImageBytesPerPixel = 8, kErrorMapBytesPerPixel = 8,
-                        kTriangleMapBytesPerPixel = 4;
+                        kTriangleMapBytesPerPixel = 4, kFlipBytesPerPixel = 28, kFlipMapBytesPerPixel = 4;
 
 FrameExtras frame_extras(const RenderRequest& request) {
   FrameExtras x;
@@ -127,9 +128,11 @@ FrameExtras frame_extras(const RenderRequest& request) {
     x.options += (x.options.empty() ? "" : ", ") + option;
   };
   if (request.options.float_output) add("--float", kFloatBytesPerPixel);
+  if (request.flip.enabled) add("--flip", kFlipBytesPerPixel);
   for (const std::string& p : request.pictures)
     add(p, p == "--reference-image" ? kReferenceImageBytesPerPixel
            : p == "--error-map"     ? kErrorMapBytesPerPixel
+           : p == "--flip-map"      ? kFlipMapBytesPerPixel
                                     : kTriangleMapBytesPerPixel);
   return x;
 }

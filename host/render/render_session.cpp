@@ -102,7 +102,7 @@ RenderResult render(const ResolvedRender& r, const std::function<void(int, int)>
   out.shares = session.shares();
   // A split frame's bands come from several devices: no error figures in that mode.
   if (r.request.error_figures && r.mode != DeviceMode::bands)
-    out.errors = error_figures(r.scene, r.options, out.image, r.request.keep_reference);
+    out.errors = error_figures(r.scene, r.options, out.image, r.request.keep_reference, r.request.flip);
   // Fixed point: the registers' wraps and saturations, from the golden models (the kernels count none).
   if (r.options.arith.fixed && r.mode != DeviceMode::bands) out.registers = count_register_events(r.scene, r.options);
   return out;

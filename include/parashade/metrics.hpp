@@ -12,11 +12,13 @@
 //   nothing_compared  no pixel covered by both: nmse, psnr_db, max_abs, mean_abs NaN (undefined; JSON null)
 // Throws InputError when the image and reference sizes differ.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "parashade/flip.hpp"
 #include "parashade/image.hpp"
 
 namespace parashade {
@@ -41,6 +43,8 @@ struct ErrorMetrics {
   // Pixels where the image shows another front surface than the reference's, where float depth cannot
   // tell them apart (ReferenceImage::depth_ties, front_surface_flips): counted apart, not compared.
   std::uint64_t front_surface_mismatch = 0;
+  // LDR-FLIP of the whole frames (flip.hpp), when asked for (render --flip, compare --flip).
+  std::optional<FlipFigures> flip;
 };
 
 // Uses image.rgb_float when present (the unquantized output), else the 8-bit values.

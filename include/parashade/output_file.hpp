@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace parashade {
 
@@ -57,6 +58,14 @@ struct RenderedImage;  // image.hpp
 // all of them were written. Every write of OpenImageIO's plugins is checked; TIFF and EXR get no time
 // stamp, so identical runs write identical bytes. Throws InputError (the temporary file removed).
 StagedFile stage_image(const std::filesystem::path& path, const RenderedImage& image);
+
+// One float channel ("Y") of `values` (width x height, row 0 at the top; NaN kept) as an OpenEXR file, staged
+// like stage_image: the per-pixel error maps' values (render --error-map, compare --error-map, --flip-map).
+// Throws InputError for a size mismatch, a path that is not .exr or an unwritable one.
+StagedFile stage_values(const std::filesystem::path& path, const std::vector<float>& values, int width, int height);
+
+// True when `path` names an OpenEXR file (.exr, any case): the float format, where maps hold values.
+bool is_exr(const std::filesystem::path& path);
 
 // Writes `text` into a staged file (not yet renamed; commit() it). Throws InputError naming the path and
 // the system's error.

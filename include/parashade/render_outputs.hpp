@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "parashade/error_map.hpp"
 #include "parashade/render_step.hpp"
 
 namespace parashade {
@@ -15,13 +16,19 @@ struct RenderOutputs {
   // The exact reference as an image, the per-pixel error as a colour map, the reference's visible triangle
   // per pixel; each empty for none. They need the result's reference (RenderRequest::keep_reference).
   std::filesystem::path reference_image, error_map, triangle_map;
-  bool against_exact = false;  // reference_image and error_map against exact Phong, not the method's ideal
+  bool against_exact = false;  // reference_image, error_map and FLIP against exact Phong, not the method's ideal
+  // The error map's colour scale and its legend as a picture of its own (empty: none); the FLIP map (empty:
+  // none), which needs the result's ErrorFigures::flip_map (RenderRequest::flip.keep_map).
+  ErrorScale error_scale;
+  std::filesystem::path error_legend, flip_map;
 
-  bool pictures() const { return !reference_image.empty() || !error_map.empty() || !triangle_map.empty(); }
-  // The picture options given ("--reference-image", "--error-map", "--triangle-map"), in that order.
+  bool pictures() const {
+    return !reference_image.empty() || !error_map.empty() || !triangle_map.empty() || !flip_map.empty();
+  }
+  // The picture options given ("--reference-image", "--error-map", "--triangle-map", "--flip-map"), in that order.
   std::vector<std::string> picture_options() const;
   // Declares them to `files` by render's option names (-o, --report, --reference-image, --error-map,
-  // --triangle-map).
+  // --error-legend, --triangle-map, --flip-map).
   void declare(CommandFiles& files) const;
   // Writes them all; returns one line per picture saying what it holds (for the summary).
   std::vector<std::string> write(const RenderResult& r) const;

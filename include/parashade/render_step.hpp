@@ -38,6 +38,14 @@ struct DeviceSelectorError : UsageError {
 };
 
 // What a caller asks for. Values are checked by resolve_render, not here.
+// render --flip / --flip-map: LDR-FLIP (flip.hpp) of the frame against one of its references, whose
+// ErrorMetrics then carries its mean. About 0.8 s of host time per 1920x1080 frame, so only when asked.
+struct FlipRequest {
+  bool enabled = false;
+  bool against_exact = false;  // exact Phong (ErrorFigures::method), else the method's ideal (implementation)
+  bool keep_map = false;       // ErrorFigures::flip_map
+};
+
 struct RenderRequest {
   std::filesystem::path scene_file;
   std::optional<std::pair<int, int>> size;  // replaces the scene's resolution (check_resolution'd by the caller)
@@ -50,6 +58,7 @@ struct RenderRequest {
   int frames = 5, warmup = 1;
   bool error_figures = true;   // the exact reference and the error against it
   bool keep_reference = false;  // the reference's values and visible triangles in the result (pictures)
+  FlipRequest flip;             // LDR-FLIP against a reference (render --flip, --flip-map)
   // The pictures asked for, by option name ("--reference-image", "--error-map", "--triangle-map"): each
   // holds a frame of its own, budgeted with --float against the host memory limit before rendering.
   std::vector<std::string> pictures;
@@ -95,11 +104,13 @@ struct ErrorFigures {
   ErrorMetrics method;          // against exact Phong
   std::optional<ChoicePixels> choice_pixels;  // a per-triangle choice: visible pixels per method
   std::optional<ReferenceImage> reference;    // when asked for (pictures)
+  std::vector<float> flip_map;                // FlipRequest::keep_map: LDR-FLIP per pixel
 };
 
-// The exact reference of `scene` for `options`' method and the image's error against it.
+// The exact reference of `scene` for `options`' method and the image's error against it (and its FLIP when
+// `flip` asks).
 ErrorFigures error_figures(const Scene& scene, const RenderOptions& options, const RenderedImage& image,
-                           bool keep_reference);
+                           bool keep_reference, const FlipRequest& flip = {});
 // The exact reference of `scene` shaded by `method` (its ideal and exact Phong), for callers that compare
 // many frames of one scene against it (tune, scaling), and a frame's error against it.
 ReferenceImage exact_reference(const Scene& scene, Method method);

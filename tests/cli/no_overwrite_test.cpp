@@ -94,7 +94,7 @@ TEST_F(CliNoOverwrite, CompareRefusesTheImagesItCompares) {
   const fs::path a = in_dir() / "a.png";
   fs::copy_file(image(), a);
   const std::string bytes = bytes_of(a);
-  for (const char* option : {"--report", "--diff"}) {
+  for (const char* option : {"--report", "--error-map", "--flip-map"}) {
     const RunResult r = run_parashade({"compare", a.string(), image().string(), option, a.string()});
     EXPECT_TRUE(fails_with(r, kUsage, {option}));
     EXPECT_EQ(bytes_of(a), bytes) << option;

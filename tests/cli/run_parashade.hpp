@@ -36,7 +36,11 @@ inline std::ostream& operator<<(std::ostream& os, const RunResult& r) {
   return os << "\n  stdout: " << r.out << "\n  stderr: " << r.err;
 }
 
-inline std::filesystem::path parashade_binary() { return PARASHADE_BINARY; }
+// The binary under test: this build's, or PARASHADE_TEST_BINARY's (to see new tests fail on an older build).
+inline std::filesystem::path parashade_binary() {
+  const char* other = std::getenv("PARASHADE_TEST_BINARY");
+  return other && *other ? std::filesystem::path(other) : std::filesystem::path(PARASHADE_BINARY);
+}
 
 namespace detail {
 

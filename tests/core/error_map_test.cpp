@@ -1,12 +1,13 @@
-// The per-pixel error and its colour map (metrics.hpp pixel_errors, error_map.hpp) on a known pair: a ramp
-// and the ramp with three pixels changed by amounts chosen here, so every expected figure is known
-// without the code under test.
+// The per-pixel error, its colour map on each scale and its legend (metrics.hpp pixel_errors, error_map.hpp) on
+// a known pair: a ramp and the ramp with three pixels changed by amounts chosen here, so every expected figure is
+// known without the code under test.
 #include "parashade/error_map.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
+#include <tuple>
 #include <vector>
 
 #include "parashade/errors.hpp"
@@ -89,11 +90,13 @@ TEST(ErrorScale, TopIsTheLargestFiniteErrorAndAtLeastOneLevel) {
                                        << int(rgb[2]);
 }
 
-TEST(ErrorMapImage, MapPixelsTakeTheirColoursOnTheScaleToTheMaximum) {
+constexpr ErrorScale kLinear{ErrorScale::linear, 1.0};
+
+TEST(ErrorMapImage, MapHasTheImagesSizeAndItsPixelsTheirColoursOnTheScale) {
   const KnownPair k;
-  const RenderedImage map = error_map_image(pixel_errors(k.image, k.covered, k.reference), W, H);
-  ASSERT_GT(map.width, W);  // the scale beside the map
-  ASSERT_GE(map.height, H);
+  const RenderedImage map = error_map_image(pixel_errors(k.image, k.covered, k.reference), W, H, kLinear);
+  ASSERT_EQ(map.width, W);  // pixel for pixel over the image: no scale beside it (issue 47)
+  ASSERT_EQ(map.height, H);
   EXPECT_TRUE(has_colour(map, 10, 5, kViridis[255]));  // the maximum: the top colour
   EXPECT_TRUE(has_colour(map, 3, 2, kViridis[89]));
   EXPECT_TRUE(has_colour(map, 20, 1, kViridis[13]));   // 255 / 20 = 12.75
@@ -105,24 +108,57 @@ TEST(ErrorMapImage, MapPixelsTakeTheirColoursOnTheScaleToTheMaximum) {
   EXPECT_EQ(top_coloured, 1);
 }
 
-TEST(ErrorMapImage, TheScaleRunsFromNoErrorAtTheBottomToTheTopColourWithLabels) {
+TEST(ErrorMapImage, GammaAndLogColourByTheirFormulas) {
   const KnownPair k;
-  const RenderedImage map = error_map_image(pixel_errors(k.image, k.covered, k.reference), W, H);
-  int top_row = -1, bottom_row = -1, black = 0;
-  for (int y = 0; y < map.height; ++y)
-    for (int x = W; x < map.width; ++x) {
-      if (has_colour(map, x, y, kViridis[255]) && top_row < 0) top_row = y;
-      if (has_colour(map, x, y, kViridis[0])) bottom_row = y;
-      black += has_colour(map, x, y, {0, 0, 0}) ? 1 : 0;
-    }
-  ASSERT_GE(top_row, 0) << "no top colour in the scale";
-  ASSERT_GE(bottom_row, 0) << "no zero colour in the scale";
-  EXPECT_LT(top_row, bottom_row);
-  EXPECT_GT(bottom_row - top_row, 40);  // the bar is taller than the 8-row map
-  EXPECT_GT(black, 100);                // frame, ticks and digits
+  const std::vector<double> e = pixel_errors(k.image, k.covered, k.reference);
+  const RenderedImage gamma = error_map_image(e, W, H, ErrorScale{});  // the default: gamma 0.4
+  const RenderedImage log = error_map_image(e, W, H, {ErrorScale::log, 1.0});
+  for (const auto& [x, y, err] : {std::tuple{3, 2, 7.0}, std::tuple{20, 1, 1.0}, std::tuple{10, 5, 20.0}}) {
+    EXPECT_TRUE(has_colour(gamma, x, y, kViridis[std::size_t(std::lround(255 * std::pow(err / 20, 0.4)))]));
+    EXPECT_TRUE(has_colour(log, x, y, kViridis[std::size_t(std::lround(255 * std::log(1 + err) / std::log(21.0)))]));
+  }
 }
 
-TEST(ErrorMapImage, WrongCountIsRefused) { EXPECT_THROW(error_map_image({1.0, 2.0}, 3, 1), InputError); }
+TEST(ErrorScale, TheDefaultShowsOneLevelBesideA49LevelMaximum) {
+  // Issue 47: a 49-level maximum with a 0.31 mean gave a black map on the linear scale.
+  EXPECT_EQ(error_colour_index(1.0, 49.0, kLinear), 5);
+  EXPECT_EQ(error_colour_index(1.0, 49.0, ErrorScale{}), 54);  // 255 (1/49)^0.4 = 53.9
+  EXPECT_EQ(error_colour_index(1.0, 49.0, {ErrorScale::log, 1.0}), 45);  // 255 ln 2 / ln 50 = 45.2
+  EXPECT_EQ(error_colour_index(0.0, 49.0, ErrorScale{}), 0);
+  EXPECT_EQ(error_colour_index(49.0, 49.0, {ErrorScale::log, 1.0}), 255);
+}
+
+TEST(ErrorScale, ParsesItsNamesAndRefusesOthers) {
+  EXPECT_EQ(parse_error_scale("linear").kind, ErrorScale::linear);
+  EXPECT_EQ(parse_error_scale("log").kind, ErrorScale::log);
+  EXPECT_EQ(parse_error_scale("gamma").exponent, 0.4);
+  EXPECT_EQ(parse_error_scale("gamma:0.5").exponent, 0.5);
+  EXPECT_EQ(error_scale_name(parse_error_scale("gamma:0.5")), "gamma 0.5");
+  for (const char* bad : {"", "Linear", "gamma:", "gamma:0", "gamma:x", "gamma:5", "log:2"})
+    EXPECT_THROW(parse_error_scale(bad), UsageError) << bad;
+}
+
+TEST(ErrorLegendImage, TheBarRunsFromNoErrorAtTheBottomToTheTopColourWithLabels) {
+  for (const ErrorScale& scale : {kLinear, ErrorScale{}, ErrorScale{ErrorScale::log, 1.0}}) {
+    const RenderedImage legend = error_legend_image(20.0, true, scale, H);
+    EXPECT_GE(legend.height, H);
+    int top_row = -1, bottom_row = -1, black = 0;
+    for (int y = 0; y < legend.height; ++y)
+      for (int x = 0; x < legend.width; ++x) {
+        if (has_colour(legend, x, y, kViridis[255]) && top_row < 0) top_row = y;
+        if (has_colour(legend, x, y, kViridis[0])) bottom_row = y;
+        black += has_colour(legend, x, y, {0, 0, 0}) ? 1 : 0;
+      }
+    ASSERT_GE(top_row, 0) << "no top colour in the bar";
+    ASSERT_GE(bottom_row, 0) << "no zero colour in the bar";
+    EXPECT_LT(top_row, bottom_row);
+    EXPECT_GT(bottom_row - top_row, 40);  // the bar is taller than the 8-row map
+    EXPECT_GT(black, 100);                // frame, ticks and digits
+  }
+  EXPECT_EQ(error_legend_image(20.0, true, ErrorScale{}, 600).height, 600);  // as tall as a tall map
+}
+
+TEST(ErrorMapImage, WrongCountIsRefused) { EXPECT_THROW(error_map_image({1.0, 2.0}, 3, 1, ErrorScale{}), InputError); }
 
 }  // namespace
 }  // namespace parashade

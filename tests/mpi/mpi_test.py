@@ -141,19 +141,20 @@ def identity(tmp, mode, cases):
 
 
 def error_pictures(tmp, mode):
-    """--error-map and --reference-image under --distribute: rank 0 has the whole image and scene, so its
-    files are the one-process render's, byte for byte."""
+    """--error-map, --error-legend, --reference-image and --flip-map under --distribute: rank 0 has the whole
+    image and scene, so its files are the one-process render's, byte for byte."""
     opts = ["--size", SIZE, "-q", "--no-tuned", "--warmup", "0", "--frames", "1"]
     files = {}
     for who in ("one", "dist"):
-        files[who] = [os.path.join(tmp, "%s_%s.png" % (who, k)) for k in ("image", "map", "reference")]
+        files[who] = [os.path.join(tmp, "%s_%s.png" % (who, k)) for k in ("image", "map", "reference", "legend",
+                                                                          "flip")]
         args = ["render", SCENE, "-o", files[who][0], "--error-map", files[who][1], "--reference-image",
-                files[who][2]] + opts
+                files[who][2], "--error-legend", files[who][3], "--flip-map", files[who][4]] + opts
         rc, out, err = run([PARASHADE] + args) if who == "one" else mpirun(2, args + ["--distribute", mode])
         check(rc == 0, "%s error pictures (%s): exit %d: %s" % (mode, who, rc, err.strip()))
         if rc != 0:
             return
-    for k, name in enumerate(("image", "error map", "reference image")):
+    for k, name in enumerate(("image", "error map", "reference image", "error legend", "FLIP map")):
         check(os.path.exists(files["dist"][k]) and same_bytes(files["one"][k], files["dist"][k]),
               "%s: the distributed %s differs from the one-process one" % (mode, name))
 

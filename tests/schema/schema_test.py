@@ -102,6 +102,30 @@ def validate_report(kind, path):
     print("ok: %s (%d required keys each shown to be needed)" % (kind, len(required_keys(v))), flush=True)
 
 
+def flip_reports(scene, small, out):
+    """Issue 47: render --flip and compare --flip --fail-percent write their figures as the schemas say; a FLIP
+    mean above 1, an unknown max_at channel or an infinite PSNR does not validate."""
+    run(["render", scene, *small, "--frames", "1", "--warmup", "0", "-q", "--no-tuned", "--flip", "-o", out("f.png"),
+         "--report", out("render-flip.json")])
+    doc = load(out("render-flip.json"))
+    check(errors(validator("render"), doc) == [], "render --flip report does not validate")
+    check("flip" in doc["error"]["implementation"], "render --flip: no error.implementation.flip")
+    run(["compare", out("f.png"), out("r.png"), "--flip", "--fail", "1", "--fail-percent", "100", "--report",
+         out("compare-flip.json")])
+    doc = load(out("compare-flip.json"))
+    v = validator("compare")
+    check(errors(v, doc) == [], "compare --flip report does not validate: %s" % errors(v, doc))
+    for path, bad in ((("error", "flip", "mean"), 1.5), (("max_at",), {"x": 0, "y": 0, "channel": "A"}),
+                      (("error", "psnr_db"), "inf")):
+        broken = json.loads(json.dumps(doc))
+        target = broken
+        for key in path[:-1]:
+            target = target[key]
+        target[path[-1]] = bad
+        check(errors(v, broken) != [], "compare report with %s = %r still validates" % (".".join(path), bad))
+    print("ok: render --flip, compare --flip --fail-percent", flush=True)
+
+
 def main():
     with tempfile.TemporaryDirectory(prefix="parashade-schema-") as tmp:
         return run_all(tmp)
@@ -144,6 +168,7 @@ def run_all(tmp):
     validate_report("combinations", out("combinations.json"))
     run(["compare", out("r.png"), out("r.png"), "--report", out("compare.json")])
     validate_report("compare", out("compare.json"))
+    flip_reports(scene, small, out)
 
     # Every schema file is a report kind this test wrote (or the scene or common schema): none unchecked.
     kinds = {os.path.basename(p)[: -len(".schema.json")] for p in glob.glob(os.path.join(SCHEMAS, "*.schema.json"))}
