@@ -1,6 +1,6 @@
 #pragma once
 // What bench_frame and bench_llvmpipe share: the device they time (PARASHADE_DEVICE, as `render --device`;
-// default the first) and its fill limit, the ceiling of every frame benchmark.
+// else the default device) and its fill limit, the ceiling of every frame benchmark.
 #include <cstdlib>
 #include <memory>
 

@@ -3,7 +3,7 @@
 // Mtriangle/s, for the procedural sphere at three tessellations, the teapot, the robot and the Stanford
 // bunny (PARASHADE_MESH_DIR) at 1920x1080, each method; Gouraud on the teapot through the modeled shading
 // units (units/teapot/UNIT/ARITH, with the modeled clocks); and the device's fill limit as the ceiling.
-//   PARASHADE_DEVICE  device index or name substring (default: the first device)
+//   PARASHADE_DEVICE  device index or name substring (default: the default device, device.hpp)
 //   PARASHADE_MESH_DIR  the shared meshes; the bunny is skipped (with a message) without it
 // Write results with --benchmark_out=FILE --benchmark_out_format=json (PoCL may print to stdout).
 #include <cstdio>

@@ -8,7 +8,7 @@
 //   bench_kernel_ab SCENE --b "-D NAME" [--a OPTIONS] [--method phong] [--max-error L] [--size WxH]
 //                   [--tile N] [--pairs 200] [--same-image] [--json FILE]
 //
-// The device is PARASHADE_DEVICE's (as `render --device`), default the first. Not a Google Benchmark
+// The device is PARASHADE_DEVICE's (as `render --device`), else the default device. Not a Google Benchmark
 // program: Google Benchmark times one case at a time, and the host's phases then fall on one side.
 #include <algorithm>
 #include <cstdio>

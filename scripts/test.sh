@@ -1,5 +1,6 @@
 #!/bin/sh
-# README's test command: installs the Debian packages, builds, and runs the whole test suite; then, as CI
+# README's test command: installs the Debian packages and the test-only tools (install-deps.sh --test:
+# Intel's CPU OpenCL runtime), builds, and runs the whole test suite; then, as CI
 # does, runs each libFuzzer target for a bounded time (scripts/fuzz.sh) and the test suite under
 # AddressSanitizer + UndefinedBehaviorSanitizer (scripts/sanitize.sh). Any failure, crash or sanitizer
 # report fails the script. Tests that need the shared meshes read PARASHADE_MESH_DIR and skip with a
@@ -9,7 +10,7 @@
 # it), PARASHADE_FUZZ_SECONDS (default 60) is the fuzzing time per target. Timings: docs/robustness.md.
 set -eu
 cd "$(dirname "$0")/.."
-./scripts/install-deps.sh
+./scripts/install-deps.sh --test
 ./scripts/build.sh
 export POCL_CACHE_DIR="${POCL_CACHE_DIR:-$PWD/build/pocl-cache}"
 ctest --test-dir build --output-on-failure --parallel "$(nproc)" --timeout 600

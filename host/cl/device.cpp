@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <sstream>
+#include <tuple>
 
 #include "captured_stderr.hpp"
 #include "parashade/errors.hpp"
@@ -123,7 +124,43 @@ std::string device_list(const std::vector<Found>& found) {
   return s.str();
 }
 
+bool is_pocl(const DeviceInfo& d) { return lower(d.platform) == "portable computing language"; }
+
+// PoCL's multi-threaded CPU device: "pthread-<cpu>" (PoCL 3), "cpu-<cpu>" (PoCL 4 and later).
+bool is_pocl_threaded(const DeviceInfo& d) {
+  const std::string name = lower(d.name);
+  return is_pocl(d) && (name.rfind("pthread-", 0) == 0 || name.rfind("cpu-", 0) == 0);
+}
+
+bool is_pocl_basic(const DeviceInfo& d) { return is_pocl(d) && lower(d.name).rfind("basic-", 0) == 0; }
+
+// Whether `a` is a better default than `b` (default_device's order).
+bool better_default(const DeviceInfo& a, const DeviceInfo& b, bool threaded_pocl) {
+  const auto rank = [threaded_pocl](const DeviceInfo& d) {
+    return std::make_tuple(!is_simulator(d), !(threaded_pocl && is_pocl_basic(d)), d.compute_units, is_pocl_threaded(d));
+  };
+  if (rank(a) != rank(b)) return rank(a) > rank(b);
+  return std::tie(a.platform, a.name, a.index) < std::tie(b.platform, b.name, b.index);
+}
+
 }  // namespace
+
+bool is_simulator(const DeviceInfo& d) {
+  return lower(d.platform).find("oclgrind") != std::string::npos || lower(d.name).find("oclgrind") != std::string::npos;
+}
+
+int default_device(const std::vector<DeviceInfo>& devices) {
+  const bool threaded_pocl = std::any_of(devices.begin(), devices.end(), is_pocl_threaded);
+  int best = -1;
+  for (std::size_t i = 0; i < devices.size(); ++i)
+    if (best < 0 || better_default(devices[i], devices[std::size_t(best)], threaded_pocl)) best = int(i);
+  return best;
+}
+
+std::string default_device_note(const DeviceInfo& d) {
+  return "parashade: device: " + d.name + " (" + d.platform + ", " + std::to_string(d.compute_units) +
+         " compute unit" + (d.compute_units == 1 ? "" : "s") + "; the default: --device to choose)";
+}
 
 std::vector<DeviceInfo> list_devices() {
   try {
@@ -212,7 +249,12 @@ std::unique_ptr<Device> open_device(const std::string& selector) {
   } catch (const cl::Error&) {
     rethrow_cl_error("listing OpenCL devices");
   }
-  if (selector.empty()) return std::make_unique<Device>(found.front().device, found.front().info);
+  if (selector.empty()) {
+    std::vector<DeviceInfo> infos;
+    for (const Found& f : found) infos.push_back(f.info);
+    const Found& chosen = found[std::size_t(default_device(infos))];
+    return std::make_unique<Device>(chosen.device, chosen.info);
+  }
   const bool numeric = std::all_of(selector.begin(), selector.end(), [](char c) { return std::isdigit(c); });
   if (numeric) {
     const std::size_t index = std::stoul(selector);

@@ -22,9 +22,10 @@ int run(const DevicesArgs& a) {
   files.output("--report", a.report);
   files.check();
   const auto devices = list_devices();
+  const int chosen = default_device(devices);  // what render takes without --device and PARASHADE_DEVICE
   nlohmann::json list = nlohmann::json::array();
   for (const auto& d : devices) list.push_back(to_json(d));
-  if (!a.report.empty()) write_report(a.report, {{"devices", list}}, "devices");
+  if (!a.report.empty()) write_report(a.report, {{"devices", list}, {"default_device", chosen}}, "devices");
   if (a.json) {  // deprecated: the bare array, as before, for one release
     std::cerr << "parashade: warning: devices --json is deprecated and goes in the next release; use --report FILE "
                  "(a versioned report, docs/reports.md)\n";
@@ -32,7 +33,7 @@ int run(const DevicesArgs& a) {
     return 0;
   }
   for (const auto& d : devices) {
-    std::cout << d.index << ": " << d.name << "\n"
+    std::cout << d.index << ": " << d.name << (d.index == chosen ? "  (the default)" : "") << "\n"
               << "   platform " << d.platform << ", " << d.type << ", " << d.compute_units << " compute units, "
               << d.global_memory / (1024 * 1024) << " MiB, " << d.version << ", driver " << d.driver << "\n";
   }

@@ -18,7 +18,7 @@ namespace parashade {
 namespace {
 
 // Where the devices come from: the request's selector, else PARASHADE_DEVICE (docs/environment.md), else
-// the first device. Errors of a selector from the variable name it, since no command line shows it.
+// the default device (device.hpp's default_device, said in a note). Errors of a selector from the variable name it, since no command line shows it.
 struct Selector {
   std::string text, origin;
 };
@@ -57,6 +57,7 @@ void open_devices_for(ResolvedRender& r, const Selector& s) {
     for (auto& d : sub.subs) r.devices.push_back(std::move(d));
   } else {
     r.devices.push_back(opened(s, [&] { return open_device(s.text); }));
+    if (s.text.empty() && !r.request.quiet) r.notes.push_back(default_device_note(r.devices.front()->info()));
   }
 }
 

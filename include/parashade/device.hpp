@@ -58,8 +58,24 @@ class Device {
   std::map<std::pair<std::vector<std::string>, std::string>, cl::Program> programs_;
 };
 
+// Whether `d` is a simulator rather than hardware: Oclgrind (platform "Oclgrind", device "Oclgrind
+// Simulator"), known by name since it reports itself as a GPU.
+bool is_simulator(const DeviceInfo& d);
+
+// The device taken when none is named (open_device(""), PARASHADE_DEVICE unset; docs/environment.md), as
+// an index into `devices` (list_devices()' order), -1 when it is empty. The real device with the most
+// compute units: a simulator only when there is nothing else, PoCL's one-thread `basic` only when PoCL
+// has no threaded device (`pthread`, PoCL 4+'s `cpu`). Among equals PoCL's threaded device first (the
+// reference: the project's figures and tests are measured on it), then by platform and device name, so
+// the choice does not depend on the order the ICD loader lists the platforms in.
+int default_device(const std::vector<DeviceInfo>& devices);
+
+// "parashade: device: NAME (PLATFORM, N compute units; the default: --device to choose)": what render
+// says on stderr when it took the default device.
+std::string default_device_note(const DeviceInfo& d);
+
 // Opens the device chosen by `selector`: empty = the PARASHADE_DEVICE environment variable's selector when
-// it is set (its errors name it), else the first device; a number = index in
+// it is set (its errors name it), else the default device (default_device); a number = index in
 // list_devices(); otherwise a case-insensitive substring of "platform / device name" (PoCL names its
 // devices "pthread-..." and "basic-..."). Throws DeviceError listing the devices when nothing matches.
 std::unique_ptr<Device> open_device(const std::string& selector);

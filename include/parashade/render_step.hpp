@@ -51,7 +51,7 @@ struct RenderRequest {
   std::optional<std::pair<int, int>> size;  // replaces the scene's resolution (check_resolution'd by the caller)
   RenderOptions options;                    // tile_size 0: chosen for the scene (default_tile_size) or tuned
   // A device selector (device.hpp: index, name substring, "all", "A,B", "sub:NAME:N"); empty: the
-  // PARASHADE_DEVICE variable's, else the first device. A list or sub-devices without a plan split the
+  // PARASHADE_DEVICE variable's, else the default device (device.hpp's default_device). A list or sub-devices without a plan split the
   // frame into bands; sub-devices with a plan run the units' depth pass.
   std::string device;
   bool keep_going = false;  // a device list: drop a failing device and go on

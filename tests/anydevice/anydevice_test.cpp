@@ -1,6 +1,8 @@
-// The anydevice label: every kernel path rendered on a second OpenCL implementation (Oclgrind, an
-// interpreter of the kernels' LLVM IR that checks every memory access) and on PoCL, through the real
-// `parashade render` (docs/pipeline.md, "What a kernel may assume of a device").
+// The anydevice label: every kernel path rendered on another OpenCL implementation (Oclgrind, an
+// interpreter of the kernels' LLVM IR that checks every memory access; Intel's CPU runtime, a compiler
+// that vectorizes across work-items) and on PoCL, through the real `parashade render` (docs/pipeline.md,
+// "What a kernel may assume of a device"). The device under test is PARASHADE_ANYDEVICE's (ctest sets it
+// per device of the CMake list of that name: anydevice.oclgrind.*, anydevice.intel.*).
 //   - integer and fixed-point paths: the same 8-bit image bytes as PoCL (and the same float registers
 //     with --float), the same modeled clocks;
 //   - float paths: coverage exact (no mismatch against the exact reference) and the error against the
@@ -8,11 +10,11 @@
 //     reference's ideal is not the method's (approximations against exact Phong, moved vertices),
 //     coverage and error as PoCL measures them (+ the bound); every pixel within 1 + 2 bound levels of
 //     PoCL's (at least 1);
-//   - any Oclgrind diagnostic (invalid access, data race, API error, a kernel warning) fails: its log
-//     (OCLGRIND_LOG) and the run's stderr must stay empty.
+//   - on Oclgrind, any diagnostic (invalid access, data race, API error, a kernel warning) fails: its
+//     log (OCLGRIND_LOG) must stay empty and the run's stderr be PoCL's.
 // The kernels build as OpenCL C 1.2 with warnings as errors on both (PARASHADE_KERNEL_WERROR=1).
-// PARASHADE_ANYDEVICE=NAME-substring (CMake cache or environment) tests another registered device
-// instead of Oclgrind (README, "Devices").
+// PARASHADE_ANYDEVICE=NAME-substring (the environment; by default the CMake list's first) tests another
+// registered device (README, "Devices").
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -166,16 +168,28 @@ std::string device_under_test() { return env_or("PARASHADE_ANYDEVICE", PARASHADE
 std::string reference_device() { return env_or("PARASHADE_ANYDEVICE_REFERENCE", "portable computing language"); }
 bool is_oclgrind(const std::string& device) { return device.find("oclgrind") != std::string::npos; }
 
-// The tests' own ICD folder (tests/CMakeLists.txt), kernel warnings as errors, Oclgrind's checks on.
-// Set in this process, so every parashade run inherits them. Oclgrind's uninitialized-value plugin
-// stays off: in 21.10 it cannot read LLVM's `freeze` instruction, which every kernel here contains.
+// The tests' own ICD folder (tests/CMakeLists.txt) with the library path Intel's runtime needs (its
+// folder's libraries but the ICD loader), PoCL's cache, kernel warnings as errors, and on Oclgrind its
+// checks. Set in this process, so every parashade run inherits them. Oclgrind's uninitialized-value
+// plugin stays off: in 21.10 it cannot read LLVM's `freeze` instruction, which every kernel here contains.
 void set_test_environment() {
   ::setenv("OCL_ICD_VENDORS", PARASHADE_ICD_DIR, 1);
+  if (*PARASHADE_ICD_LIBRARY_PATH) ::setenv("LD_LIBRARY_PATH", PARASHADE_ICD_LIBRARY_PATH, 1);
+  ::setenv("POCL_CACHE_DIR", PARASHADE_POCL_CACHE_DIR, 1);
   ::setenv("PARASHADE_KERNEL_WERROR", "1", 1);
-  ::setenv("OCLGRIND_CHECK_API", "1", 1);
-  ::setenv("OCLGRIND_DATA_RACES", "1", 1);
+  for (const char* check : {"OCLGRIND_CHECK_API", "OCLGRIND_DATA_RACES"}) {
+    if (is_oclgrind(device_under_test())) ::setenv(check, "1", 1);
+    else ::unsetenv(check);
+  }
   ::unsetenv("PARASHADE_FAIL_DEVICE");
   ::unsetenv("PARASHADE_WARN_DEVICE");
+}
+
+// How to get the device under test when it is not listed.
+std::string how_to_install(const std::string& device) {
+  if (is_oclgrind(device)) return "oclgrind not installed? scripts/install-deps.sh, then configure again";
+  if (device.find("intel") != std::string::npos) return PARASHADE_INTEL_OPENCL_MISSING;
+  return "is its ICD library in PARASHADE_TEST_ICDS? (README, \"Implementations tested\")";
 }
 
 std::string slurp(const fs::path& p) {
@@ -197,7 +211,7 @@ Render render_on(const std::string& device, const KernelPath& path, const fs::pa
   const bool float_image = std::find(path.args.begin(), path.args.end(), "--float") != path.args.end();
   const fs::path image = dir / (tag + (float_image ? ".exr" : ".png")), report = dir / (tag + ".json");
   const fs::path log = dir / (tag + ".oclgrind.log");
-  ::setenv("OCLGRIND_LOG", log.c_str(), 1);
+  if (is_oclgrind(device)) ::setenv("OCLGRIND_LOG", log.c_str(), 1);
   std::vector<std::string> args = {"render", (fs::path(PARASHADE_SOURCE_DIR) / "scenes" / path.scene).string(),
                                    "--device", device, "--size", path.size, "--no-tuned", "--frames", "1",
                                    "--warmup", "0", "-q", "-o", image.string(), "--report", report.string()};
@@ -290,9 +304,8 @@ TEST_P(AnyDevice, RendersAsOnPoCL) {
   const Render reference = render_on(reference_device(), path, dir_.path(), "reference");
   ASSERT_TRUE(reference.run.exited() && reference.run.exit_code == 0) << reference.run;
   // A quiet render prints only the host's warnings (register wraps, vanishing triangles), the same on
-  // both devices; anything more on Oclgrind is Oclgrind's.
-  if (is_oclgrind(device))
-    EXPECT_EQ(tested.run.err, reference.run.err) << "stderr of a quiet render on Oclgrind:" << tested.run;
+  // both devices; anything more is the implementation's (Oclgrind's reports, a runtime's messages).
+  EXPECT_EQ(tested.run.err, reference.run.err) << "stderr of a quiet render on " << device << ":" << tested.run;
   const std::string tested_name = field(tested.report, "/device/name").get<std::string>();
   const std::string reference_name = field(reference.report, "/device/name").get<std::string>();
   ASSERT_NE(tested_name, reference_name) << "the same device twice: is the second implementation registered?";
@@ -305,6 +318,11 @@ TEST_P(AnyDevice, RendersAsOnPoCL) {
   const json& te = field(tested.report, "/error/implementation");
   const json& re = field(reference.report, "/error/implementation");
   ASSERT_TRUE(te.is_object() && re.is_object()) << "no error figures in the reports";
+  // The figures, for a summary across devices (--gtest_output=json: docs/pipeline.md's table).
+  RecordProperty("pixels_differ", std::to_string(d.pixels));
+  RecordProperty("max_levels_differ", std::to_string(d.max_levels));
+  RecordProperty("max_abs_error", te.value("max_abs", json(-1)).dump());
+  RecordProperty("reference_max_abs_error", re.value("max_abs", json(-1)).dump());
   if (path.check == Check::bytes) {
     EXPECT_EQ(d.pixels, 0u) << d.pixels << " pixels differ, by up to " << d.max_levels << " levels; " << d.first;
     EXPECT_EQ(tested.image.rgb_float, reference.image.rgb_float) << "the --float register values differ";
@@ -353,8 +371,8 @@ TEST(AnyDeviceSetup, DevicesListsBothImplementations) {
     tested |= text.find(device_under_test()) != std::string::npos;
     reference |= text.find(reference_device()) != std::string::npos;
   }
-  EXPECT_TRUE(tested) << "'" << device_under_test() << "' is not listed (oclgrind not installed? "
-                      << "scripts/install-deps.sh, then configure again):" << r;
+  EXPECT_TRUE(tested) << "'" << device_under_test() << "' is not listed (" << how_to_install(device_under_test())
+                      << "):" << r;
   EXPECT_TRUE(reference) << "'" << reference_device() << "' is not listed:" << r;
 }
 
@@ -388,6 +406,35 @@ TEST(AnyDeviceSetup, KernelWarningsAreErrorsOnBothDevices) {
     EXPECT_NE(r.err.find("PARASHADE_KERNEL_WERROR"), std::string::npos) << r;
     EXPECT_FALSE(fs::exists(dir.path() / "warned.png"));
   }
+}
+
+// A tuned entry is used by the device it was tuned on only (docs/tuning.md): one tuned on PoCL (the
+// reference) renders PoCL's frames with it, but not the device under test's, which says why.
+TEST(AnyDeviceSetup, AnEntryTunedOnPoCLIsNotUsedOnTheDevice) {
+  set_test_environment();
+  TempDir dir;
+  const std::string scene = (fs::path(PARASHADE_SOURCE_DIR) / "scenes" / "sphere.json").string();
+  const std::string cache = (dir.path() / "tune.json").string();
+  const RunResult tuned = run_parashade({"tune", scene, "--size", "48x32", "--device", reference_device(), "--param",
+                                         "tile=32", "--param", "work_items=0", "--param", "partition=none", "--frames",
+                                         "1", "--cache", cache, "-q"},
+                                        {}, std::chrono::seconds(300));
+  ASSERT_TRUE(tuned.exited() && tuned.exit_code == 0) << tuned;
+  const auto render_with_cache = [&](const std::string& device) {
+    return run_parashade({"render", scene, "--size", "48x32", "--device", device, "--tune-cache", cache, "--frames",
+                          "1", "--warmup", "0", "--no-error", "-o", (dir.path() / "sphere.png").string(), "--report",
+                          (dir.path() / "sphere.json").string()},
+                         {}, std::chrono::seconds(300));
+  };
+  const RunResult on_reference = render_with_cache(reference_device());
+  ASSERT_TRUE(on_reference.exited() && on_reference.exit_code == 0) << on_reference;
+  EXPECT_NE(on_reference.err.find("using the tuned configuration"), std::string::npos) << on_reference;
+  const RunResult on_device = render_with_cache(device_under_test());
+  ASSERT_TRUE(on_device.exited() && on_device.exit_code == 0) << on_device;
+  EXPECT_EQ(on_device.err.find("using the tuned configuration"), std::string::npos) << on_device;
+  EXPECT_NE(on_device.err.find("1 entry of another device"), std::string::npos) << on_device;
+  const json report = json::parse(slurp(dir.path() / "sphere.json"), nullptr, false);
+  EXPECT_TRUE(field(report, "/tuned").is_null()) << report.dump(1);
 }
 
 }  // namespace

@@ -12,7 +12,7 @@ int main(int argc, char** argv) try {
   scene.lights.push_back({LightType::directional, {-0.4f, -0.5f, -1.0f}});
   scene.materials.push_back({"grey"});
   scene.objects.push_back({"sphere", std::make_shared<Mesh>(make_sphere(32, 17))});
-  std::unique_ptr<Device> device = open_device("");  // "": the first device
+  std::unique_ptr<Device> device = open_device("");  // "": the default device
   RenderOptions options;
   options.method = Method::phong;
   Renderer renderer(*device, options);
