@@ -11,7 +11,7 @@
 #
 # --test (scripts/test.sh, README's second command) adds what only the tests use and Debian does not
 # package: Intel's CPU OpenCL runtime, the third implementation of the anydevice tests (docs/pipeline.md),
-# from PyPI (intel-opencl-rt, intel-cmplr-lib-rt) into a Python venv at the fixed prefix
+# from PyPI (intel-opencl-rt, intel-cmplr-lib-rt) into a Python venv (Debian's python3-venv) at the fixed prefix
 # /opt/parashade/intel-opencl (about 850 MB; docs/environment.md), skipped when it is there. If pip or the
 # network fails, a warning says so and the script goes on: the tests on Intel's runtime then skip, saying
 # how to install it. README's first command (render-default.sh) runs without --test.
