@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "parse_errors.hpp"
 #include "standard_streams.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/output_file.hpp"
@@ -19,7 +20,7 @@ int run(int argc, char** argv) {
   set_report_command_line(argc, argv);  // every report names it
   CLI::App app{"parashade — parallel Gouraud and Phong shading units, emulated in OpenCL and measured"};
   app.set_version_flag("--version", std::string("parashade ") + version + " (git " + git_hash + ")");
-  // At most one command; none is reported below, so that an unknown word is named ("not expected: X")
+  // At most one command; none is reported below, so that an unknown word is named ("unknown command X")
   // instead of CLI11's "A subcommand is required".
   app.require_subcommand(0, 1);
   app.footer(
@@ -36,14 +37,14 @@ int run(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : int(ExitCode::usage);
+    return cli::report_parse_error(app, e);
   }
   try {
     for (const cli::Command& c : commands)
       if (c.app->parsed()) return c.run();
-    std::cerr << "parashade: error: a command is required: devices, phong-study, render, plan, tune, scaling, unit-error, vectors or compare\n"
-                 "Run with --help for more information.\n";
+    std::string names;
+    for (const std::string& n : cli::command_names(app)) names += (names.empty() ? "" : ", ") + n;
+    std::cerr << "parashade: error: a command is required: " << names << "\nRun 'parashade --help' for the commands.\n";
     return int(ExitCode::usage);
   } catch (const Error& e) {
     if (*e.what()) std::cerr << "parashade: error: " << e.what() << "\n";  // empty: MPI ranks stopped, rank 0 said why
