@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "captured_stderr.hpp"
+#include "parashade/environment.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/output_file.hpp"
 #include "pocl_environment.hpp"
@@ -103,10 +104,7 @@ std::string injected_warning(const DeviceInfo& info) {
 // of type 'int16' without 'avx512f' enabled changes the ABI", a note about its calling convention, not
 // our source; Oclgrind 21.10 ignores -Werror), so the build keeps its warnings and the host reads the
 // build log: every warning but that ABI note fails the build. Empty when there is none.
-bool kernel_warnings_are_errors() {
-  const char* v = std::getenv("PARASHADE_KERNEL_WERROR");
-  return v && std::string(v) == "1";
-}
+bool kernel_warnings_are_errors() { return kernel_werror_variable(); }
 
 std::string kernel_warnings(const std::string& log) {
   std::istringstream in(log);

@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "parse_errors.hpp"
 #include "standard_streams.hpp"
+#include "parashade/environment.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/output_file.hpp"
 #include "parashade/version.hpp"
@@ -40,6 +41,7 @@ int run(int argc, char** argv) {
     return cli::report_parse_error(app, e);
   }
   try {
+    check_environment();  // a bad PARASHADE_* value stops every command alike, before any work
     for (const cli::Command& c : commands)
       if (c.app->parsed()) return c.run();
     std::string names;
