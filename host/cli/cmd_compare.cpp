@@ -100,7 +100,7 @@ int run_compare(const CompareArgs& args) {
   if (args.fail_given)
     std::printf("%s: max %.3f levels %s the limit %g\n", passed ? "PASS" : "FAIL", m.max_abs, passed ? "within" : "over",
                 args.fail);
-  if (!args.report.empty() && !args.quiet) std::printf("wrote %s\n", args.report.c_str());
+  print_wrote({args.diff, args.report});
   return passed ? 0 : 1;
 }
 
@@ -123,7 +123,7 @@ Command add_compare_command(CLI::App& app) {
                   "Write the per-pixel error (largest channel difference) as a colour map with its scale "
                   "(as render --error-map)");
   add_report_option(*cmd, args->report, "the figures, both files, the verdict");
-  cmd->add_flag("-q,--quiet", args->quiet, "Only the figures");
+  cmd->add_flag("-q,--quiet", args->quiet, "Only the figures and what was written (no error map scale line)");
   return {cmd, [args] { return run_compare(*args); }};
 }
 

@@ -188,10 +188,11 @@ class TuneRun {
     }
     const std::filesystem::path cache = a_.cache.empty() ? default_tune_cache() : std::filesystem::path(a_.cache);
     // The default cache's folder (~/.cache/parashade) is parashade's to make: on a fresh machine the check
-    // of the outputs' folders refused it. A folder --cache names must exist.
+    // of the outputs' folders refused it. A folder --cache or PARASHADE_TUNE_CACHE names must exist.
+    const std::string origin = tune_cache_origin(a_.cache, "--cache");
     std::error_code ec;
-    if (a_.cache.empty() && cache.has_parent_path() && rank() == 0) std::filesystem::create_directories(cache.parent_path(), ec);
-    files.input_output("--cache", cache);
+    if (origin.empty() && cache.has_parent_path() && rank() == 0) std::filesystem::create_directories(cache.parent_path(), ec);
+    files.input_output(origin.empty() ? "the tune cache" : origin, cache);
     base_ = std::make_unique<ResolvedRender>(resolve_with_option_names(request_, files));
     cache_ = std::make_unique<TuneCache>(cache);
     space_ = default_tune_space(a_.method, device().compute_units);
@@ -471,8 +472,10 @@ class TuneRun {
                                                              scene.width, scene.height, report["candidates"])
                                                   .dump(1) +
                                               "\n");
-    if (!a_.report.empty()) std::printf("wrote %s\n", a_.report.c_str());
-    if (!a_.export_kt.empty()) std::printf("wrote %s (Kernel Tuner cache format)\n", a_.export_kt.c_str());
+    // The cache was written when a candidate was measured (record) or the ranks' results merged.
+    const bool cache_written = group_ || std::any_of(results_.begin(), results_.end(), [](const Result& r) { return !r.cached; });
+    print_wrote({a_.report, a_.export_kt.empty() ? "" : a_.export_kt + " (Kernel Tuner cache format)",
+                 cache_written ? cache_->path().string() + " (the tune cache)" : ""});
   }
 
   const TuneArgs& a_;

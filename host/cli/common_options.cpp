@@ -111,6 +111,13 @@ CLI::Validator count_list_validator(int max, bool list) {
       list ? "N[,N...]" : "N", "count");
 }
 
+void print_wrote(const std::vector<std::string>& files) {
+  std::string line;
+  for (const std::string& f : files)
+    if (!f.empty()) line += (line.empty() ? "wrote " : " and ") + f;
+  if (!line.empty()) std::printf("%s\n", line.c_str());
+}
+
 void write_report(const std::string& path, nlohmann::json body, const std::string& kind) {
   write_text_atomically(path, report_text(std::move(body), kind));
 }
