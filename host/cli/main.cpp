@@ -25,7 +25,9 @@ int run(int argc, char** argv) {
   // instead of CLI11's "A subcommand is required".
   app.require_subcommand(0, 1);
   app.footer(
-      "Exit codes: 0 ok, 2 usage error, 3 bad input (scene, mesh, values), 4 OpenCL or device failure.\n"
+      "Exit codes (every command; docs/cli.md): 0 ok, 1 compare above --fail (or an internal error), 2 usage error\n"
+      "(the command line or a PARASHADE_* variable), 3 bad input (a file: scene, mesh, image, an output's folder),\n"
+      "4 OpenCL or device failure, 128 + N ended by signal N.\n"
       "Run 'parashade COMMAND --help' for a command's options.");
   const std::vector<cli::Command> commands = {cli::add_devices_command(app), cli::add_phong_study_command(app),
                                               cli::add_render_command(app), cli::add_plan_command(app),
