@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "build_notice.hpp"
 #include "captured_stderr.hpp"
 #include "parashade/environment.hpp"
 #include "parashade/errors.hpp"
@@ -158,6 +159,7 @@ cl::Program& Device::program(const std::vector<std::string>& files, const std::s
     rethrow_cl_error("creating program on '" + info_.name + "'");
   }
   const bool strict = kernel_warnings_are_errors();
+  SlowBuildNotice notice(info_.name, info_.platform);  // said while a build that is not cached compiles
   CapturedStderr compiler_output;  // PoCL's compiler writes to stderr directly
   try {
     // -w: PoCL 3.1's compiler prints a bare "N warnings generated." to stderr on every fresh build
@@ -177,6 +179,7 @@ cl::Program& Device::program(const std::vector<std::string>& files, const std::s
     throw DeviceError("building kernels (" + files.back() + ", options '" + options + "') failed on '" + info_.name +
                       "': " + cl_error_name(e.err()) + "\n--- build log ---\n" + trim(log));
   }
+  notice.stop();
   compiler_output.take();  // a successful build's stray lines ("N warnings generated.") are dropped
   reclaim_signal_cleanup();  // LLVM's handlers swallow SIGQUIT and SIGUSR1 (output_file.hpp)
   if (strict) {

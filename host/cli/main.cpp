@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "../cl/build_notice.hpp"
 #include "commands.hpp"
 #include "parse_errors.hpp"
 #include "standard_streams.hpp"
@@ -45,7 +46,11 @@ int run(int argc, char** argv) {
   try {
     check_environment();  // a bad PARASHADE_* value stops every command alike, before any work
     for (const cli::Command& c : commands)
-      if (c.app->parsed()) return c.run();
+      if (c.app->parsed()) {
+        const CLI::Option* quiet = c.app->get_option_no_throw("--quiet");
+        set_kernel_build_notices(!(quiet && quiet->count() > 0));  // "compiling kernels for ..." (-q: none)
+        return c.run();
+      }
     std::string names;
     for (const std::string& n : cli::command_names(app)) names += (names.empty() ? "" : ", ") + n;
     std::cerr << "parashade: error: a command is required: " << names << "\nRun 'parashade --help' for the commands.\n";
