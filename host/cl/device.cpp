@@ -6,7 +6,9 @@
 #include <sstream>
 #include <tuple>
 
+#include "build_notice.hpp"
 #include "captured_stderr.hpp"
+#include "parashade/environment.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/output_file.hpp"
 #include "pocl_environment.hpp"
@@ -104,10 +106,7 @@ std::string injected_warning(const DeviceInfo& info) {
 // of type 'int16' without 'avx512f' enabled changes the ABI", a note about its calling convention, not
 // our source; Oclgrind 21.10 ignores -Werror), so the build keeps its warnings and the host reads the
 // build log: every warning but that ABI note fails the build. Empty when there is none.
-bool kernel_warnings_are_errors() {
-  const char* v = std::getenv("PARASHADE_KERNEL_WERROR");
-  return v && std::string(v) == "1";
-}
+bool kernel_warnings_are_errors() { return kernel_werror_variable(); }
 
 std::string kernel_warnings(const std::string& log) {
   std::istringstream in(log);
@@ -197,6 +196,7 @@ cl::Program& Device::program(const std::vector<std::string>& files, const std::s
     rethrow_cl_error("creating program on '" + info_.name + "'");
   }
   const bool strict = kernel_warnings_are_errors();
+  SlowBuildNotice notice(info_.name, info_.platform);  // said while a build that is not cached compiles
   CapturedStderr compiler_output;  // PoCL's compiler writes to stderr directly
   try {
     // -w: PoCL 3.1's compiler prints a bare "N warnings generated." to stderr on every fresh build
@@ -216,6 +216,7 @@ cl::Program& Device::program(const std::vector<std::string>& files, const std::s
     throw DeviceError("building kernels (" + files.back() + ", options '" + options + "') failed on '" + info_.name +
                       "': " + cl_error_name(e.err()) + "\n--- build log ---\n" + trim(log));
   }
+  notice.stop();
   compiler_output.take();  // a successful build's stray lines ("N warnings generated.") are dropped
   reclaim_signal_cleanup();  // LLVM's handlers swallow SIGQUIT and SIGUSR1 (output_file.hpp)
   if (strict) {

@@ -53,6 +53,12 @@ void check_cache_folder(const CacheFolder& c) {
 
 }  // namespace
 
+std::string pocl_kernel_cache_place() {
+  if (const char* off = set_value("POCL_KERNEL_CACHE"); off && std::string(off) == "0")
+    return "PoCL's kernel cache is off: POCL_KERNEL_CACHE=0";
+  return "first run; cached in " + pocl_cache_folder().folder.string();
+}
+
 void prepare_pocl_environment() {
   if (const char* v = std::getenv("POCL_CACHE_DIR"); v && !*v) ::unsetenv("POCL_CACHE_DIR");
   check_cache_folder(pocl_cache_folder());

@@ -7,8 +7,14 @@
 //   variable, the path and the reason.
 // - Without PATH (env -i) PoCL's compiler could not find the linker `ld` and a cold kernel cache aborted
 //   the process: an unset or empty PATH gets the system's default search path (confstr _CS_PATH).
+#include <string>
+
 namespace parashade {
 
 void prepare_pocl_environment();
+
+// Where PoCL keeps the kernels it compiles, for the notice of a long build: "first run; cached in DIR",
+// or "PoCL's kernel cache is off: POCL_KERNEL_CACHE=0".
+std::string pocl_kernel_cache_place();
 
 }  // namespace parashade

@@ -26,7 +26,11 @@ std::vector<std::string> split_list(const std::string& list, const std::string& 
 
 std::optional<std::pair<int, int>> checked_size(const std::string& size) {
   const auto wh = parse_size(size);
-  if (wh) check_resolution(wh->first, wh->second, "--size " + size);
+  try {  // size_validator checked it when the command line was read; a usage error either way
+    if (wh) check_resolution(wh->first, wh->second, "--size " + size);
+  } catch (const InputError& e) {
+    throw UsageError(e.what());
+  }
   return wh;
 }
 

@@ -46,7 +46,8 @@ auto parse_unique_list(const std::string& list, const std::string& option, Parse
   return out;
 }
 
-// --size WIDTHxHEIGHT parsed and within the resolution limit (nullopt when not given).
+// --size WIDTHxHEIGHT parsed and within the resolution limit (nullopt when not given); UsageError (exit 2)
+// when not, as size_validator refuses it when the command line is read.
 std::optional<std::pair<int, int>> checked_size(const std::string& size);
 
 // The scene file at `size` when given (--size overrides the scene's resolution, and the memory budget is

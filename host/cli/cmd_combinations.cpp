@@ -56,6 +56,7 @@ Command add_combinations_command(CLI::App& app) {
                       "division --div,\nnormalize --normalize, specular --specular, choice --triangle-choice, highlight "
                       "--highlight-test,\nplan --cu/--partition, devices --device (a list or sub:NAME:N: bands; "
                       "sub:NAME:N with --cu: the units' pass).");
+            print_wrote({a->report});
             return 0;
           }};
 }

@@ -193,7 +193,7 @@ int run_compare(const CompareArgs& args) {
   if (!args.quiet)
     for (const std::string& l : lines) std::printf("%s\n", l.c_str());
   print_verdict(args, c);
-  if (!args.report.empty() && !args.quiet) std::printf("wrote %s\n", args.report.c_str());
+  print_wrote({args.error_map, args.error_legend, args.flip_map, args.report});
   return c.verdict.passed ? 0 : 1;
 }
 
@@ -228,7 +228,7 @@ Command add_compare_command(CLI::App& app) {
   add_deprecated_spelling(*cmd, map, "--diff", args->error_map);
   add_error_picture_options(*cmd, args->error_scale, args->error_legend, args->flip, args->flip_map);
   add_report_option(*cmd, args->report, "the figures, both files, the verdict");
-  cmd->add_flag("-q,--quiet", args->quiet, "Only the figures");
+  cmd->add_flag("-q,--quiet", args->quiet, "Only the figures and what was written (no error map scale line)");
   return {cmd, [args] { return run_compare(*args); }};
 }
 

@@ -29,7 +29,7 @@ int run(const DevicesArgs& a) {
   if (a.json) {  // deprecated: the bare array, as before, for one release
     std::cerr << "parashade: warning: devices --json is deprecated and goes in the next release; use --report FILE "
                  "(a versioned report, docs/reports.md)\n";
-    std::cout << list.dump(2) << "\n";
+    std::cout << list.dump(2) << "\n";  // stdout holds the bare array alone: no "wrote" line
     return 0;
   }
   for (const auto& d : devices) {
@@ -37,6 +37,8 @@ int run(const DevicesArgs& a) {
               << "   platform " << d.platform << ", " << d.type << ", " << d.compute_units << " compute units, "
               << d.global_memory / (1024 * 1024) << " MiB, " << d.version << ", driver " << d.driver << "\n";
   }
+  std::cout.flush();
+  print_wrote({a.report});
   return 0;
 }
 

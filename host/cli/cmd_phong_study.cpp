@@ -18,19 +18,20 @@ namespace parashade::cli {
 namespace {
 
 struct StudyArgs {
-  std::string report, markdown;
+  std::string report, output;
   bool quiet = false;
 };
 
 int run(const StudyArgs& args) {
   CommandFiles files;
   files.output("--report", args.report);
-  files.output("-o", args.markdown);
+  files.output("-o", args.output);
   files.check();
   const PhongStudy study = phong_study();
-  std::cout << study.markdown;
+  std::cout << study.markdown << std::flush;
   if (!args.report.empty()) write_report(args.report, study.report, "phong-study");
-  if (!args.markdown.empty()) write_text_atomically(args.markdown, study.markdown);
+  if (!args.output.empty()) write_text_atomically(args.output, study.markdown);
+  print_wrote({args.output, args.report});
   return study.nonfinite_spans ? int(ExitCode::internal) : 0;
 }
 
@@ -40,7 +41,9 @@ Command add_phong_study_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("phong-study",
                                  "Normalization methods, approximations and specular models of the Phong family against exact values, with the sources' claims");
   auto args = std::make_shared<StudyArgs>();
-  cmd->add_option("-o,--markdown", args->markdown, "Write the tables and the claims table as Markdown");
+  // -o is every command's main output (docs/cli.md); --markdown, its old long name, warns for one release.
+  CLI::Option* output = cmd->add_option("-o,--output", args->output, "Write the tables and the claims table as Markdown");
+  add_deprecated_spelling(*cmd, output, "--markdown", args->output);
   CLI::Option* report =
       add_report_option(*cmd, args->report, "the measurements and claims: id, source figure, measured, verdict");
   add_deprecated_spelling(*cmd, report, "--json", args->report);

@@ -64,6 +64,7 @@ int run_plan(const PlanCommandArgs& a) {
                                    {"bin_entries", plans.bin_entries}, {"unit", unit_name(unit)}, {"plans", reports}};
     write_report(a.report, report, "plan");
   }
+  print_wrote({a.report});
   return 0;
 }
 

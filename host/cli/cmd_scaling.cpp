@@ -329,7 +329,7 @@ void print_scaling(const ScalingArgs& a, const ResolvedRender& base, const std::
   std::printf("error: against the ideal %s (exact reference, double precision), %s, in levels\n", method_name(method),
               a.float_output ? "unclamped float output" : "8-bit output");
   print_table(configs, a.markdown);
-  if (!a.report.empty()) std::printf("wrote %s\n", a.report.c_str());
+  print_wrote({a.report});
 }
 
 int run_scaling(const ScalingArgs& a) {

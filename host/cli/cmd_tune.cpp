@@ -62,6 +62,15 @@ struct Result {
   std::string timestamp;
 };
 
+// A candidate's frames as their range, "(min..max)" in ms.
+std::string spread(const std::vector<double>& times) {
+  if (times.empty()) return "(no samples)";
+  char text[64];
+  std::snprintf(text, sizeof text, "(%.3f..%.3f)", *std::min_element(times.begin(), times.end()),
+                *std::max_element(times.begin(), times.end()));
+  return text;
+}
+
 nlohmann::json result_json(const Result& r) {
   return {{"sequence", r.sequence},
           {"params", r.params},
@@ -188,10 +197,11 @@ class TuneRun {
     }
     const std::filesystem::path cache = a_.cache.empty() ? default_tune_cache() : std::filesystem::path(a_.cache);
     // The default cache's folder (~/.cache/parashade) is parashade's to make: on a fresh machine the check
-    // of the outputs' folders refused it. A folder --cache names must exist.
+    // of the outputs' folders refused it. A folder --cache or PARASHADE_TUNE_CACHE names must exist.
+    const std::string origin = tune_cache_origin(a_.cache, "--cache");
     std::error_code ec;
-    if (a_.cache.empty() && cache.has_parent_path() && rank() == 0) std::filesystem::create_directories(cache.parent_path(), ec);
-    files.input_output("--cache", cache);
+    if (origin.empty() && cache.has_parent_path() && rank() == 0) std::filesystem::create_directories(cache.parent_path(), ec);
+    files.input_output(origin.empty() ? "the tune cache" : origin, cache);
     base_ = std::make_unique<ResolvedRender>(resolve_with_option_names(request_, files));
     cache_ = std::make_unique<TuneCache>(cache);
     space_ = default_tune_space(a_.method, device().compute_units);
@@ -307,13 +317,15 @@ class TuneRun {
     return s.empty() ? std::string("the one point") : s;
   }
 
+  // The median frame and the spread of the candidate's frames (min..max), so that two candidates whose
+  // ranges overlap are not read as one faster than the other.
   void print_result(const Result& r) const {
     std::string flags;
     if (!r.m.verified) flags += "  IMAGE DIFFERS from its shading's default layout: not eligible";
     if (!r.within_budget) flags += "  over the error budget";
     if (r.cached) flags += "  (cached)";
-    std::printf("%-60s %9.3f ms  max %6.2f  NMSE %.3g%s\n", varied(r.params).c_str(), r.m.objective, r.m.max_error,
-                r.m.nmse, flags.c_str());
+    std::printf("%-60s %9.3f ms %-19s  max %6.2f  NMSE %.3g%s\n", varied(r.params).c_str(), r.m.objective,
+                spread(r.m.times).c_str(), r.m.max_error, r.m.nmse, flags.c_str());
     std::fflush(stdout);
   }
 
@@ -424,11 +436,23 @@ class TuneRun {
       t_plain.push_back(plain.frame().timings.total_ms);
       t_fast.push_back(fast.frame().timings.total_ms);
     }
-    std::printf("confirmation (%zu alternating frames each): default %.3f ms, tuned %.3f ms: speed-up %.2fx\n",
-                t_plain.size(), median(t_plain), median(t_fast), median(t_plain) / median(t_fast));
-    return {{"frames", t_plain.size()},         {"default_ms", median(t_plain)},
-            {"tuned_ms", median(t_fast)},         {"speedup", median(t_plain) / median(t_fast)},
-            {"default", timing_json(t_plain, 1)}, {"tuned", timing_json(t_fast, 1)}};
+    // The speed-up is the median of the pairs' ratios (each pair run back to back, so a drift of the
+    // machine's speed cancels), given only with its interval: a distribution-free one for that median.
+    std::vector<double> ratios;
+    for (std::size_t i = 0; i < t_plain.size(); ++i) ratios.push_back(t_plain[i] / t_fast[i]);
+    const double speedup = median(ratios);
+    const MedianInterval ci = median_interval(ratios);
+    std::printf("confirmation (%zu alternating frames each): default %.3f ms, tuned %.3f ms: speed-up %.2fx, "
+                "%.0f %% interval %.2fx..%.2fx (median of the %zu pairs' ratios)%s\n",
+                t_plain.size(), median(t_plain), median(t_fast), speedup, 100 * ci.confidence, ci.low, ci.high,
+                ratios.size(), ci.low <= 1 && 1 <= ci.high ? "; it holds 1: no difference measured" : "");
+    return {{"frames", t_plain.size()},
+            {"default_ms", median(t_plain)},
+            {"tuned_ms", median(t_fast)},
+            {"speedup", speedup},
+            {"speedup_interval", {{"low", ci.low}, {"high", ci.high}, {"confidence", ci.confidence}}},
+            {"default", timing_json(t_plain, 1)},
+            {"tuned", timing_json(t_fast, 1)}};
   }
 
   // The best of this run's candidates and whatever the cache holds for the space's points, confirmed; the
@@ -450,9 +474,9 @@ class TuneRun {
     nlohmann::json confirmation;
     if (best) {
       const RenderOptions tuned = options(best->point);
-      std::printf("best%s: %s at %.3f ms when it was tried (max error %.2f levels, NMSE %.3g)\n",
+      std::printf("best%s: %s at %.3f ms %s when it was tried (max error %.2f levels, NMSE %.3g)\n",
                   a_.max_error > 0 || a_.max_nmse > 0 ? " within the error budget" : "", varied(best->params).c_str(),
-                  best->m.objective, best->m.max_error, best->m.nmse);
+                  best->m.objective, spread(best->m.times).c_str(), best->m.max_error, best->m.nmse);
       std::printf("render with: %s\n", render_flags(best->params).c_str());
       confirmation = confirm(tuned);
     } else {
@@ -471,8 +495,10 @@ class TuneRun {
                                                              scene.width, scene.height, report["candidates"])
                                                   .dump(1) +
                                               "\n");
-    if (!a_.report.empty()) std::printf("wrote %s\n", a_.report.c_str());
-    if (!a_.export_kt.empty()) std::printf("wrote %s (Kernel Tuner cache format)\n", a_.export_kt.c_str());
+    // The cache was written when a candidate was measured (record) or the ranks' results merged.
+    const bool cache_written = group_ || std::any_of(results_.begin(), results_.end(), [](const Result& r) { return !r.cached; });
+    print_wrote({a_.report, a_.export_kt.empty() ? "" : a_.export_kt + " (Kernel Tuner cache format)",
+                 cache_written ? cache_->path().string() + " (the tune cache)" : ""});
   }
 
   const TuneArgs& a_;

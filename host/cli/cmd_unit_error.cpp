@@ -67,8 +67,9 @@ int run(const UnitErrorArgs& args) {
   std::vector<UnitErrorStudy> studies;
   for (const UnitConfig& u : units) studies.push_back(study_unit_error(u, a, o));
   const UnitErrorReport report = unit_error_report(studies, a, o);
-  std::cout << report.text;
+  std::cout << report.text << std::flush;
   if (!args.report.empty()) write_report(args.report, report.json, "unit-error");
+  print_wrote({args.report});
   return 0;
 }
 

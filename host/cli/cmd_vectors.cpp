@@ -46,6 +46,7 @@ int run(const VectorsArgs& args) {
                   {"random_spans", args.spans}, {"spans", spans.size()}, {"vectors_file", args.out},
                   {"vectors_bytes", text.size()}},
                  "vectors");
+  print_wrote({args.out, args.report});
   return 0;
 }
 
@@ -65,7 +66,7 @@ Command add_vectors_command(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "Seed of the random spans")->capture_default_str();
   cmd->add_option("-o,--output", args->out, "The vectors file (written whole or not at all)")->required();
   add_report_option(*cmd, args->report, "the unit, arithmetic, seed and span count of the vectors");
-  add_quiet_flag(*cmd, args->quiet);  // nothing to silence: vectors prints nothing but errors
+  add_quiet_flag(*cmd, args->quiet);  // nothing to silence: vectors prints what it wrote and errors
   return {cmd, [args]() { return run(*args); }};
 }
 

@@ -1,9 +1,11 @@
 #include "common_options.hpp"
 
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <regex>
 
+#include "parashade/errors.hpp"
 #include "parashade/frame_config.hpp"
 #include "parashade/report.hpp"
 #include "parashade/report_header.hpp"
@@ -50,10 +52,19 @@ void add_error_picture_options(CLI::App& cmd, std::string& scale, std::string& l
 }
 
 const CLI::Validator& size_validator() {
+  // The form and the range alike: a value the command line gives wrong is a usage error (exit 2), as
+  // `--size 640x48O` always was; `--size 0x48` was bad input (3), checked later as a scene's resolution.
   static const CLI::Validator v(
       [](std::string& text) -> std::string {
-        if (std::regex_match(text, std::regex(R"(\d{1,9}x\d{1,9})"))) return "";
-        return "'" + text + "' is not of the form WIDTHxHEIGHT, e.g. 1920x1080";
+        if (!std::regex_match(text, std::regex(R"(\d{1,9}x\d{1,9})")))
+          return "'" + text + "' is not of the form WIDTHxHEIGHT, e.g. 1920x1080";
+        try {
+          const auto wh = parse_size(text);
+          check_resolution(wh->first, wh->second, "'" + text + "'");
+        } catch (const Error& e) {
+          return e.what();
+        }
+        return "";
       },
       "WIDTHxHEIGHT", "size");
   return v;
@@ -114,6 +125,13 @@ CLI::Validator count_list_validator(int max, bool list) {
         return "'" + text + "' is not " + (list ? "a comma-separated list of numbers in " : "a number in ") + range;
       },
       list ? "N[,N...]" : "N", "count");
+}
+
+void print_wrote(const std::vector<std::string>& files) {
+  std::string line;
+  for (const std::string& f : files)
+    if (!f.empty()) line += (line.empty() ? "wrote " : " and ") + f;
+  if (!line.empty()) std::printf("%s\n", line.c_str());
 }
 
 void write_report(const std::string& path, nlohmann::json body, const std::string& kind) {

@@ -2,6 +2,7 @@
 // The options every command spells alike (docs/cli.md, "Conventions"): -q, --report FILE, --size WxH,
 // count lists such as --cu, and an old spelling kept for one release with a warning.
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -36,6 +37,10 @@ CLI::Option* add_rank_timeout_option(CLI::App& cmd, double& seconds, const std::
 
 // A comma-separated list of integers in 1..max (e.g. --cu); `list` false: exactly one.
 CLI::Validator count_list_validator(int max, bool list);
+
+// "wrote A and B" on stdout, the files a command wrote (empty names, options not given, are left out;
+// nothing when none is left), as render's summary ends: every command that writes a file says so.
+void print_wrote(const std::vector<std::string>& files);
 
 // Writes the stamped report whole or not at all.
 void write_report(const std::string& path, nlohmann::json body, const std::string& kind);

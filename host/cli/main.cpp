@@ -5,8 +5,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include "../cl/build_notice.hpp"
 #include "commands.hpp"
+#include "parse_errors.hpp"
 #include "standard_streams.hpp"
+#include "parashade/environment.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/output_file.hpp"
 #include "parashade/version.hpp"
@@ -19,11 +22,13 @@ int run(int argc, char** argv) {
   set_report_command_line(argc, argv);  // every report names it
   CLI::App app{"parashade — parallel Gouraud and Phong shading units, emulated in OpenCL and measured"};
   app.set_version_flag("--version", std::string("parashade ") + version + " (git " + git_hash + ")");
-  // At most one command; none is reported below, so that an unknown word is named ("not expected: X")
+  // At most one command; none is reported below, so that an unknown word is named ("unknown command X")
   // instead of CLI11's "A subcommand is required".
   app.require_subcommand(0, 1);
   app.footer(
-      "Exit codes: 0 ok, 2 usage error, 3 bad input (scene, mesh, values), 4 OpenCL or device failure.\n"
+      "Exit codes (every command; docs/cli.md): 0 ok, 1 compare above --fail (or an internal error), 2 usage error\n"
+      "(the command line or a PARASHADE_* variable), 3 bad input (a file: scene, mesh, image, an output's folder),\n"
+      "4 OpenCL or device failure, 128 + N ended by signal N.\n"
       "Run 'parashade COMMAND --help' for a command's options.");
   const std::vector<cli::Command> commands = {cli::add_devices_command(app), cli::add_phong_study_command(app),
                                               cli::add_render_command(app), cli::add_plan_command(app),
@@ -36,14 +41,19 @@ int run(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : int(ExitCode::usage);
+    return cli::report_parse_error(app, e);
   }
   try {
+    check_environment();  // a bad PARASHADE_* value stops every command alike, before any work
     for (const cli::Command& c : commands)
-      if (c.app->parsed()) return c.run();
-    std::cerr << "parashade: error: a command is required: devices, phong-study, render, plan, tune, scaling, unit-error, vectors or compare\n"
-                 "Run with --help for more information.\n";
+      if (c.app->parsed()) {
+        const CLI::Option* quiet = c.app->get_option_no_throw("--quiet");
+        set_kernel_build_notices(!(quiet && quiet->count() > 0));  // "compiling kernels for ..." (-q: none)
+        return c.run();
+      }
+    std::string names;
+    for (const std::string& n : cli::command_names(app)) names += (names.empty() ? "" : ", ") + n;
+    std::cerr << "parashade: error: a command is required: " << names << "\nRun 'parashade --help' for the commands.\n";
     return int(ExitCode::usage);
   } catch (const Error& e) {
     if (*e.what()) std::cerr << "parashade: error: " << e.what() << "\n";  // empty: MPI ranks stopped, rank 0 said why

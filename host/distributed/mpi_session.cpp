@@ -14,9 +14,18 @@ void set_default_env(const char* name, const std::string& value) {
   if (!std::getenv(name)) setenv(name, value.c_str(), 1);
 }
 
+// Whether a launcher started this process as a rank: the variables Open MPI's mpirun, MPICH's Hydra
+// (mpiexec) and PMIx or PMI (srun) give every rank. Read before MPI_Init: a singleton's init may set some.
+bool started_by_launcher() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMI_RANK", "PMIX_RANK", "MPI_LOCALNRANKS"})
+    if (std::getenv(v)) return true;
+  return false;
+}
+
 }  // namespace
 
 MpiSession::MpiSession(double rank_timeout) {
+  const bool launched = started_by_launcher();
   int ready = 0;
   MPI_Initialized(&ready);
   if (!ready) {
@@ -27,6 +36,12 @@ MpiSession::MpiSession(double rank_timeout) {
   MPI_Comm_set_errhandler(comm, MPI_ERRORS_ARE_FATAL);
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);
+  // Outside mpirun the job is one rank: the distributed path (MPI start-up, compositing, the rank
+  // protocol) for nothing, several times slower than the command without --distribute or --mpi.
+  if (size == 1 && !launched)
+    std::cerr << "parashade: warning: not started by mpirun: --distribute and --mpi run as a single MPI rank, "
+                 "several times slower than without them; start 'mpirun -np N parashade ...' for N ranks "
+                 "(docs/distributed.md)\n";
   MPI_Comm local;
   MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, rank, MPI_INFO_NULL, &local);
   MPI_Comm_size(local, &local_size);

@@ -8,8 +8,11 @@
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <vector>
+
+#include "parashade/environment.hpp"
 
 namespace parashade {
 namespace {
@@ -19,10 +22,7 @@ namespace {
 // VM with PoCL's 2 compute units: teapot/bunny host stages 1.31/3.82 ms without, 1.62/4.43 ms with 50 µs
 // (6 interleaved rounds, quiet).
 int spin_microseconds() {
-  static const int us = [] {
-    if (const char* env = std::getenv("PARASHADE_HOST_SPIN_US")) return std::max(0, std::atoi(env));
-    return 0;
-  }();
+  static const int us = host_spin_variable();
   return us;
 }
 
@@ -147,10 +147,7 @@ class Pool {
 };
 
 unsigned default_threads() {
-  if (const char* env = std::getenv("PARASHADE_HOST_THREADS")) {
-    const int n = std::atoi(env);
-    if (n >= 1) return unsigned(n);
-  }
+  if (const std::optional<unsigned> n = host_threads_variable()) return *n;
   return std::max(1u, std::thread::hardware_concurrency());
 }
 

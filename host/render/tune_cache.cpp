@@ -92,6 +92,12 @@ std::optional<TuneProblem> tune_problem(const Scene& scene, const RenderOptions&
   return p;
 }
 
+std::string tune_cache_origin(const std::string& given, const std::string& option) {
+  if (!given.empty()) return option;
+  if (const char* p = std::getenv("PARASHADE_TUNE_CACHE"); p && *p) return "PARASHADE_TUNE_CACHE";
+  return "";
+}
+
 std::filesystem::path default_tune_cache() {
   if (const char* p = std::getenv("PARASHADE_TUNE_CACHE"); p && *p) return p;
   if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return std::filesystem::path(x) / "parashade" / "tune.json";
@@ -157,8 +163,6 @@ void TuneCache::add(const DeviceInfo& d, const TuneProblem& p, const nlohmann::j
 }
 
 void TuneCache::write() {
-  std::error_code ec;
-  if (path_.has_parent_path()) std::filesystem::create_directories(path_.parent_path(), ec);
   FolderLock lock(path_.parent_path());
   take(read_entries(path_), true);  // what other runs wrote since this one read the file
   write_text_atomically(path_, doc_.dump(1) + "\n");

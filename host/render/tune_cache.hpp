@@ -38,6 +38,10 @@ std::optional<TuneProblem> tune_problem(const Scene& scene, const RenderOptions&
 
 // $PARASHADE_TUNE_CACHE, else $XDG_CACHE_HOME/parashade/tune.json, else ~/.cache/parashade/tune.json.
 std::filesystem::path default_tune_cache();
+// How the cache at `given` (--cache or --tune-cache, or empty) was named, for messages: the option, or
+// PARASHADE_TUNE_CACHE when it chose the default; "" for parashade's own default, whose folder
+// (~/.cache/parashade) parashade may make. A folder a user named must exist, like every output's.
+std::string tune_cache_origin(const std::string& given, const std::string& option);
 
 // One measured configuration as the cache keeps it.
 struct TuneMeasurement {

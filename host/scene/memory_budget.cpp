@@ -58,7 +58,8 @@ std::uint64_t host_memory_limit() {
       ++end;
     }
     if (end == text || *end || !(scale > 0) || !(value > 0) || !(value * scale < 1.8e19))
-      throw InputError(std::string(kVariable) + " '" + text + "' is not a size (bytes, or a number with K, M, G or T)");
+      throw UsageError(std::string(kVariable) + "='" + text + "' is not a size: bytes, or a number with K, M, G or T (16G; "
+                       "unset it for the default, half of the physical memory)");
     return std::uint64_t(value * scale);
   }
   const std::uint64_t physical = physical_memory();

@@ -10,7 +10,8 @@
 
 namespace parashade {
 
-// Number of host threads: set_host_threads() if called, else PARASHADE_HOST_THREADS if set (>= 1),
+// Number of host threads: set_host_threads() if called, else PARASHADE_HOST_THREADS if set (1..1024; any
+// other value is a UsageError naming it, environment.hpp),
 // else the hardware's.
 unsigned host_threads();
 // Changes the number of host threads (not while a parallel_for runs).

@@ -115,8 +115,9 @@ TEST_F(CliHostileInput, MemoryLimitComesFromTheEnvironment) {
     fs::remove(report());
   }
   {
+    // A malformed value is a usage error like every bad PARASHADE_* value (issue 47; it was exit 3).
     const ScopedEnv limit("PARASHADE_MEMORY_LIMIT", "lots");
-    EXPECT_TRUE(fails_with(run_parashade(render_args(scene)), kBadInput, {"PARASHADE_MEMORY_LIMIT", "lots"}));
+    EXPECT_TRUE(fails_with(run_parashade(render_args(scene)), kUsage, {"PARASHADE_MEMORY_LIMIT", "lots"}));
   }
   EXPECT_TRUE(nothing_written());
 }
