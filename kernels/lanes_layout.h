@@ -34,16 +34,18 @@
 /* Blocks across a tile as bits: no more than down it (BLOCK_W >= BLOCK_H). */
 #define BLOCK_BITS_X LOG2_4096(TILE / BLOCK_W)
 
-/* Work-item lid's block: its top-left pixel in the tile. Morton order: the index's bits alternate x and y, those
- * past the x bits are y's. */
-INLINE int2 lane_block(int lid) {
-  int x = 0, y = 0;
-  for (int b = 0; b < BLOCK_BITS_X; ++b) {
-    x |= ((lid >> (2 * b)) & 1) << b;
-    y |= ((lid >> (2 * b + 1)) & 1) << b;
-  }
-  y |= (lid >> (2 * BLOCK_BITS_X)) << BLOCK_BITS_X;
-  return (int2)(x * BLOCK_W, y * BLOCK_H);
+/* Work-item lid's block: its top-left pixel's column (lane_block_x) and row (lane_block_y) in the tile. Morton order:
+ * the index's bits alternate x and y, those past the x bits are y's. Plain ints, no int2: PoCL's vectorizer of the
+ * work-item loops leaves a loop with any vector-typed instruction scalar. */
+INLINE int lane_block_x(int lid) {
+  int x = 0;
+  for (int b = 0; b < BLOCK_BITS_X; ++b) x |= ((lid >> (2 * b)) & 1) << b;
+  return x * BLOCK_W;
+}
+INLINE int lane_block_y(int lid) {
+  int y = 0;
+  for (int b = 0; b < BLOCK_BITS_X; ++b) y |= ((lid >> (2 * b + 1)) & 1) << b;
+  return (y | (lid >> (2 * BLOCK_BITS_X)) << BLOCK_BITS_X) * BLOCK_H;
 }
 
 /* Pixel p of the block: its column and row in the block. */

@@ -27,12 +27,12 @@ INLINE void shade_lane_pixel(const FrameArgs* f, int w, int px, int py, float* r
 #endif
 }
 
-/* The work-item's pixels, the block whose top-left pixel is `block` in the frame, those inside the frame. */
-INLINE void write_lane_pixels(const FrameArgs* f, int2 block, const int* winner) {
+/* The work-item's pixels, the block whose top-left pixel is (block_x, block_y) in the frame, those inside the frame. */
+INLINE void write_lane_pixels(const FrameArgs* f, int block_x, int block_y, const int* winner) {
   const size_t plane = (size_t)f->width * f->height;
   /* Not unrolled: a block of 64 pixels' unrolled shading took PoCL a minute to compile. */
   for (int p = 0; p < LANE_PIXELS; ++p) {
-    const int px = block.x + BLOCK_X(p), py = block.y + BLOCK_Y(p);
+    const int px = block_x + BLOCK_X(p), py = block_y + BLOCK_Y(p);
     if (px >= f->width || py >= f->height) continue;
     float r = f->background.x, g = f->background.y, b = f->background.z;
     const int w = winner[p];

@@ -38,13 +38,13 @@ INLINE void walk_lane_pixels(__local const TriangleGeometry* t, int ti, int smal
   }
 }
 
-/* Triangle t (record ti) at the work-item's block, whose top-left pixel is `block` in the frame. */
-INLINE void walk_lane_triangle(__local const TriangleGeometry* t, int ti, int tile_x, int tile_y, int2 block,
-                               float* depth, int* winner) {
+/* Triangle t (record ti) at the work-item's block, whose top-left pixel is (block_x, block_y) in the frame. */
+INLINE void walk_lane_triangle(__local const TriangleGeometry* t, int ti, int tile_x, int tile_y, int block_x,
+                               int block_y, float* depth, int* winner) {
   const int x0 = t->x0, y0 = t->y0;
   const int lo = max(tile_x, x0) - x0, hi = min(tile_x + TILE - 1, (int)t->x1) - x0;
   const int top = max(tile_y, y0) - y0, bottom = min(tile_y + TILE - 1, (int)t->y1) - y0;
-  const int bx = block.x - x0, by = block.y - y0;
+  const int bx = block_x - x0, by = block_y - y0;
   /* The block misses the box (or the box the tile): nothing to test. */
   if (max(lo, bx) > min(hi, bx + BLOCK_W - 1) || max(top, by) > min(bottom, by + BLOCK_H - 1)) return;
   if (t->flags & TRIANGLE_SMALL) walk_lane_pixels(t, ti, 1, bx, by, lo, hi, top, bottom, depth, winner);

@@ -13,6 +13,12 @@
 #include "sierpinski_leaf.h"
 #include "tile_paths.h"
 #include "frame_args.h"
+/* A barrier after every triangle instead of every batch: PoCL's work-item loops then wrap one triangle's walk, the
+ * innermost loop its vectorizer needs; measured (bench_kernel_ab -D LANES_TRIANGLE_BARRIER=1, teapot Gouraud, tile 32):
+ * PoCL 0.91x, Intel's runtime 1.05-1.23x. Off: PoCL still left the loops scalar (bench/README.md "Run KS"). */
+#ifndef LANES_TRIANGLE_BARRIER
+#define LANES_TRIANGLE_BARRIER 0
+#endif
 #include "lanes_layout.h"
 #include "lanes_batch.h"
 #include "lanes_walk.h"
@@ -23,7 +29,7 @@
 INLINE void render_lanes_tile(const FrameArgs* f, int tile, uint begin, uint end, int lid,
                               __local TriangleGeometry* batch, __local int* ids) {
   const int tile_x = (tile % f->tiles_x) * TILE, tile_y = (tile / f->tiles_x) * TILE;
-  const int2 block = (int2)(tile_x, tile_y) + lane_block(lid); /* the work-item's pixels, in the frame */
+  const int block_x = tile_x + lane_block_x(lid), block_y = tile_y + lane_block_y(lid); /* its pixels, in the frame */
   float depth[LANE_PIXELS];
   int winner[LANE_PIXELS];
 #pragma unroll
@@ -35,10 +41,17 @@ INLINE void render_lanes_tile(const FrameArgs* f, int tile, uint begin, uint end
     const int n = (int)min((uint)LANES_BATCH, end - first);
     load_batch(f, first, n, lid, batch, ids);
     barrier(CLK_LOCAL_MEM_FENCE);
-    for (int j = 0; j < n; ++j) walk_lane_triangle(&batch[j], ids[j], tile_x, tile_y, block, depth, winner);
+#if LANES_TRIANGLE_BARRIER
+    for (int j = 0; j < n; ++j) {
+      walk_lane_triangle(&batch[j], ids[j], tile_x, tile_y, block_x, block_y, depth, winner);
+      barrier(CLK_LOCAL_MEM_FENCE);
+    }
+#else
+    for (int j = 0; j < n; ++j) walk_lane_triangle(&batch[j], ids[j], tile_x, tile_y, block_x, block_y, depth, winner);
     barrier(CLK_LOCAL_MEM_FENCE); /* every work-item is done with the batch before the next one overwrites it */
+#endif
   }
-  write_lane_pixels(f, block, winner);
+  write_lane_pixels(f, block_x, block_y, winner);
 }
 
 /* One work-group per tile: the host launches tiles x WORK_GROUP_SIZE work-items, a band's from its first tile on
