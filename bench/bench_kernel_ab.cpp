@@ -1,11 +1,14 @@
 // Two builds of the frame kernel on one scene, frame by frame in one process: A with the kernel as it is
-// (plus --a's build options), B with --b's (for example -D NAME that an #ifdef in the kernel source reads).
+// (plus --a's build options), B with --b's (for example -D NAME that an #ifdef in the kernel source reads), or
+// the two kernel shapes: --b-shape lanes [--b-group N] (docs/pipeline.md), each side's shape and work-group
+// (--a-shape, --a-group) as render's --kernel-shape and --work-group-size.
 // Each pair renders A and B one right after the other, in alternating order, so a noisy host slows both alike;
 // the figures are the medians of the pairs' ratios B/A. On a 2-vCPU VM whose separate runs of one binary
 // differed by up to a third, two identical builds measured this way stayed within 0.96-1.03 (bench/README.md,
 // "A kernel change on a noisy host"). The images of the two builds are compared too.
 //
-//   bench_kernel_ab SCENE --b "-D NAME" [--a OPTIONS] [--method phong] [--max-error L] [--size WxH]
+//   bench_kernel_ab SCENE --b "-D NAME" [--a OPTIONS] [--a-shape S --a-group N --a-tile T, the same for B]
+//                   [--method phong] [--max-error L] [--size WxH]
 //                   [--tile N] [--pairs 200] [--same-image] [--json FILE]
 //
 // The device is PARASHADE_DEVICE's (as `render --device`), else the default device. Not a Google Benchmark
@@ -43,15 +46,43 @@ std::vector<double> ratios(const std::vector<double>& b, const std::vector<doubl
   return r;
 }
 
+// A side's build: its extra -D options, kernel shape and work-group size.
+struct Build {
+  std::string defines, shape = "vector";
+  int group = 0, tile = 0;  // tile 0: --tile's
+  bool operator==(const Build& o) const {
+    return defines == o.defines && shape == o.shape && group == o.group && tile == o.tile;
+  }
+  std::string text() const {
+    std::string t = defines.empty() ? std::string("(the kernel as it is)") : defines;
+    if (shape != "vector" || group != 0) t += " [" + shape + ", work-group " + std::to_string(group) + "]";
+    if (tile != 0) t += " [tile " + std::to_string(tile) + "]";
+    return t;
+  }
+  void apply(RenderOptions& o) const {
+    o.kernel_defines = defines;
+    o.kernel_shape = parse_kernel_shape(shape);
+    o.work_group_size = group;
+    if (tile != 0) o.tile_size = tile;
+  }
+};
+
 int run(int argc, char** argv) {
   CLI::App app{"Frame-by-frame comparison of two builds of the frame kernel (A: --a's options, B: --b's)"};
-  std::string scene_path, a_options, b_options, method_text = "phong", size, json_path;
+  std::string scene_path, method_text = "phong", size, json_path;
+  Build build_a, build_b;
   int pairs = 200, tile = 0;
   double max_error = 0.0;
   bool require_same_image = false;
   app.add_option("scene", scene_path, "Scene file (JSON) or bare mesh")->required();
-  app.add_option("--a", a_options, "Build options added to A's kernel (default none: the kernel as it is)");
-  app.add_option("--b", b_options, "Build options added to B's kernel, e.g. \"-D NAME=1\"")->required();
+  app.add_option("--a", build_a.defines, "Build options added to A's kernel (default none: the kernel as it is)");
+  app.add_option("--b", build_b.defines, "Build options added to B's kernel, e.g. \"-D NAME=1\"");
+  app.add_option("--a-shape", build_a.shape, "A's kernel shape, vector (default) or lanes");
+  app.add_option("--b-shape", build_b.shape, "B's kernel shape, vector (default) or lanes");
+  app.add_option("--a-group", build_a.group, "A's work-group size, as render's --work-group-size (default 0)");
+  app.add_option("--b-group", build_b.group, "B's work-group size (default 0)");
+  app.add_option("--a-tile", build_a.tile, "A's tile size (default --tile's)");
+  app.add_option("--b-tile", build_b.tile, "B's tile size (default --tile's)");
   app.add_option("--method", method_text, "Shading method, as render's --method (default phong)");
   const CLI::Option* max_error_given =
       app.add_option("--max-error", max_error, "combined:auto's error budget in levels, as render's (default render's)");
@@ -65,7 +96,7 @@ int run(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : int(ExitCode::usage);  // --help: 0; a bad command line: 2, as parashade's
   }
-  if (a_options == b_options) throw UsageError("--a and --b are the same build: give B other options");
+  if (build_a == build_b) throw UsageError("--a and --b are the same build: give B other options, shape or work-group");
   JsonOutput json(json_path);  // a bad path fails now, not after the pairs
 
   const auto wh = parse_size(size);  // its syntax before the scene is read
@@ -84,8 +115,8 @@ int run(int argc, char** argv) {
   }
   options.tile_size = tile > 0 ? tile : default_tile_size(scene, options, options.band_record_bytes);
   RenderOptions a = options, b = options;
-  a.kernel_defines = a_options;
-  b.kernel_defines = b_options;
+  build_a.apply(a);
+  build_b.apply(b);
   Renderer ra(bench_device(), a), rb(bench_device(), b);
 
   // Builds, work-group compilation and allocations; then the images of the two builds.
@@ -114,8 +145,7 @@ int run(int argc, char** argv) {
   const DeviceInfo& d = bench_device().info();
   std::printf("%s, %s, %dx%d, tile %d, device %s (%d compute units)\n", scene_path.c_str(), method_text.c_str(),
               scene.width, scene.height, options.tile_size, d.name.c_str(), int(d.compute_units));
-  const auto shown = [](const std::string& o) { return o.empty() ? std::string("(the kernel as it is)") : o; };
-  std::printf("A: %s\nB: %s\n", shown(a_options).c_str(), shown(b_options).c_str());
+  std::printf("A: %s\nB: %s\n", build_a.text().c_str(), build_b.text().c_str());
   std::printf("images: %s\n", same_image ? "identical" : "DIFFERENT");
   std::printf("kernel ms: A %.3f, B %.3f (medians); B/A %.3f (median of %d pairs)\n", median(sa.kernel_ms),
               median(sb.kernel_ms), kernel_ratio, pairs);
@@ -128,8 +158,12 @@ int run(int argc, char** argv) {
                               {"tile_size", options.tile_size},
                               {"device", d.name},
                               {"compute_units", d.compute_units},
-                              {"a_options", a_options},
-                              {"b_options", b_options},
+                              {"a_options", build_a.defines},
+                              {"b_options", build_b.defines},
+                              {"a_shape", build_a.shape},
+                              {"b_shape", build_b.shape},
+                              {"a_group", build_a.group},
+                              {"b_group", build_b.group},
                               {"pairs", pairs},
                               {"images_identical", same_image},
                               {"kernel_ratio_median", kernel_ratio},

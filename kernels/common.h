@@ -17,7 +17,30 @@
  * was 12% of a frame profile as a call), which also stops vectorization across them. */
 #define INLINE inline __attribute__((always_inline))
 
-/* A work-item owns one row segment of VEC pixels (constants.h); its pixels are the lanes of these vectors. */
+/* The kernel's shape (docs/pipeline.md, RenderOptions::kernel_shape): KERNEL_SHAPE_VECTOR, a work-item walks
+ * whole tiles and owns one row segment or stamp of VEC pixels (constants.h) at a time as the lanes of these
+ * vectors; KERNEL_SHAPE_LANES (render_lanes.cl), a work-item per pixel lane and a work-group per tile, the
+ * lanes made by the device (an implicit vectorizer, a GPU's wavefront): the same shading code on one pixel,
+ * the types below one lane wide. */
+#define KERNEL_SHAPE_VECTOR 0
+#define KERNEL_SHAPE_LANES 1
+#ifndef KERNEL_SHAPE
+#define KERNEL_SHAPE KERNEL_SHAPE_VECTOR
+#endif
+
+#if KERNEL_SHAPE == KERNEL_SHAPE_LANES
+typedef float floatV;
+typedef int intV;
+typedef uint uintV;
+#define convert_floatV convert_float
+#define convert_intV convert_int
+#define convert_uintV convert_uint
+#define as_intV as_int
+#define as_uintV as_uint
+#define as_floatV as_float
+/* A comparison as a lane mask, -1 where true: a vector comparison gives -1 already, a scalar one 1. */
+#define LANE_MASK(c) (-(c))
+#else
 #if VEC != 16
 #error "the vector types below are 16 lanes wide: VEC must be 16"
 #endif
@@ -34,6 +57,8 @@ typedef uint16 uintV;
 #define as_uintV as_uint16
 #define as_floatV as_float16
 #define LANE_INDEX ((intV)(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15))
+#define LANE_MASK(c) (c)
+#endif
 
 /* 1/sqrt(x), and 0 where x is 0: a zero vector stays zero instead of becoming NaN. */
 INLINE floatV safe_rsqrt(floatV x) { return select((floatV)0.0f, rsqrt(x), isgreater(x, (floatV)0.0f)); }
@@ -57,6 +82,7 @@ INLINE uintV to_level(floatV x) { return as_uintV(clamp(x, 0.0f, 255.0f) + 83886
 #endif
 #define SEGMENTS (TILE / VEC)
 
+#if KERNEL_SHAPE == KERNEL_SHAPE_VECTOR
 /* any() of a VEC-lane mask (lanes -1 or 0; the sign bits tested, as any()). PoCL 3.1 turns any() on 16
  * lanes into a chain of per-lane extracts and branches; OR-ing the halves down to one lane is a few vector
  * ORs and one test. */
@@ -83,6 +109,7 @@ INLINE int max_lane(intV v) {
   const int2 h2 = max(h4.lo, h4.hi);
   return max(h2.x, h2.y);
 }
+#endif
 
 /* Read prefetch of the cache line at p (any address space): a hint, no effect on results. Only where the
  * kernel is compiled for the CPU itself (PoCL's CPU devices): a device that interprets or compiles for
@@ -94,6 +121,7 @@ INLINE int max_lane(intV v) {
 #define PREFETCH_LINE(p)
 #endif
 
+#if KERNEL_SHAPE == KERNEL_SHAPE_VECTOR
 /* A row of VEC frame pixels at p: stored non-temporally (the frame is written once and the kernel never
  * reads it back, so its lines need not be read in or kept) when p is aligned to the vector, else
  * ordinarily. FRAME_STORES_DONE orders the non-temporal stores before the work-item ends. */
@@ -106,6 +134,7 @@ INLINE void store_frame_row(uintV v, __global uint* p) {
 #endif
   vstoreV(v, 0, p);
 }
+#endif
 #if defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
 #define FRAME_STORES_DONE() __builtin_ia32_sfence()
 #else

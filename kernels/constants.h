@@ -39,6 +39,12 @@
  * 16-pixel tile is slower again: PoCL pays a fixed cost per work-group. */
 #define WORK_ITEMS_PER_COMPUTE_UNIT 256
 
+/* The lanes shape's work-group (render_lanes.cl, --work-group-size 0): work-items per tile, each owning
+ * TILE * TILE / LANES_WORK_GROUP_DEFAULT of its pixels (at most the tile's pixels). */
+#define LANES_WORK_GROUP_DEFAULT 256
+/* The largest --work-group-size taken (a device may allow fewer: the renderer checks its own). */
+#define MAX_WORK_GROUP_SIZE 4096
+
 /* Small triangles (TRIANGLE_SMALL, triangle_record.h): vertex extent at most SMALL_EXTENT pixels both
  * ways. Their edge functions stay below 2^30 over their box and the 16 pixels beyond it, so the kernels
  * may evaluate them per pixel in 32 bits (kernels/span.h). */

@@ -103,7 +103,7 @@ INLINE intV segment_log2(__global const float* a, floatV fdy, intV xl, intV xr, 
   const floatV allowed = psi_limit * sqrt(mx * mx + my * my + mz * mz); /* largest |D| * length */
   const float d = sqrt(d2);
   intV k = (intV)0;
-  for (int j = 1; j <= SEG_K_MAX; ++j) k -= isless(d * (float)(1 << j), allowed); /* -1 where true */
+  for (int j = 1; j <= SEG_K_MAX; ++j) k -= LANE_MASK(isless(d * (float)(1 << j), allowed)); /* -1 where true */
   return k;
 #else
   return (intV)SEG_K;

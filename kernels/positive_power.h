@@ -11,7 +11,7 @@ INLINE floatV log2_positive(floatV x) {
   const intV bits = as_intV(x);
   intV e = (bits >> 23) - 127;
   floatV m = as_floatV((bits & 0x007FFFFF) | 0x3F800000);
-  const intV high = isgreater(m, (floatV)1.41421356f); /* -1 where true */
+  const intV high = LANE_MASK(isgreater(m, (floatV)1.41421356f)); /* -1 where true */
   m = select(m, m * 0.5f, high);
   e -= high;
   const floatV s = (m - 1.0f) / (m + 1.0f), s2 = s * s;

@@ -72,27 +72,14 @@ INLINE void units_depth_pass(const FrameArgs* f, __global const uint* tile_start
 }
 #endif
 
-__kernel __attribute__((reqd_work_group_size(1, 1, 1)))
-void render_tiles(__global const TriangleGeometry* tris, __global const float* attrs,
-                  __global const uint* tile_start, __global const uint* tile_tris,
-                  __constant float4* lights, __constant float4* materials, float4 viewer, float4 background,
-                  int tiles_x, int num_tiles, int width, int height, __global uint* out_rgba,
-                  __global float* out_float, __global const FixedPlanes* fixed, __global ulong* tile_counters,
-                  __global const SierpinskiLeaf* leaves, __global const uint* dda_first,
-                  __global const int* dda_rows
-#if PLAN_PASS
-                  , __global ulong* keys, __global const uint* packet_first, __global const uint* vtile_tile,
-                  volatile __global int* packet_counter, int num_packets
+/* Work-items per work-group (--work-group-size; 1 unless given): each still walks its own interleaved tiles. */
+#ifndef WORK_GROUP_SIZE
+#define WORK_GROUP_SIZE 1
 #endif
-                  ) {
-  const FrameArgs f = {.tris = tris, .attrs = attrs, .tile_tris = tile_tris, .lights = lights, .materials = materials,
-                       .viewer = viewer, .background = background, .tiles_x = tiles_x, .width = width, .height = height,
-                       .out_rgba = out_rgba, .out_float = out_float, .tile_counters = tile_counters, .fixed = fixed,
-                       .leaves = leaves, .dda_first = dda_first, .dda_rows = dda_rows,
-#if PLAN_PASS
-                       .keys = keys
-#endif
-  };
+
+__kernel __attribute__((reqd_work_group_size(WORK_GROUP_SIZE, 1, 1)))
+void render_tiles(RENDER_TILES_PARAMS) {
+  const FrameArgs f = FRAME_ARGS_OF_PARAMS;
 #if PLAN_PASS == 1
   units_depth_pass(&f, tile_start, packet_first, vtile_tile, packet_counter, num_packets);
 #else

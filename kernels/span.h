@@ -9,8 +9,13 @@
 
 #include "triangle_record.h"
 
+#if KERNEL_SHAPE == KERNEL_SHAPE_LANES
+typedef long longV; /* one row (the lanes shape's pixel) */
+#define convert_longV convert_long
+#else
 typedef long16 longV;
 #define convert_longV convert_long16
+#endif
 
 /* 1/a, the seed of the span search, computed here rather than stored in the record: the records are what
  * setup writes and the kernel reads per triangle, and only the span search of larger triangles needs it. */

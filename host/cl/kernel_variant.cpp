@@ -61,7 +61,8 @@ KernelVariant kernel_variant(const Scene& s, const RenderOptions& o) {
 }
 
 std::vector<std::string> kernel_files(const KernelVariant& v) {
-  return {"common.h", "triangle_record.h", method_header(v.options.method), "render_tiles.cl"};
+  return {"common.h", "triangle_record.h", method_header(v.options.method),
+          v.options.kernel_shape == KernelShape::lanes ? "render_lanes.cl" : "render_tiles.cl"};
 }
 
 bool KernelVariant::defers_tiles() const {
@@ -70,8 +71,8 @@ bool KernelVariant::defers_tiles() const {
 
 bool KernelVariant::stamps_apply() const {
   // Every method has them on the plain path (the combined method's segment walk reads and writes the stamps'
-  // lanes a row at a time, combined_walk.h).
-  return options.stamps && plain_frame();
+  // lanes a row at a time, combined_walk.h); the lanes shape has a layout of its own.
+  return options.stamps && plain_frame() && options.kernel_shape == KernelShape::vector;
 }
 
 std::string KernelVariant::build_options() const {
@@ -108,6 +109,9 @@ std::string KernelVariant::build_options() const {
   if (defers_tiles()) opt << " -D DEFER_STAMPS=1 -D DEFER_MIN_TRIANGLES=" << o.deferral_threshold();
   if (plan_pass == 1) opt << " -D PLAN_PASS=1 -D PLAN_DYNAMIC=" << (plan_dynamic ? "1" : "0");
   if (plan_pass == 2) opt << " -D PLAN_PASS=2";
+  // The shape, and the local size where it is not the vector shape's 1 (kept out of the default build's options).
+  if (o.kernel_shape == KernelShape::lanes) opt << " -D KERNEL_SHAPE=1";
+  if (o.kernel_shape == KernelShape::lanes || o.group_size() != 1) opt << " -D WORK_GROUP_SIZE=" << o.group_size();
   if (!o.kernel_defines.empty()) opt << " " << o.kernel_defines;
   return opt.str();
 }

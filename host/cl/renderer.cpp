@@ -47,6 +47,7 @@ Renderer::Renderer(Device& device, RenderOptions options, std::vector<Device*> u
       unit_devices_(std::move(unit_devices)),
       pipeline_(options_),  // checks the configuration against the table, once
       variant_(std::make_unique<KernelVariant>(kernel_variant(options_))) {
+  check_work_group_size(options_, &device_.info());
   if (!unit_devices_.empty() && !options_.plan)
     throw UsageError("sub-devices run a plan's units; without a plan, sub-devices take bands of the frame");
   for (Device* d : unit_devices_)
@@ -203,6 +204,7 @@ TileKernelArgs Renderer::tile_args(const cl::Buffer& tile_start, const cl::Buffe
 }
 
 std::optional<int> Renderer::deferral_threshold(const Scene& scene) const {
+  if (options_.kernel_shape == KernelShape::lanes) return 0;  // every pixel shaded once after the walk, every tile
   KernelVariant v = *variant_;
   v.plan_pass = 0;  // as the report has always said it (a planned frame's resolve pass never defers)
   if (!v.defers_tiles()) return std::nullopt;
@@ -212,8 +214,25 @@ std::optional<int> Renderer::deferral_threshold(const Scene& scene) const {
 std::string Renderer::kernel_build() const { return kernel_() ? variant_->build_options() : std::string(); }
 
 int Renderer::work_items(int tiles) const {
+  const int group = options_.group_size();
+  if (options_.kernel_shape == KernelShape::lanes) return std::max(1, tiles) * group;  // a work-group per tile
   const int wanted = options_.work_items > 0 ? options_.work_items : WORK_ITEMS_PER_COMPUTE_UNIT * std::max(1, device_.info().compute_units);
-  return std::max(1, std::min(tiles, wanted));
+  const int n = std::max(1, std::min(tiles, wanted));
+  return (n + group - 1) / group * group;  // whole work-groups (the kernel skips the tiles past the last)
+}
+
+void check_work_group_size(const RenderOptions& o, const DeviceInfo* device) {
+  const int n = o.work_group_size == 0 && o.tile_size == 0 ? 1 : o.group_size();  // a default fits any tile
+  const std::string what = "work-group size " + std::to_string(o.work_group_size ? o.work_group_size : n) +
+                           " (--work-group-size)";
+  if (o.work_group_size < 0 || n < 1 || (n & (n - 1)) != 0 || n > MAX_WORK_GROUP_SIZE)
+    throw UsageError(what + " must be a power of two from 1 to " + std::to_string(MAX_WORK_GROUP_SIZE));
+  if (o.kernel_shape == KernelShape::lanes && o.tile_size > 0 && n > o.tile_size * o.tile_size)
+    throw UsageError(what + ": the lanes shape's work-items each own pixels of one " + std::to_string(o.tile_size) +
+                     "x" + std::to_string(o.tile_size) + " tile, so at most " + std::to_string(o.tile_size * o.tile_size));
+  if (device && device->max_work_group > 0 && std::size_t(n) > device->max_work_group)
+    throw UsageError(what + " exceeds the largest work-group of '" + device->name + "', " +
+                     std::to_string(device->max_work_group));
 }
 
 Renderer::~Renderer() {
@@ -312,8 +331,11 @@ double Renderer::launch_bands(const Scene& scene, int bands, const PreparedFrame
   double launch_ms = 0, upload_ms = 0;
   for (int b = 0;; ++b) {
     const int tiles = band->end_tile - band->first_tile;
-    q.enqueueNDRangeKernel(kernel_, band->first_tile ? cl::NDRange(std::size_t(band->first_tile)) : cl::NullRange,
-                           cl::NDRange(std::size_t(work_items(std::max(1, tiles)))), cl::NDRange(1), nullptr, &done);
+    // The lanes shape's work-items are a work-group per tile: its band starts a work-group per tile further on.
+    const std::size_t group = std::size_t(options_.group_size());
+    const std::size_t offset = std::size_t(band->first_tile) * (options_.kernel_shape == KernelShape::lanes ? group : 1);
+    q.enqueueNDRangeKernel(kernel_, offset ? cl::NDRange(offset) : cl::NullRange,
+                           cl::NDRange(std::size_t(work_items(std::max(1, tiles)))), cl::NDRange(group), nullptr, &done);
     if (b + 1 == bands) break;
     band_done.push_back(done);
     premap_records();  // mapped when this band's kernel ends (the queue is in order)

@@ -58,6 +58,7 @@ std::string option_names(const ConfigError& e, const FrameConfig& config, Device
       case Axis::choice: flag = "--triangle-choice"; break;
       case Axis::highlight: flag = "--highlight-test"; break;
       case Axis::plan: flag = "--cu/--partition"; break;
+      case Axis::shape: flag = "--kernel-shape"; break;
       case Axis::devices:
         flag = devices == DeviceMode::ranks_sort_first || devices == DeviceMode::ranks_sort_last ? "--distribute"
                                                                                                 : "--device";

@@ -26,12 +26,12 @@ namespace {
 
 struct RenderArgs {
   std::string scene, output, method = "gouraud", device, size, report, units, arith = "float", division = "constant",
-              coverage = "centre", specular = "exact", normalize = "exact", triangle_choice;
+              coverage = "centre", specular = "exact", normalize = "exact", triangle_choice, kernel_shape = "vector";
   std::string against;  // --against: a plain method whose frames alternate with this one's
   int frames = 5, warmup = 1;
   // The knobs that are plain values bind straight to the options the renderer and its kernel read (one
   // name from --NAME to the kernel's macro): --tile (0 here: chosen for the scene, tile_choice.hpp),
-  // --work-items, --defer-min-triangles, --float.
+  // --work-items, --work-group-size, --defer-min-triangles, --float; --kernel-shape is parsed into kernel_shape.
   RenderOptions options = [] {
     RenderOptions o;
     o.tile_size = 0;
@@ -79,6 +79,7 @@ void combined_options(const RenderArgs& a, RenderOptions& o) {
 RenderOptions render_options(const RenderArgs& a) {
   RenderOptions o = a.options;
   o.method = parse_method(a.method);
+  o.kernel_shape = for_option("--kernel-shape", [&] { return parse_kernel_shape(a.kernel_shape); });
   if (o.work_items < 0) throw UsageError("--work-items must not be negative");
   if (o.defer_min_triangles < -1 || o.defer_min_triangles > kMaxDeferMinTriangles)
     throw UsageError("--defer-min-triangles must be 0.." + std::to_string(kMaxDeferMinTriangles) + " (or -1, the default)");
@@ -326,6 +327,16 @@ void add_layout_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
                   "Kernel work-items, each rendering every N-th tile (0: " + std::to_string(WORK_ITEMS_PER_COMPUTE_UNIT) +
                       " per compute unit)")
       ->capture_default_str();
+  cmd->add_option("--kernel-shape", a->kernel_shape,
+                  "The frame kernel's shape: vector (a work-item walks whole tiles with explicit 16-lane vectors) or "
+                  "lanes (a work-group per tile, a work-item per pixel lane, for implicit vectorizers and GPUs; the "
+                  "plain frame and --float only). Same image; docs/pipeline.md")
+      ->capture_default_str();
+  cmd->add_option("--work-group-size", a->options.work_group_size,
+                  "Work-items per work-group, a power of two (0: the shape's default, 1 for vector, " +
+                      std::to_string(LANES_WORK_GROUP_DEFAULT) + " or the tile's pixels for lanes, each owning tile x "
+                      "tile / N of them)")
+      ->capture_default_str();
   cmd->add_option("--defer-min-triangles", a->options.defer_min_triangles,
                   "Phong and the combined method on the stamps: a tile of at least N triangles shades each pixel once, "
                   "after its depth test (-1: the default, every tile for Phong, tile x tile / 16 for combined; 0: every "
@@ -403,7 +414,8 @@ Command add_render_command(CLI::App& app) {
   add_quiet_flag(*cmd, a->quiet);
   return {cmd, [a, cmd]() {
             a->explicit_config = cmd->count("--tile") + cmd->count("--work-items") + cmd->count("--cu") +
-                                     cmd->count("--partition") > 0;
+                                     cmd->count("--partition") + cmd->count("--kernel-shape") +
+                                     cmd->count("--work-group-size") > 0;
             return run_render(*a);
           }};
 }

@@ -265,8 +265,11 @@ class TuneRun {
     RenderOptions plain = o;
     plain.tile_size = base_->options.tile_size;
     plain.work_items = base_->options.work_items;
+    plain.kernel_shape = base_->options.kernel_shape;
+    plain.work_group_size = base_->options.work_group_size;
     plain.plan.reset();
-    if (plain.tile_size == o.tile_size && plain.work_items == o.work_items && !o.plan)
+    if (plain.tile_size == o.tile_size && plain.work_items == o.work_items && plain.kernel_shape == o.kernel_shape &&
+        plain.work_group_size == o.work_group_size && !o.plan)
       return verified_bytes_[shading] = bytes;
     const ResolvedRender reference = with_options(*base_, plain);
     RenderSession session(reference);
@@ -539,7 +542,8 @@ Command add_tune_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--param", a->params,
                   "NAME=V1,V2,... (repeatable): the values of one parameter of the space, each named as the render "
-                  "option it sets: tile, work_items, partition, cu (U, modeled units), batch, method, units, normalize, "
+                  "option it sets: tile, work_items, kernel_shape, work_group_size, partition, cu (U, modeled units), batch, "
+                  "method, units, normalize, "
                   "specular");
   cmd->add_option("--strategy", a->strategy, "brute, random or anneal (simulated annealing)")->capture_default_str();
   cmd->add_option("--seed", a->seed, "Seed of the strategy's random choices (the same seed, the same sequence)")

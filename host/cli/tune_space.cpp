@@ -56,6 +56,17 @@ const std::vector<ParamDef>& param_defs() {
        [] { return tile_sizes_text(); }},
       {"work_items", [](const std::string& t) { return std::to_string(parse_int(t)); },
        [] { return std::string("0 (the device's default) or a positive number of work-items"); }},
+      {"kernel_shape", [](const std::string& t) { return std::string(kernel_shape_name(parse_kernel_shape(t))); },
+       [] { return std::string("vector, lanes"); }},
+      {"work_group_size",
+       [](const std::string& t) {
+         RenderOptions o;  // the size alone (its limits with the tile and the device: per point, per render)
+         o.work_group_size = parse_int(t);
+         o.tile_size = 0;
+         check_work_group_size(o);
+         return std::to_string(o.work_group_size);
+       },
+       [] { return "0 (the shape's default) or a power of two up to " + std::to_string(MAX_WORK_GROUP_SIZE); }},
       {"partition",
        [](const std::string& t) { return t == "none" ? t : partition_name(parse_partition(t)); },
        partition_values},
@@ -110,11 +121,12 @@ const std::vector<std::string>& tune_param_names() {
 }
 
 bool is_number_param(const std::string& name) {
-  return name == "tile" || name == "work_items" || name == "cu" || name == "batch";
+  return name == "tile" || name == "work_items" || name == "work_group_size" || name == "cu" || name == "batch";
 }
 
 bool is_layout_param(const std::string& name) {
-  return name == "tile" || name == "work_items" || name == "partition" || name == "cu" || name == "batch";
+  return name == "tile" || name == "work_items" || name == "kernel_shape" || name == "work_group_size" ||
+         name == "partition" || name == "cu" || name == "batch";
 }
 
 TuneSpace default_tune_space(const std::string& method, int compute_units) {
@@ -134,6 +146,8 @@ TuneSpace default_tune_space(const std::string& method, int compute_units) {
     partitions.push_back(partition_name(p));
   s.values = {tiles,
               distinct({0, cu, 16 * cu, 64 * cu}),
+              {"vector"},
+              {"0"},
               partitions,
               distinct({cu, 2 * cu, 4 * cu, 16}),
               {"16", "64", "256"},
@@ -180,6 +194,8 @@ RenderOptions options_at(const TuneSpace& s, const TunePoint& p, const RenderOpt
   RenderOptions o = base;
   o.tile_size = std::stoi(value("tile"));
   o.work_items = std::stoi(value("work_items"));
+  o.kernel_shape = parse_kernel_shape(value("kernel_shape"));
+  o.work_group_size = std::stoi(value("work_group_size"));
   if (value("partition") == "none") {
     o.plan.reset();
   } else {
@@ -201,12 +217,17 @@ RenderOptions options_at(const TuneSpace& s, const TunePoint& p, const RenderOpt
 TunePoints enumerate_points(const TuneSpace& s, const RenderOptions& base) {
   TunePoints out;
   const int partition = index_of(s, "partition"), units = index_of(s, "cu"), batch = index_of(s, "batch");
+  const int items = index_of(s, "work_items");
   TunePoint p(s.names.size(), 0);
   if (space_size(s) == 0) return out;
   for (;;) {
     const std::string& part = s.values[partition][p[partition]];
     const bool reads_units = part != "none", reads_batch = part == "dynamic";
-    if ((!reads_units && p[units] != 0) || (!reads_batch && p[batch] != 0)) {
+    const RenderOptions shaped = options_at(s, p, base);
+    const bool lanes = shaped.kernel_shape == KernelShape::lanes;  // a work-group per tile: no work_items to read
+    const bool group_fits = !lanes || shaped.group_size() <= shaped.tile_size * shaped.tile_size;
+    if ((!reads_units && p[units] != 0) || (!reads_batch && p[batch] != 0) || (lanes && p[items] != 0) ||
+        !group_fits) {
       ++out.not_applicable;
     } else {
       const RenderOptions o = options_at(s, p, base);
@@ -235,7 +256,8 @@ nlohmann::json point_params(const TuneSpace& s, const TunePoint& p) {
   for (std::size_t i = 0; i < s.names.size(); ++i) {
     const std::string& n = s.names[i];
     const std::string& v = s.values[i][p[i]];
-    const bool unread = (n == "cu" && part == "none") || (n == "batch" && part != "dynamic");
+    const bool lanes = s.values[index_of(s, "kernel_shape")][p[index_of(s, "kernel_shape")]] == "lanes";
+    const bool unread = (n == "cu" && part == "none") || (n == "batch" && part != "dynamic") || (n == "work_items" && lanes);
     if (unread) j[n] = "-";
     else if (is_number_param(n)) j[n] = std::stoi(v);
     else j[n] = v;
@@ -254,7 +276,8 @@ TunePoint default_point(const TuneSpace& s, const RenderOptions& base) {
   };
   const std::string method = base.method == Method::combined ? combined_name(base.combined) : method_name(base.method);
   if (pick("tile", std::to_string(base.tile_size)) && pick("work_items", std::to_string(base.work_items)) &&
-      pick("partition", "none") && pick("method", method) && pick("units", "none") &&
+      pick("kernel_shape", kernel_shape_name(base.kernel_shape)) &&
+      pick("work_group_size", std::to_string(base.work_group_size)) && pick("partition", "none") && pick("method", method) && pick("units", "none") &&
       pick("normalize", normalize_name(base.normalize)) && pick("specular", specular_name(base.specular)))
     return p;
   return {};

@@ -30,9 +30,10 @@ const std::vector<std::string> kValues[kAxes] = {
     {"off", "on"},                                                                               // highlight
     {"none", "planned"},                                                                         // plan
     {"one", "bands", "unit-sub-devices", "ranks-sort-first", "ranks-sort-last"},                 // devices
+    {"vector", "lanes"},                                                                         // shape
 };
 const char* const kAxisNames[kAxes] = {"method", "unit", "arith", "coverage", "division", "normalize",
-                                       "specular", "choice", "highlight", "plan", "devices"};
+                                       "specular", "choice", "highlight", "plan", "devices", "shape"};
 
 constexpr std::uint32_t kAll = ~std::uint32_t(0);
 
@@ -50,6 +51,7 @@ constexpr std::uint32_t kNoUnit = 1, kAnyUnit = kAll & ~kNoUnit;
 const std::uint32_t kSierpinski = unit_bit("sierpinski"), kInterleaveOwn = unit_bit("interleave:own");
 constexpr std::uint32_t kFloat = 1, kDda = 2, kPerSpan = 2, kModel = 2, kPerTriangle = 2, kOn = 2, kPlanned = 2;
 constexpr std::uint32_t kNoPlan = 1, kBands = 2, kUnitSubDevices = 4, kRanksSortFirst = 8, kRanksSortLast = 16;
+constexpr std::uint32_t kLanes = 2;
 
 struct Pattern {
   Axis axis;
@@ -110,6 +112,18 @@ const std::vector<Refusal> kRefused = {
     refuse({{Axis::unit, kSierpinski}, {Axis::devices, kRanksSortLast}},
            "sort-last ranks composite the planned frame's depth keys, and the extra triangulation's sub-triangle "
            "copies have none (use --distribute sort-first)"),
+    // The lanes shape (kernels/render_lanes.cl) has the plain frame's passes: coverage, depth and shading per pixel.
+    refuse({{Axis::shape, kLanes}, {Axis::unit, kAnyUnit}},
+           "the modeled units step span registers along whole spans, and a lanes work-item owns pixels, not spans: "
+           "the units (and fixed point, dda coverage and span division, which run on them) have the vector shape only"),
+    refuse({{Axis::shape, kLanes}, {Axis::normalize, kPerSpan}},
+           "per-span normals are set up once per span, and a lanes work-item owns pixels, not spans: the vector shape "
+           "only"),
+    refuse({{Axis::shape, kLanes}, {Axis::plan, kPlanned}},
+           "the planned depth pass and its resolve are the vector shape's (the lanes shape has no planned pass)"),
+    refuse({{Axis::shape, kLanes}, {Axis::devices, kRanksSortLast}},
+           "sort-last ranks composite the planned frame's depth keys, which the lanes shape has no pass for (use "
+           "--distribute sort-first)"),
 };
 
 std::uint8_t unit_value(const FrameConfig& c) { return c.unit_path() ? std::uint8_t(1 + unit_combination_value(c.unit())) : 0; }
@@ -130,6 +144,7 @@ Combination combination_of(const FrameConfig& c, DeviceMode devices) {
   k.value[int(Axis::highlight)] = c.combined.highlight_test ? 1 : 0;
   k.value[int(Axis::plan)] = c.plan ? 1 : 0;
   k.value[int(Axis::devices)] = std::uint8_t(devices);
+  k.value[int(Axis::shape)] = std::uint8_t(c.kernel_shape);
   return k;
 }
 

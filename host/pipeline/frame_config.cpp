@@ -6,6 +6,14 @@
 
 namespace parashade {
 
+const char* kernel_shape_name(KernelShape s) { return s == KernelShape::lanes ? "lanes" : "vector"; }
+
+KernelShape parse_kernel_shape(const std::string& text) {
+  if (text == "vector") return KernelShape::vector;
+  if (text == "lanes") return KernelShape::lanes;
+  throw UsageError("unknown kernel shape '" + text + "' (valid: vector, lanes)");
+}
+
 std::vector<int> tile_sizes() {
   std::vector<int> sizes;
   for (int t = TILE_MIN; t <= TILE_MAX; t *= 2) sizes.push_back(t);

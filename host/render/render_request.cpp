@@ -153,6 +153,11 @@ void check_frame_memory(const Scene& scene, const RenderRequest& request) {
 }  // namespace
 
 void check_render_options(const RenderOptions& options, DeviceMode mode) {
+  check_work_group_size(options);
+  if (options.kernel_shape == KernelShape::lanes && options.defer_min_triangles > 0)
+    throw UsageError("--defer-min-triangles " + std::to_string(options.defer_min_triangles) +
+                     ": the lanes shape shades every tile's pixels once after its depth test (0); the threshold is the "
+                     "vector shape's");
   RenderOptions o = options;
   if (o.tile_size == 0) o.tile_size = TILE_DEFAULT;  // chosen later from the valid sizes
   check_frame_config(o, mode);

@@ -220,6 +220,9 @@ std::string TuneCache::stale_entries(const DeviceInfo& d, const TuneProblem* p) 
 
 nlohmann::json tuned_params(const RenderOptions& o) {
   nlohmann::json p = {{"tile", o.tile_size}, {"work_items", o.work_items}};
+  // Only where not the defaults, so entries written before these knobs existed stay the same entries.
+  if (o.kernel_shape != KernelShape::vector) p["kernel_shape"] = kernel_shape_name(o.kernel_shape);
+  if (o.work_group_size != 0) p["work_group_size"] = o.work_group_size;
   if (o.plan) {
     p["partition"] = partition_name(o.plan->partition);
     p["cu"] = o.plan->units;
@@ -234,6 +237,8 @@ void apply_tuned_params(const nlohmann::json& params, RenderOptions& o) {
   try {
     o.tile_size = params.at("tile").get<int>();
     o.work_items = params.at("work_items").get<int>();
+    o.kernel_shape = parse_kernel_shape(params.value("kernel_shape", std::string("vector")));
+    o.work_group_size = params.value("work_group_size", 0);
     const std::string part = params.at("partition").get<std::string>();
     if (part == "none") {
       o.plan.reset();

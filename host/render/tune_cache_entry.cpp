@@ -56,6 +56,13 @@ std::string params_fault(const json& p) {
   if (!p.is_object()) return "params is " + p.dump() + ", not an object";
   std::string f = check(p, "params", "tile", "a tile size", is_tile);
   if (f.empty()) f = check(p, "params", "work_items", "a count of work-items", [](const json& v) { return int_in(v, 0, 1 << 20); });
+  // The kernel's shape and work-group, written only where not the defaults (tuned_params).
+  if (f.empty() && p.contains("kernel_shape"))
+    f = check(p, "params", "kernel_shape", "vector or lanes",
+              [](const json& v) { return parses(v, [](const std::string& s) { parse_kernel_shape(s); }); });
+  if (f.empty() && p.contains("work_group_size"))
+    f = check(p, "params", "work_group_size", "a work-group size",
+              [](const json& v) { return int_in(v, 0, MAX_WORK_GROUP_SIZE); });
   if (f.empty())
     f = check(p, "params", "partition", "none or a partition", [](const json& v) {
       return v == "none" || parses(v, [](const std::string& s) { parse_partition(s); });

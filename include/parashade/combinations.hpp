@@ -1,6 +1,6 @@
 #pragma once
 // What combines: one table of the modeled combinations of method x unit x arithmetic x coverage x span
-// division x normalization x specular model x combined choices x plan x device mode. Every choice is a
+// division x normalization x specular model x combined choices x plan x device mode x kernel shape. Every choice is a
 // value on an axis; the table lists the refused patterns, each with its reason, and everything it does
 // not refuse is modeled. check_frame_config checks a configuration against it once; `parashade
 // combinations` prints it (the CLI's help says where to look).
@@ -15,8 +15,8 @@ namespace parashade {
 
 struct FrameConfig;
 
-enum class Axis { method, unit, arith, coverage, division, normalize, specular, choice, highlight, plan, devices };
-constexpr int kAxes = 11;
+enum class Axis { method, unit, arith, coverage, division, normalize, specular, choice, highlight, plan, devices, shape };
+constexpr int kAxes = 12;
 
 // How a frame is spread over devices: one device; bands of tile rows over a device list or over
 // sub-devices (split_renderer.hpp); or the units' depth pass of a plan over sub-devices (docs/planner.md);

@@ -19,6 +19,14 @@
 
 namespace parashade {
 
+// The frame kernel's shape (docs/pipeline.md): vector, a work-item walks whole tiles with explicit 16-lane vectors
+// (kernels/render_tiles.cl); lanes, a work-group per tile and a work-item per pixel lane, the lanes made by the
+// device's implicit vectorizer or a GPU's wavefront (kernels/render_lanes.cl). The same image; an axis of the table
+// of combinations, since the lanes shape has the plain frame's passes only.
+enum class KernelShape { vector, lanes };
+const char* kernel_shape_name(KernelShape s);
+KernelShape parse_kernel_shape(const std::string& text);  // UsageError naming the valid values
+
 struct FrameConfig {
   Method method = Method::gouraud;
   int tile_size = TILE_DEFAULT;  // screen tile edge in pixels: 16, 32 or 64 (kernels/constants.h)
@@ -37,6 +45,7 @@ struct FrameConfig {
   SpecularModel specular;     // Phong: the specular model (kernels/specular_models.h)
   NormalizeMethod normalize;  // Phong: unit normals per span (kernels/normalize_span.h)
   CombinedConfig combined;    // Method::combined: segment length or auto with its error budget
+  KernelShape kernel_shape = KernelShape::vector;  // the kernel that shades the frame (--kernel-shape)
 
   bool span_normalize() const { return method == Method::phong && normalize.kind != NormalizeKind::exact; }
   // The unit path: spans through a modeled unit (explicit, or implied by fixed point or DDA coverage).

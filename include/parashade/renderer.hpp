@@ -1,6 +1,7 @@
 #pragma once
 // One frame on an OpenCL device: the host stages ("software", frame_pipeline.hpp) write into the device's
 // mapped buffers, then the shading kernel (the modeled hardware units) runs, then read-back.
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -31,6 +32,16 @@ constexpr int kMaxDeferMinTriangles = 1 << 24;
 struct RenderOptions : FrameConfig {
   bool float_output = false;  // also read back unclamped float RGB (for EXR and exact error figures)
   int work_items = 0;  // kernel work-items, each rendering every G-th tile; 0: WORK_ITEMS_PER_COMPUTE_UNIT per CU
+  // Work-items per work-group, the kernel's local size (--work-group-size; 0: the shape's default). The vector
+  // shape's each walk tiles of their own (default 1, work_items rounded up to a multiple); the lanes shape's are one
+  // tile's pixel lanes, each owning tile x tile / N of its pixels (default LANES_WORK_GROUP_DEFAULT, at most the
+  // tile's pixels). A power of two, at most the device's largest work-group. The image is the same.
+  int work_group_size = 0;
+  // work_group_size with its default resolved for the shape and tile.
+  int group_size() const {
+    if (work_group_size > 0) return work_group_size;
+    return kernel_shape == KernelShape::lanes ? std::min(LANES_WORK_GROUP_DEFAULT, tile_size * tile_size) : 1;
+  }
   // The kernel's pixel layout where the frame allows a choice (docs/pipeline.md): 4x4 stamps (true) or
   // 1x16 row segments. The image is the same either way.
   bool stamps = true;
@@ -53,6 +64,11 @@ struct RenderOptions : FrameConfig {
   // source told apart by a macro, for bench_kernel_ab's frame-by-frame comparison. Empty in normal use.
   std::string kernel_defines;
 };
+
+// The work-group size (RenderOptions::group_size) a frame can run with: a power of two up to MAX_WORK_GROUP_SIZE, in
+// the lanes shape within the tile's pixels (each work-item owns a share; not checked while the tile is 0, still
+// to be chosen), and within `device`'s largest work-group when given. UsageError naming --work-group-size.
+void check_work_group_size(const RenderOptions& o, const DeviceInfo* device = nullptr);
 
 struct Frame {
   RenderedImage image;

@@ -115,6 +115,11 @@ const std::vector<KernelPath>& kernel_paths() {
        {"--method", "flat", "--cu", "2", "--partition", "dynamic", "--tile", "64"}, Check::own_ideal},
       {"PlanRoundRobinPhongUnits", "sphere.json", "96x54",
        {"--method", "phong", "--cu", "2", "--partition", "round-robin", "--units", "segment:4"}, Check::own_ideal},
+      // the lanes kernel shape: local memory, barriers, a work-group per tile
+      {"LanesGouraudTile16", "teapot.json", "96x54", {"--kernel-shape", "lanes", "--tile", "16", "--work-group-size", "16"},
+       Check::own_ideal},
+      {"LanesPhongFloatOutput", "sphere.json", "90x50", {"--method", "phong", "--kernel-shape", "lanes", "--float"},
+       Check::own_ideal},
       // --- float, the reference's ideal not the method's: error and coverage as on PoCL --------------
       {"GouraudSierpinskiFloat", "default.json", "96x54", {"--units", "sierpinski:1"}, Check::approximation},
       {"CombinedK2", "teapot.json", "96x54", {"--method", "combined:2"}, Check::approximation},

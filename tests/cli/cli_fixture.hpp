@@ -159,8 +159,7 @@ inline nlohmann::json field(const nlohmann::json& j, const std::string& pointer)
 
 // The run ended by itself (no crash, no hang) with `code` and its stderr names every culprit. Nothing
 // goes to stdout: the summary lines belong to a finished render.
-inline ::testing::AssertionResult fails_with(const RunResult& r, int code,
-                                            std::initializer_list<std::string> culprits) {
+inline ::testing::AssertionResult fails_with(const RunResult& r, int code, const std::vector<std::string>& culprits) {
   if (!r.exited()) return ::testing::AssertionFailure() << "did not exit normally:" << r;
   if (r.exit_code != code) return ::testing::AssertionFailure() << "expected exit code " << code << ":" << r;
   for (const std::string& c : culprits)
@@ -168,6 +167,10 @@ inline ::testing::AssertionResult fails_with(const RunResult& r, int code,
       return ::testing::AssertionFailure() << "stderr does not name '" << c << "':" << r;
   if (!r.out.empty()) return ::testing::AssertionFailure() << "a failed run printed to stdout:" << r;
   return ::testing::AssertionSuccess();
+}
+inline ::testing::AssertionResult fails_with(const RunResult& r, int code,
+                                            std::initializer_list<std::string> culprits) {
+  return fails_with(r, code, std::vector<std::string>(culprits));
 }
 
 inline ::testing::AssertionResult succeeds(const RunResult& r) {

@@ -126,9 +126,38 @@ TEST_F(CliTune, UnitsAndBatchAreOnlyVariedWhereAPlanReadsThem) {
   std::set<std::string> seen;
   for (const auto& p : visited()) seen.insert(p.dump());
   EXPECT_EQ(seen.size(), 7u);
-  EXPECT_EQ(seen.count(nlohmann::json({{"tile", 16}, {"work_items", 0}, {"partition", "none"}, {"cu", "-"},
+  EXPECT_EQ(seen.count(nlohmann::json({{"tile", 16}, {"work_items", 0}, {"kernel_shape", "vector"},
+                                       {"work_group_size", 0}, {"partition", "none"}, {"cu", "-"},
                                        {"batch", "-"}, {"method", "gouraud"}, {"units", "none"}, {"normalize", "exact"},
                                        {"specular", "exact"}}).dump()), 1u);
+}
+
+// The kernel's shape and work-group are layout parameters like the tile: searched when asked, each point's image
+// verified against the default layout's (the same bytes for Gouraud), work_items unread by the lanes shape (a
+// work-group per tile) and a lanes work-group larger than the tile's pixels not applicable; the cache keeps the
+// lanes entries' shape and work-group.
+TEST_F(CliTune, SearchesTheKernelShapeAndWorkGroupSize) {
+  const std::filesystem::path cache = out_dir() / "cache.json";
+  const RunResult r = tune({"--param", "tile=16", "--param", "work_items=0,8", "--param", "kernel_shape=vector,lanes",
+                            "--param", "work_group_size=0,64,512", "--param", "partition=none"},
+                           cache);
+  ASSERT_TRUE(succeeds(r));
+  // vector: 2 work_items x 3 groups (512: the vector shape's work-items in whole groups); lanes: 0 and 64 (512 > 16 x 16).
+  EXPECT_EQ(field(read_report(), "/points/valid"), 6 + 2);
+  EXPECT_EQ(field(read_report(), "/candidates").size(), 8u);
+  int lanes = 0;
+  for (const auto& c : field(read_report(), "/candidates")) {
+    EXPECT_TRUE(c["verified"].get<bool>()) << c;
+    if (c["params"]["kernel_shape"] == "lanes") {
+      ++lanes;
+      EXPECT_EQ(c["params"]["work_items"], "-") << c;
+    }
+  }
+  EXPECT_EQ(lanes, 2);
+  int cached_lanes = 0;
+  const nlohmann::json entries = read_json(cache)["entries"];
+  for (const auto& e : entries) cached_lanes += e["params"].value("kernel_shape", "") == "lanes";
+  EXPECT_EQ(cached_lanes, 2);
 }
 
 // The best's "render with:" line is the render options of its parameters (each parameter is named as the

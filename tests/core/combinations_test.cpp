@@ -106,6 +106,24 @@ std::vector<Refused> refused_cases() {
   c = config(Method::gouraud);
   c.units = parse_units("sierpinski:1");
   add("sierpinski on sort-last ranks", c, {"sierpinski:1", "ranks-sort-last"}, DeviceMode::ranks_sort_last);
+  // The lanes kernel shape: the plain frame's passes only.
+  c = config(Method::gouraud);
+  c.kernel_shape = KernelShape::lanes;
+  c.units = parse_units("segment:4");
+  add("lanes on a unit", c, {"lanes", "segment:4"});
+  c.units.reset();
+  c.arith = parse_arith("fixed:12.12");  // on the classic unit
+  add("lanes in fixed point", c, {"lanes", "classic"});
+  c = config(Method::phong);
+  c.kernel_shape = KernelShape::lanes;
+  c.normalize = parse_normalize("slerp");
+  add("lanes with per-span normals", c, {"lanes", "slerp"});
+  c = config(Method::gouraud);
+  c.kernel_shape = KernelShape::lanes;
+  c.plan = PlanOptions{};
+  add("lanes planned", c, {"lanes", "planned"});
+  c.plan.reset();
+  add("lanes on sort-last ranks", c, {"lanes", "ranks-sort-last"}, DeviceMode::ranks_sort_last);
   return out;
 }
 
@@ -158,6 +176,20 @@ TEST(Combinations, ModeledConfigurationsPass) {
   c = config(Method::gouraud);
   c.units = parse_units("sierpinski:1:touch");
   modeled.push_back(c);
+  // The lanes shape: every method of the plain frame, specular models, the combined method's choices.
+  for (Method m : {Method::flat, Method::gouraud, Method::phong, Method::combined}) {
+    c = config(m);
+    c.kernel_shape = KernelShape::lanes;
+    modeled.push_back(c);
+  }
+  c.combined = parse_combined("combined:auto");
+  c.combined.rule = TriangleRule::bound;
+  c.combined.highlight_test = true;
+  modeled.push_back(c);
+  c = config(Method::phong);
+  c.kernel_shape = KernelShape::lanes;
+  c.specular = parse_specular("quadratic");
+  modeled.push_back(c);
   for (const FrameConfig& m : modeled) EXPECT_NO_THROW(check_frame_config(m)) << describe_combinations();
   c = config(Method::phong);
   c.plan = PlanOptions{};
@@ -167,6 +199,9 @@ TEST(Combinations, ModeledConfigurationsPass) {
   FrameConfig combined = config(Method::combined);
   combined.combined = parse_combined("combined:2");
   EXPECT_NO_THROW(check_frame_config(combined, DeviceMode::ranks_sort_first));
+  combined.kernel_shape = KernelShape::lanes;  // bands of a frame: a global offset
+  EXPECT_NO_THROW(check_frame_config(combined, DeviceMode::ranks_sort_first));
+  EXPECT_NO_THROW(check_frame_config(combined, DeviceMode::bands));
   FrameConfig fixed_unit = config(Method::gouraud);
   fixed_unit.units = parse_units("counter");
   fixed_unit.arith = parse_arith("fixed:12.12");
