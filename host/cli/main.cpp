@@ -1,4 +1,5 @@
 // parashade: OpenCL models of parallel Gouraud/Phong shading hardware, measured for speed and error.
+#include <cstdlib>
 #include <iostream>
 #include <vector>
 #include <new>
@@ -47,8 +48,10 @@ int run(int argc, char** argv) {
     check_environment();  // a bad PARASHADE_* value stops every command alike, before any work
     for (const cli::Command& c : commands)
       if (c.app->parsed()) {
+        // "compiling kernels for ...": not with -q, and under mpirun from rank 0 alone (every rank builds).
         const CLI::Option* quiet = c.app->get_option_no_throw("--quiet");
-        set_kernel_build_notices(!(quiet && quiet->count() > 0));  // "compiling kernels for ..." (-q: none)
+        const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
+        set_kernel_build_notices(!(quiet && quiet->count() > 0) && !(rank && std::string(rank) != "0"));
         return c.run();
       }
     std::string names;

@@ -27,7 +27,7 @@ TEST_F(CliOutputs, EveryCommandThatWritesSaysWhat) {
       {"plan", input("ball.json", sphere_scene()).string(), "-q", "--report", out("p.json")},
       {"unit-error", "--units", "counter", "--lengths", "4", "--trials", "10", "-q", "--report", out("u.json")},
       {"vectors", "--unit", "classic", "--spans", "2", "-q", "-o", out("v.txt"), "--report", out("v.json")},
-      {"compare", picture, picture, "-q", "--diff", out("diff.png"), "--report", out("cmp.json")},
+      {"compare", picture, picture, "-q", "--error-map", out("map.png"), "--report", out("cmp.json")},
       {"phong-study", "-q", "-o", out("study.md"), "--report", out("study.json")}};
   for (const auto& args : lines) {
     SCOPED_TRACE(args[0]);
@@ -35,7 +35,7 @@ TEST_F(CliOutputs, EveryCommandThatWritesSaysWhat) {
     ASSERT_TRUE(succeeds(r));
     std::string files;  // the outputs in the order given: "wrote A and B"
     for (std::size_t i = 0; i + 1 < args.size(); ++i)
-      if (args[i] == "-o" || args[i] == "--report" || args[i] == "--diff") files += (files.empty() ? "" : " and ") + args[i + 1];
+      if (args[i] == "-o" || args[i] == "--report" || args[i] == "--error-map") files += (files.empty() ? "" : " and ") + args[i + 1];
     EXPECT_NE(r.out.find("wrote " + files + "\n"), std::string::npos) << r;
   }
 }
