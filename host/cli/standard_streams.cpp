@@ -98,9 +98,13 @@ void guard_standard_streams() {
   std::fflush(stdout);
   stdout = out;
   stderr = err;
-  static __gnu_cxx::stdio_sync_filebuf<char> cout_buf(out), cerr_buf(err);
-  std::cout.rdbuf(&cout_buf);
-  std::cerr.rdbuf(&cerr_buf);
+  // Never destroyed: every ios_base::Init destructor (one per library that includes <iostream>) flushes
+  // std::cout at exit, after function-local statics are gone; a static buffer here was read after its
+  // destruction (AddressSanitizer: SEGV in ostream::flush from a library's __cxa_finalize).
+  static auto* const cout_buf = new __gnu_cxx::stdio_sync_filebuf<char>(out);
+  static auto* const cerr_buf = new __gnu_cxx::stdio_sync_filebuf<char>(err);
+  std::cout.rdbuf(cout_buf);
+  std::cerr.rdbuf(cerr_buf);
 }
 
 int finish_standard_output(int code) {
