@@ -49,8 +49,8 @@ namespace {
 struct TuneArgs {
   std::string scene, size, device, method = "gouraud", cache, strategy = "brute", objective = "fastest", report, export_kt,
       export_t4;
-  std::vector<std::string> params;    // --param NAME=V1,V2,...
-  std::vector<std::string> restrict;  // --restrict EXPR
+  std::vector<std::string> params;          // --param NAME=V1,V2,...
+  std::vector<std::string> restrict_exprs;  // --restrict EXPR
   int budget_runs = 12, frames = 5;
   double budget_seconds = 0, max_error = 0, max_nmse = 0;  // budgets: 0 = none
   std::uint64_t seed = 2026;
@@ -135,7 +135,7 @@ nlohmann::json tune_report(const TuneArgs& a, const Scene& scene, const DeviceIn
             {"max_error", a.max_error > 0 ? nlohmann::json(a.max_error) : nlohmann::json()},
             {"max_nmse", a.max_nmse > 0 ? nlohmann::json(a.max_nmse) : nlohmann::json()},
             {"error_against", "exact Phong (double-precision reference), 8-bit levels"},
-            {"restrictions", a.restrict}}},
+            {"restrictions", a.restrict_exprs}}},
           {"space", space_json},
           {"points",
            {{"valid", points.valid.size()},
@@ -168,7 +168,7 @@ void check_tune_args(const TuneArgs& a, TuneStrategy strategy) {
   // The space needs the device's compute units for its defaults; the explicit values are checked now.
   TuneSpace probe = default_tune_space(a.method, 1);
   for (const std::string& p : a.params) set_tune_param(probe, p);
-  parse_restrictions(a.restrict);
+  parse_restrictions(a.restrict_exprs);
 }
 
 // One tuning run: the scene on the device (the render step's base), the space, the cache, and what the
@@ -228,7 +228,7 @@ class TuneRun {
 
   // --restrict: the points an expression excludes leave the search (the export still names them).
   void restrict_points() {
-    restrictions_ = parse_restrictions(a_.restrict);
+    restrictions_ = parse_restrictions(a_.restrict_exprs);
     std::vector<TunePoint> kept;
     for (const TunePoint& p : points_.valid) (allowed(restrictions_, space_, p) ? kept : restricted_).push_back(p);
     if (kept.empty())
@@ -633,7 +633,7 @@ Command add_tune_command(CLI::App& app) {
   cmd->add_option("--objective", a->objective,
                   "fastest (within --max-error / --max-nmse when given), or pareto: also the speed-vs-error front")
       ->capture_default_str();
-  cmd->add_option("--restrict", a->restrict,
+  cmd->add_option("--restrict", a->restrict_exprs,
                   "EXPR (repeatable): search only the points where it is true, e.g. \"tile*work_items<=4096\" "
                   "(muParser; names: tile, work_items, work_group_size, cu, batch)");
   cmd->add_option("--max-error", a->max_error,
