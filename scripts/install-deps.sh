@@ -36,7 +36,7 @@ $SUDO apt-get install -y -q --no-install-recommends $TEST_PACKAGES \
     g++ cmake ninja-build pkg-config \
     pocl-opencl-icd oclgrind ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers clinfo \
     libglm-dev libopenmesh-dev libopenimageio-dev openimageio-tools \
-    nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev \
+    nlohmann-json3-dev libcli11-dev libmuparser-dev libgtest-dev libgmock-dev libbenchmark-dev \
     libegl-dev libgl-dev libgl1-mesa-dri python3 python3-jsonschema python3-matplotlib python3-numpy python3-pil \
     clang libclang-rt-dev \
     openmpi-bin libopenmpi-dev verilator yosys time \

@@ -2,7 +2,9 @@
 // parameters, `--param NAME=V1,V2,...`) by a strategy (tune_strategy.hpp: brute, random, anneal), measures
 // each candidate's frame time, verifies its image and measures its error against the exact reference,
 // and appends every result to the tune cache (tune_cache.hpp), which `render` then uses for this device,
-// build and problem. The objective is the fastest candidate, within an error budget when one is given.
+// build and problem. The objective is the fastest candidate, within an error budget when one is given;
+// `--objective pareto` adds the speed-vs-error front (tune_pareto.hpp). `--restrict EXPR` excludes points
+// (tune_restrict.hpp); `--export-kt` and `--export-t4` write the space for Kernel Tuner (tune_export.hpp).
 // With --mpi (under mpirun) the candidates are dealt across the ranks and rank 0 writes the merged
 // report. docs/tuning.md.
 #include <algorithm>
@@ -21,6 +23,7 @@
 #include "common_options.hpp"
 #include "device_option.hpp"
 #include "progress.hpp"
+#include "suggest.hpp"
 #include "parashade/distributed.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/json_number.hpp"
@@ -35,6 +38,8 @@
 #include "parashade/tile_choice.hpp"
 #include "../render/tune_cache.hpp"
 #include "tune_export.hpp"
+#include "tune_pareto.hpp"
+#include "tune_restrict.hpp"
 #include "tune_space.hpp"
 #include "tune_strategy.hpp"
 
@@ -42,8 +47,10 @@ namespace parashade::cli {
 namespace {
 
 struct TuneArgs {
-  std::string scene, size, device, method = "gouraud", cache, strategy = "brute", objective = "fastest", report, export_kt;
-  std::vector<std::string> params;  // --param NAME=V1,V2,...
+  std::string scene, size, device, method = "gouraud", cache, strategy = "brute", objective = "fastest", report, export_kt,
+      export_t4;
+  std::vector<std::string> params;          // --param NAME=V1,V2,...
+  std::vector<std::string> restrict_exprs;  // --restrict EXPR
   int budget_runs = 12, frames = 5;
   double budget_seconds = 0, max_error = 0, max_nmse = 0;  // budgets: 0 = none
   std::uint64_t seed = 2026;
@@ -109,8 +116,8 @@ bool eligible(const Result& r) { return r.m.verified && r.within_budget; }
 
 // The tune report (--report): one function, so that the report's header and schema live in one place.
 nlohmann::json tune_report(const TuneArgs& a, const Scene& scene, const DeviceInfo& dev, const TuneSpace& space,
-                           const TunePoints& points, const std::vector<Result>& results, const Result* best,
-                           const nlohmann::json& confirmation) {
+                           const TunePoints& points, std::size_t restricted, const std::vector<Result>& results,
+                           const Result* best, const nlohmann::json& confirmation) {
   nlohmann::json space_json = nlohmann::json::object();
   for (std::size_t i = 0; i < space.names.size(); ++i) space_json[space.names[i]] = space.values[i];
   nlohmann::json candidates = nlohmann::json::array();
@@ -127,9 +134,14 @@ nlohmann::json tune_report(const TuneArgs& a, const Scene& scene, const DeviceIn
            {{"kind", a.objective},
             {"max_error", a.max_error > 0 ? nlohmann::json(a.max_error) : nlohmann::json()},
             {"max_nmse", a.max_nmse > 0 ? nlohmann::json(a.max_nmse) : nlohmann::json()},
-            {"error_against", "exact Phong (double-precision reference), 8-bit levels"}}},
+            {"error_against", "exact Phong (double-precision reference), 8-bit levels"},
+            {"restrictions", a.restrict_exprs}}},
           {"space", space_json},
-          {"points", {{"valid", points.valid.size()}, {"refused", points.refused}, {"not_applicable", points.not_applicable}}},
+          {"points",
+           {{"valid", points.valid.size()},
+            {"refused", points.refused},
+            {"not_applicable", points.not_applicable},
+            {"restricted", restricted}}},
           {"candidates", candidates},
           {"best", best ? result_json(*best) : nlohmann::json()},
           {"confirmation", confirmation}};
@@ -144,9 +156,10 @@ void check_tune_args(const TuneArgs& a, TuneStrategy strategy) {
   if (a.budget_runs < 1) throw UsageError("--budget-runs must be at least 1");
   if (a.budget_seconds < 0) throw UsageError("--budget-seconds must not be negative");
   if (a.frames < 1 || a.frames > kMaxFrames) throw UsageError("--frames must be 1.." + std::to_string(kMaxFrames));
-  if (a.objective != "fastest")
+  if (a.objective != "fastest" && a.objective != "pareto")
     throw UsageError("--objective: unknown objective '" + a.objective +
-                     "' (valid: fastest; with --max-error or --max-nmse, fastest within that error budget)");
+                     "' (valid: fastest, within --max-error or --max-nmse when given; pareto, the speed-vs-error front)" +
+                     did_you_mean(a.objective, {"fastest", "pareto"}));
   if (!(a.max_error >= 0 && a.max_error <= 255)) throw UsageError("--max-error must be in (0, 255] levels");  // NaN too
   if (a.max_nmse < 0 || !std::isfinite(a.max_nmse)) throw UsageError("--max-nmse must be a positive number");
   if (a.mpi && strategy == TuneStrategy::anneal)
@@ -155,6 +168,7 @@ void check_tune_args(const TuneArgs& a, TuneStrategy strategy) {
   // The space needs the device's compute units for its defaults; the explicit values are checked now.
   TuneSpace probe = default_tune_space(a.method, 1);
   for (const std::string& p : a.params) set_tune_param(probe, p);
+  parse_restrictions(a.restrict_exprs);
 }
 
 // One tuning run: the scene on the device (the render step's base), the space, the cache, and what the
@@ -194,6 +208,7 @@ class TuneRun {
     if (rank() == 0) {
       files.output("--report", a_.report);
       files.output("--export-kt", a_.export_kt);
+      files.output("--export-t4", a_.export_t4);
     }
     const std::filesystem::path cache = a_.cache.empty() ? default_tune_cache() : std::filesystem::path(a_.cache);
     // The default cache's folder (~/.cache/parashade) is parashade's to make: on a fresh machine the check
@@ -208,6 +223,18 @@ class TuneRun {
     for (const std::string& p : a_.params) set_tune_param(space_, p);
     points_ = enumerate_points(space_, base_->options);
     if (points_.valid.empty()) throw UsageError("--param: the space has no point the table of combinations models");
+    restrict_points();
+  }
+
+  // --restrict: the points an expression excludes leave the search (the export still names them).
+  void restrict_points() {
+    restrictions_ = parse_restrictions(a_.restrict_exprs);
+    std::vector<TunePoint> kept;
+    for (const TunePoint& p : points_.valid) (allowed(restrictions_, space_, p) ? kept : restricted_).push_back(p);
+    if (kept.empty())
+      throw UsageError("--restrict: the restrictions exclude every one of the space's " +
+                       std::to_string(points_.valid.size()) + " valid points");
+    points_.valid = kept;
   }
 
   const DeviceInfo& device() const { return base_->devices.front()->info(); }
@@ -219,10 +246,12 @@ class TuneRun {
     std::printf("tuning %s (%dx%d) on %s (driver %s, %d compute units)%s; cache %s\n", scene.name.c_str(), scene.width,
                 scene.height, dev.name.c_str(), dev.driver.c_str(), dev.compute_units,
                 group_ ? (" over " + std::to_string(ranks()) + " ranks").c_str() : "", cache_->path().string().c_str());
+    const std::string restricted =
+        restrictions_.empty() ? "" : ", " + std::to_string(restricted_.size()) + " excluded by --restrict";
     std::printf("space: %zu points: %zu valid, %zu refused by the table of combinations, %zu vary cu or batch "
-                "where nothing reads them; strategy %s, seed %llu\n",
-                space_size(space_), points_.valid.size(), points_.refused, points_.not_applicable, a_.strategy.c_str(),
-                (unsigned long long)a_.seed);
+                "where nothing reads them%s; strategy %s, seed %llu\n",
+                space_size(space_), points_.valid.size(), points_.refused, points_.not_applicable, restricted.c_str(),
+                a_.strategy.c_str(), (unsigned long long)a_.seed);
     if (!points_.refusal_example.empty() && !a_.quiet)
       std::cerr << "parashade: note: refused, e.g. " << points_.refusal_example << "\n";
     if (const std::string stale = cache_->stale_entries(dev); !stale.empty() && !a_.quiet)
@@ -461,10 +490,11 @@ class TuneRun {
   // The best of this run's candidates and whatever the cache holds for the space's points, confirmed; the
   // report, the cache and the Kernel Tuner export.
   void conclude() {
-    std::vector<Result> known = results_;
+    known_ = results_;
     for (std::size_t i = 0; i < points_.valid.size(); ++i)
       if (std::none_of(results_.begin(), results_.end(), [&](const Result& r) { return r.point == i; }))
-        if (auto r = cached_result(i)) known.push_back(*r);
+        if (auto r = cached_result(i)) known_.push_back(*r);
+    const std::vector<Result>& known = known_;
     const Result* best = nullptr;
     for (const Result& r : known)
       if (eligible(r) && (!best || r.m.objective < best->m.objective)) best = &r;
@@ -486,21 +516,70 @@ class TuneRun {
       std::printf("no candidate is eligible (verified%s)\n",
                   a_.max_error > 0 || a_.max_nmse > 0 ? " and within the error budget" : "");
     }
-    write_outputs(tune_report(a_, base_->scene, device(), space_, points_, results_, best, confirmation));
+    nlohmann::json report =
+        tune_report(a_, base_->scene, device(), space_, points_, restricted_.size(), results_, best, confirmation);
+    if (a_.objective == "pareto") report["pareto_front"] = pareto();
+    write_outputs(report);
+  }
+
+  // --objective pareto: the front of the verified candidates (this run's and the cache's), the error budget
+  // aside: the front shows what each level of error costs, the budget then picks the best. Printed fastest
+  // first, in the report's candidate form.
+  nlohmann::json pareto() const {
+    std::vector<const Result*> verified;
+    std::vector<SpeedError> points;
+    for (const Result& r : known_)
+      if (r.m.verified) verified.push_back(&r), points.push_back({r.m.objective, r.m.max_error});
+    const std::vector<std::size_t> front = pareto_front(points);
+    std::printf("speed-vs-error Pareto front (median frame time against max error; %zu of %zu verified candidates):\n",
+                front.size(), points.size());
+    nlohmann::json out = nlohmann::json::array();
+    for (std::size_t i : front) {
+      const Result& r = *verified[i];
+      std::printf("  %-58s %9.3f ms %-19s  max %6.2f  NMSE %.3g%s\n", varied(r.params).c_str(), r.m.objective,
+                  spread(r.m.times).c_str(), r.m.max_error, r.m.nmse, r.within_budget ? "" : "  over the error budget");
+      out.push_back(result_json(r));
+    }
+    return out;
+  }
+
+  // The space's points for the exports: every valid one with what is known of it, and the restricted ones.
+  std::vector<ExportPoint> export_points() const {
+    std::vector<ExportPoint> out;
+    for (std::size_t i = 0; i < points_.valid.size(); ++i) {
+      ExportPoint p;
+      p.params = point_params(space_, points_.valid[i]);
+      for (const Result& r : known_)
+        if (r.point == i) p.candidate = result_json(r);
+      out.push_back(p);
+    }
+    for (const TunePoint& t : restricted_) {
+      ExportPoint p;
+      p.params = point_params(space_, t);
+      p.restricted = true;
+      out.push_back(p);
+    }
+    return out;
+  }
+
+  void write_exports() const {
+    if (a_.export_kt.empty() && a_.export_t4.empty()) return;
+    const std::vector<ExportPoint> points = export_points();
+    ExportHeader header{device().name, "parashade:" + base_->scene.name, base_->scene.width, base_->scene.height, {}};
+    for (const TuneRestriction& r : restrictions_) header.restrictions.push_back(r.python());
+    if (!a_.export_kt.empty())
+      write_text_atomically(a_.export_kt, kernel_tuner_cache(space_, header, points).dump(1) + "\n");
+    if (!a_.export_t4.empty()) write_text_atomically(a_.export_t4, t4_results(points).dump(1) + "\n");
   }
 
   void write_outputs(const nlohmann::json& report) {
     if (group_) cache_->write();
     write_tune_report(a_.report, report);
-    const Scene& scene = base_->scene;
-    if (!a_.export_kt.empty())
-      write_text_atomically(a_.export_kt, kernel_tuner_cache(space_, device().name, "parashade:" + scene.name,
-                                                             scene.width, scene.height, report["candidates"])
-                                                  .dump(1) +
-                                              "\n");
+    write_exports();
     // The cache was written when a candidate was measured (record) or the ranks' results merged.
     const bool cache_written = group_ || std::any_of(results_.begin(), results_.end(), [](const Result& r) { return !r.cached; });
     print_wrote({a_.report, a_.export_kt.empty() ? "" : a_.export_kt + " (Kernel Tuner cache format)",
+                 a_.export_t4.empty() ? "" : a_.export_t4 + " (T4 results format)",
                  cache_written ? cache_->path().string() + " (the tune cache)" : ""});
   }
 
@@ -515,6 +594,9 @@ class TuneRun {
   std::map<std::string, std::vector<std::uint8_t>> verified_bytes_;  // per shading: the default layout's image
   std::map<std::string, ReferenceImage> references_;                  // per method: the exact reference
   std::vector<Result> results_;
+  std::vector<Result> known_;  // results_ and the cache's results of the space's points (conclude)
+  std::vector<TuneRestriction> restrictions_;
+  std::vector<TunePoint> restricted_;  // valid points --restrict excludes
   std::size_t skipped_ = 0;
   const std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
 };
@@ -548,8 +630,12 @@ Command add_tune_command(CLI::App& app) {
   cmd->add_option("--strategy", a->strategy, "brute, random or anneal (simulated annealing)")->capture_default_str();
   cmd->add_option("--seed", a->seed, "Seed of the strategy's random choices (the same seed, the same sequence)")
       ->capture_default_str();
-  cmd->add_option("--objective", a->objective, "fastest (within --max-error / --max-nmse when given)")
+  cmd->add_option("--objective", a->objective,
+                  "fastest (within --max-error / --max-nmse when given), or pareto: also the speed-vs-error front")
       ->capture_default_str();
+  cmd->add_option("--restrict", a->restrict_exprs,
+                  "EXPR (repeatable): search only the points where it is true, e.g. \"tile*work_items<=4096\" "
+                  "(muParser; names: tile, work_items, work_group_size, cu, batch)");
   cmd->add_option("--max-error", a->max_error,
                   "Error budget: the largest error against the exact reference, in 8-bit levels, a candidate may have");
   cmd->add_option("--max-nmse", a->max_nmse, "Error budget: the largest NMSE against the exact reference");
@@ -561,7 +647,9 @@ Command add_tune_command(CLI::App& app) {
   cmd->add_option("--frames", a->frames, "Timed frames per configuration (median)")->capture_default_str();
   cmd->add_option("--cache", a->cache, "Tune cache file (default $PARASHADE_TUNE_CACHE or ~/.cache/parashade/tune.json)");
   add_report_option(*cmd, a->report, "the space, every candidate with its frame samples, the best, the confirmation");
-  cmd->add_option("--export-kt", a->export_kt, "Write the candidates as a Kernel Tuner cache file (docs/tuning.md)");
+  cmd->add_option("--export-kt", a->export_kt,
+                  "Write the searched space as a Kernel Tuner cache file its simulation mode replays (docs/tuning.md)");
+  cmd->add_option("--export-t4", a->export_t4, "Write the measured candidates in the T4 results format (docs/tuning.md)");
   cmd->add_flag("--mpi", a->mpi,
                 "Under mpirun: deal the candidates across the ranks (brute, random); rank 0 writes the merged report "
                 "and the cache");

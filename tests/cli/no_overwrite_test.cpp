@@ -77,6 +77,7 @@ TEST_F(CliNoOverwrite, TuneRefusesItsSceneMeshAndCache) {
   expect_refused(tune({"--report", scene_.string()}), kUsage, "the scene");
   expect_refused(tune({"--report", mesh_.string()}), kUsage, "a mesh of the scene");
   expect_refused(tune({"--export-kt", mesh_.string()}), kUsage, "--export-kt");
+  expect_refused(tune({"--export-t4", mesh_.string()}), kUsage, "--export-t4");
   expect_refused(tune({"--report", (out_dir() / "cache.json").string()}), kUsage, "--cache");
   expect_refused({"tune", scene_.string(), "--cache", scene_.string(), "-q"}, kUsage, "--cache");
   EXPECT_TRUE(nothing_written());

@@ -79,14 +79,55 @@ def run(args, cmd_prefix=()):
     return p
 
 
-def validate_report(kind, path):
-    if not os.path.exists(path):
-        check(False, "%s: no report written at %s" % (kind, path))
+def validate_file(kind, path, breakers):
+    """A file that is not a report (no header): it validates against schemas/KIND.schema.json, and each of
+    `breakers` (what: doc -> broken copy) makes it fail."""
+    doc, v = validated(kind, path, "file")
+    if doc is None:
         return
+    for key in v.schema.get("required", []):
+        check(errors(v, {k: x for k, x in doc.items() if k != key}), "%s file without '%s' still validates" % (kind, key))
+    for what, breaker in breakers.items():
+        broken = breaker(copy.deepcopy(doc))
+        check(errors(v, broken), "%s file with %s still validates" % (kind, what))
+
+
+def validate_tune_files(cache_path, kt_path):
+    """tune's own files: the tune cache and the Kernel Tuner export (--export-kt)."""
+    def first(entries):
+        return entries[0] if isinstance(entries, list) else next(iter(entries.values()))
+
+    def invalid_but_timed(doc):  # a point not measured (or over budget) with a time Kernel Tuner would take
+        e = next(e for e in doc["cache"].values() if e["status"] != "measured")
+        e["time"] = 1.0
+        return doc
+
+    validate_file("tune-cache", cache_path, {
+        "an entry without its objective": lambda d: (first(d["entries"]).pop("objective"), d)[1],
+        "a tile of 17 pixels": lambda d: (first(d["entries"])["params"].update(tile=17), d)[1],
+        "a string for max_error": lambda d: (first(d["entries"]).update(max_error="1"), d)[1]})
+    validate_file("kernel-tuner-cache", kt_path, {
+        "an entry without its status": lambda d: (first(d["cache"]).pop("status"), d)[1],
+        "an invalid entry with a time": invalid_but_timed,
+        "another objective": lambda d: dict(d, objective="energy")})
+
+
+def validated(kind, path, what):
+    """The file and its validator after checking it against schemas/KIND.schema.json; (None, None) if missing."""
+    if not os.path.exists(path):
+        check(False, "%s: no %s written at %s" % (kind, what, path))
+        return None, None
     doc = load(path)
     v = validator(kind)
     errs = errors(v, doc)
-    check(not errs, "%s report does not validate: %s" % (kind, errs[:5]))
+    check(not errs, "%s %s does not validate: %s" % (kind, what, errs[:5]))
+    return doc, v
+
+
+def validate_report(kind, path):
+    doc, v = validated(kind, path, "report")
+    if doc is None:
+        return
     check(doc.get("schema") == "parashade.%s/1" % kind, "%s report's schema is %r" % (kind, doc.get("schema")))
     # Strict enough to fail: without any one required key, or with the wrong kind, it must not validate.
     for key in required_keys(v):
@@ -154,8 +195,10 @@ def run_all(tmp):
     run(["scaling", scene, *small, "--units", "classic,counter", "--frames", "2", "-q", "--report", out("scaling.json")])
     validate_report("scaling", out("scaling.json"))
     run(["tune", scene, *small, "--budget-runs", "2", "--frames", "1", "-q", "--cache", out("tune-cache.json"),
-         "--report", out("tune.json")])
+         "--report", out("tune.json"), "--objective", "pareto", "--restrict", "tile*work_items<=4096",
+         "--export-kt", out("kernel-tuner-cache.json")])
     validate_report("tune", out("tune.json"))
+    validate_tune_files(out("tune-cache.json"), out("kernel-tuner-cache.json"))
     run(["unit-error", "--units", "counter", "--lengths", "1,4", "--trials", "20", "--report", out("unit-error.json")])
     validate_report("unit-error", out("unit-error.json"))
     run(["phong-study", "--report", out("phong-study.json")])

@@ -18,25 +18,14 @@ import subprocess
 import sys
 import tempfile
 
-SKIP = 77
+from pip_venv import venv_with
+
 PIXEL_TOLERANCE = 1e-4
 MEAN_TOLERANCE = 2e-5
 
 
 def make_venv(work):
-    venv = os.path.join(work, "flip-venv")
-    python = os.path.join(venv, "bin", "python")
-    if not os.path.exists(python):
-        subprocess.run([sys.executable, "-m", "venv", "--system-site-packages", venv], check=True)
-    have = subprocess.run([python, "-c", "import flip_evaluator, numpy, PIL"], capture_output=True)
-    if have.returncode != 0:
-        pip = subprocess.run([python, "-m", "pip", "install", "--disable-pip-version-check", "-q", "--timeout", "30",
-                              "--retries", "1", "flip-evaluator", "numpy", "pillow"], capture_output=True, text=True)
-        if pip.returncode != 0:
-            print("SKIP: pip could not install flip-evaluator (is the package registry reachable?):\n" +
-                  pip.stderr[-1500:])
-            sys.exit(SKIP)
-    return python
+    return venv_with(work, "flip-venv", ["flip_evaluator", "numpy", "PIL"], ["flip-evaluator", "numpy", "pillow"])
 
 
 # Runs inside the venv: writes the pairs, runs parashade compare on each and flip_evaluator on the same values,
