@@ -45,6 +45,9 @@ export POCL_CACHE_DIR="${POCL_CACHE_DIR:-$PWD/build-asan/pocl-cache}"
 # No timing is taken here, so PoCL's workers need not be pinned (the renderer pins them unless this is
 # set).
 export POCL_AFFINITY="${POCL_AFFINITY:-0}"
+# The tests' PyPI venvs (flip-evaluator, kernel_tuner: tests/scripts/pip_venv.py) from the main build when it
+# has them: the same packages, without a second minute of pip.
+if [ -d build ] && [ -z "${PARASHADE_TEST_VENVS:-}" ]; then export PARASHADE_TEST_VENVS="$PWD/build"; fi
 status=0
 # -LE anydevice: the Oclgrind runs (tests/anydevice, docs/pipeline.md) check the kernels, which the
 # sanitizers do not instrument; under them they would only double their time.

@@ -1,5 +1,6 @@
 """A venv in the build folder with PyPI packages the tests compare against (flip-evaluator, kernel_tuner),
-made once and reused; system site packages, for NumPy and Pillow."""
+made once and reused; system site packages, for NumPy and Pillow. PARASHADE_TEST_VENVS names another folder
+for them (scripts/sanitize.sh points it at the main build's, so CI's sanitizer pass does not pip again)."""
 import os
 import subprocess
 import sys
@@ -10,7 +11,7 @@ SKIP = 77  # ctest's SKIP_RETURN_CODE for these tests
 def venv_with(work, name, imports, packages):
     """The venv WORK/NAME's python, after `import IMPORTS` works in it (pip-installing PACKAGES if not); exits
     SKIP with a message when pip cannot install them (no registry reachable)."""
-    venv = os.path.join(work, name)
+    venv = os.path.join(os.environ.get("PARASHADE_TEST_VENVS") or work, name)
     python = os.path.join(venv, "bin", "python")
     if not os.path.exists(python):
         subprocess.run([sys.executable, "-m", "venv", "--system-site-packages", venv], check=True)
