@@ -12,7 +12,8 @@ rounding, output register) are timed like the clocked path. The median over the 
 The modeled clocks of a scene (parashade plan, as hw_synth) give the pixels per clock;
 pixels per microsecond = Fmax in MHz x pixels per clock.
 
-  scripts/hw_pnr.py [--out DIR] [--seeds N] [--formats 12.12,9.7] [--lanes 1,2,3,4,8,16]
+  scripts/hw_pnr.py [--out DIR] [--seeds N] [--formats 12.12,9.7] [--lanes 1,2,3,4,8,16] [--resume]
+  scripts/hw_pnr.py --out docs/bench-report/results/hw --check-doc docs/hardware.md   (ctest hw.pnr_table)
   scripts/hw_pnr.py --quick   the CI smoke test: classic in fixed:9.7, one seed; fails unless Fmax, LUTs,
                               carries and FFs are read; exits 77 (ctest: skipped) without nextpnr-ice40.
 nextpnr runs under nice -n 15, one at a time. Needs yosys and nextpnr-ice40 (scripts/install-deps.sh --test);
@@ -118,13 +119,14 @@ def register_name(cell):
 
 def critical_path(report):
     """The clock-to-clock critical path: its start and end registers (u. is the unit, in_r and out_r the
-    harness's) and its LUT and carry steps."""
+    harness's), its LUT and carry steps, its delay and the routing's part of it."""
     for c in report.get("critical_paths", []):
         if c.get("from", "").startswith("posedge") and c.get("to", "").startswith("posedge") and c.get("path"):
             steps = c["path"]
             return {"from": register_name(steps[0]["to"]["cell"]), "to": register_name(steps[-1]["to"]["cell"]),
                     "logic_steps": sum(st["type"] == "logic" for st in steps),
-                    "ns": round(sum(st["delay"] for st in steps), 3)}
+                    "ns": round(sum(st["delay"] for st in steps), 3),
+                    "routing_ns": round(sum(st["delay"] for st in steps if st["type"] == "routing"), 3)}
     return None
 
 
@@ -194,20 +196,38 @@ def best_lanes(rows):
     return best
 
 
+def median_path(row):
+    """The critical path of the run whose Fmax is the median: "from → to (steps)"."""
+    run = min((r for r in row["runs"] if "fmax_mhz" in r), key=lambda r: abs(r["fmax_mhz"] - row["fmax_mhz"]))
+    p = run.get("critical_path")
+    return "%s → %s (%d)" % (p["from"], p["to"], p["logic_steps"]) if p else ""
+
+
 def table(rows):
     lines = ["| unit | lanes | arith | Fmax MHz: median (min–max) | LUTs | carries | FFs | logic cells (harness) | "
-             "clocks/pixel | pixels/µs (min–max) | pixels/µs per 1 000 LUTs |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+             "clocks/pixel | pixels/µs (min–max) | pixels/µs per 1 000 LUTs | critical path (steps) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         if not r["fits"]:
-            lines.append("| %s | %d | %s | does not fit: %s | %d | %d | %d | | %.3f | | |" % (
+            lines.append("| %s | %d | %s | does not fit: %s | %d | %d | %d | | %.3f | | | |" % (
                 r["unit"], r["lanes"], r["arith"], next(x["error"] for x in r["runs"] if "error" in x)[:80],
                 r["luts"], r["carries"], r["ffs"], r["clocks_per_pixel"]))
             continue
-        lines.append("| %s | %d | %s | %.1f (%.1f–%.1f) | %d | %d | %d | %d | %.3f | %.1f (%.1f–%.1f) | %.1f |" % (
+        lines.append("| %s | %d | %s | %.1f (%.1f–%.1f) | %d | %d | %d | %d | %.3f | %.1f (%.1f–%.1f) | %.1f | %s |" % (
             r["unit"], r["lanes"], r["arith"], r["fmax_mhz"], r["fmax_min"], r["fmax_max"], r["luts"], r["carries"],
             r["ffs"], r["logic_cells"], r["clocks_per_pixel"], r["pixels_per_us"], r["pixels_per_us_min"],
-            r["pixels_per_us_max"], r["pixels_per_us_per_1000_luts"]))
+            r["pixels_per_us_max"], r["pixels_per_us_per_1000_luts"], median_path(r)))
     return "\n".join(lines) + "\n"
+
+
+def check_doc(doc, result):
+    """The table in the docs is the committed result's (ctest hw.pnr_table)."""
+    want = table(json.load(open(result))["rows"])
+    if want in open(doc).read():
+        print("hw_pnr --check-doc: %s holds the table of %s" % (doc, result))
+        return 0
+    print("FAIL: %s does not hold the table of %s; it should read:\n%s" % (doc, result, want))
+    return 1
 
 
 def quick(work):
@@ -232,31 +252,45 @@ def main():
     ap.add_argument("--seeds", type=int, default=3, help="nextpnr seeds 1..N per configuration")
     ap.add_argument("--formats", default="12.12,9.7")
     ap.add_argument("--lanes", default="1,2,3,4,8,16", help="M or P (segment: the powers of two only)")
+    ap.add_argument("--resume", action="store_true", help="keep the configurations OUT/hw-pnr.json has; run the rest")
     ap.add_argument("--scene", default=os.path.join(ROOT, "scenes", "teapot.json"))
-    ap.add_argument("--plot-only", action="store_true", help="plot OUT/hw-pnr.json again (no place and route)")
+    ap.add_argument("--plot-only", action="store_true",
+                    help="the table (OUT/hw-pnr.md) and the plots again from OUT/hw-pnr.json (no place and route)")
+    ap.add_argument("--check-doc", metavar="FILE", help="exit 1 unless FILE holds OUT/hw-pnr.json's table verbatim")
     a = ap.parse_args()
     if a.plot_only:
-        return plot(json.load(open(os.path.join(a.out, "hw-pnr.json")))["rows"], a)
+        rows = json.load(open(os.path.join(a.out, "hw-pnr.json")))["rows"]
+        with open(os.path.join(a.out, "hw-pnr.md"), "w") as fh:
+            fh.write(table(rows))
+        return plot(rows, a)
+    if a.check_doc:
+        return check_doc(a.check_doc, os.path.join(a.out, "hw-pnr.json"))
     for tool in ("yosys", "nextpnr-ice40"):
         if not shutil.which(tool):
             print("hw_pnr: %s not found (scripts/install-deps.sh --test installs it): skipped" % tool)
             return SKIP
-    rows = []
+    result_path = os.path.join(a.out, "hw-pnr.json")
+    rows = json.load(open(result_path))["rows"] if a.resume and os.path.exists(result_path) else []
+    done = {(r["unit"], r["lanes"], r["arith"]) for r in rows}
+    os.makedirs(a.out, exist_ok=True)
     with tempfile.TemporaryDirectory() as work:
         if a.quick:
             return quick(work)
         for config in unit_configs(a.formats.split(","), [int(n) for n in a.lanes.split(",")]):
+            if (config[0], config[1], "fixed:%d.%d" % config[2:]) in done:
+                continue
             rows.append(measure(config, range(1, a.seeds + 1), work))
+            with open(result_path, "w") as fh:  # so far: an interrupted sweep goes on with --resume
+                json.dump({"rows": rows}, fh, indent=1)
             r = rows[-1]
             print("%-10s %2d %s: %s, %d LUTs, %d carries, %d FFs" % (
                 r["unit"], r["lanes"], r["arith"], "Fmax %.1f MHz (%.1f-%.1f)" % (r["fmax_mhz"], r["fmax_min"], r["fmax_max"])
                 if r["fits"] else "does not fit", r["luts"], r["carries"], r["ffs"]), flush=True)
     pixels, spans = add_throughput(rows, a)
-    os.makedirs(a.out, exist_ok=True)
     result = dict(versions(), device="iCE40%s (%s)" % (DEVICE.upper(), PACKAGE), target_mhz=TARGET_MHZ,
                   seeds=a.seeds, scene=os.path.basename(a.scene), pixels=pixels, spans=spans,
                   best=best_lanes(rows), rows=rows)
-    with open(os.path.join(a.out, "hw-pnr.json"), "w") as fh:
+    with open(result_path, "w") as fh:
         json.dump(result, fh, indent=1)
     with open(os.path.join(a.out, "hw-pnr.md"), "w") as fh:
         fh.write(table(rows))
