@@ -144,6 +144,7 @@ scaling_scene() {
       --arith float,fixed:12.12 --frames 9 --report "$OUT/scaling-$1.json"
 }
 hw_synthesis() { BUILD="$BUILD" "$PYTHON" scripts/hw_synth.py --out "$OUT/hw" >"$OUT/hw-synthesis.txt"; }
+hw_pnr() { BUILD="$BUILD" "$PYTHON" scripts/hw_pnr.py --out "$OUT/hw" --seeds 3 >"$OUT/hw-pnr.txt"; }
 span_setup() {
   have_bench bench_span_setup || return 0
   "$BUILD/bench/bench_span_setup" --benchmark_repetitions=5 --benchmark_enable_random_interleaving=true \
@@ -220,6 +221,13 @@ suite() {
       step "hw synthesis" hw_synthesis
     else
       warn "yosys is not installed: no synthesis of hw/ (scripts/install-deps.sh)"
+    fi
+    # The same units placed and routed on an iCE40HX8K (nextpnr-ice40, 3 seeds each, niced, one at a time):
+    # Fmax, LUTs, carries, FFs, pixels per microsecond (docs/hardware.md, "Place and route"; ~15 min).
+    if command -v yosys >/dev/null 2>&1 && command -v nextpnr-ice40 >/dev/null 2>&1; then
+      step "hw place and route" hw_pnr
+    else
+      warn "yosys or nextpnr-ice40 is not installed: no place and route of hw/ (scripts/install-deps.sh --test)"
     fi
     # Host model of whole-triangle shading: constant increment and shift-add division ([Gouraud simplification], [Romanyuk & Obidnyk 2011, faster shading]).
     step "span setup" span_setup

@@ -57,13 +57,32 @@ def lane_param(unit):
     return {"interleave": "M", "pipelined": "M", "segment": "P"}.get(unit)
 
 
+def hw_sources():
+    """hw/'s Verilog files, the units and their parts."""
+    return [os.path.join(ROOT, "hw", v) for v in sorted(os.listdir(os.path.join(ROOT, "hw"))) if v.endswith(".v")]
+
+
+def unit_configs(formats, lane_counts):
+    """(unit, lanes, I, F) per format "I.F": classic and counter (lanes 1 and 2), then at each lane count
+    interleave, segment (a power of two from 2 only) and pipelined. Shared with scripts/hw_pnr.py."""
+    configs = []
+    for fmt in formats:
+        i, f = map(int, fmt.split("."))
+        configs += [("classic", 1, i, f), ("counter", 2, i, f)]
+        for n in lane_counts:
+            for unit in ("interleave", "segment", "pipelined"):
+                if unit != "segment" or (n >= 2 and n & (n - 1) == 0):
+                    configs.append((unit, n, i, f))
+    return configs
+
+
 def synthesize(unit, lanes, i, f, work):
     """Word-level cell counts and gate-level area and depth of one configuration."""
     top = "ps_" + unit
     params = ["-chparam I %d" % i, "-chparam F %d" % f]
     if lane_param(unit):
         params.append("-chparam %s %d" % (lane_param(unit), lanes))
-    sources = " ".join(os.path.join(ROOT, "hw", v) for v in sorted(os.listdir(os.path.join(ROOT, "hw"))) if v.endswith(".v"))
+    sources = " ".join(hw_sources())
     coarse = os.path.join(work, "coarse.json")
     script = ("read_verilog %s; hierarchy -top %s %s; proc; flatten; opt -full; wreduce; opt_clean; write_json %s; "
               "synth -flatten -top %s; stat; ltp -noff" % (sources, top, " ".join(params), coarse, top))
@@ -158,12 +177,7 @@ def main():
     if a.quick:
         configs = [("segment", 4, 9, 7), ("segment", 8, 9, 7)]
     else:
-        configs = []
-        for fmt in a.formats.split(","):
-            i, f = map(int, fmt.split("."))
-            configs += [("classic", 1, i, f), ("counter", 2, i, f)]
-            for n in (2, 4, 8, 16, 32, 64):
-                configs += [("interleave", n, i, f), ("segment", n, i, f), ("pipelined", n, i, f)]
+        configs = unit_configs(a.formats.split(","), (2, 4, 8, 16, 32, 64))
     rows = []
     with tempfile.TemporaryDirectory() as work:
         for unit, n, i, f in configs:

@@ -1,6 +1,6 @@
 #!/bin/sh
 # README's test command: installs the Debian packages and the test-only tools (install-deps.sh --test:
-# Intel's CPU OpenCL runtime), builds, and runs the whole test suite; then, as CI
+# nextpnr-ice40 and Intel's CPU OpenCL runtime), builds, and runs the whole test suite; then, as CI
 # does, runs each libFuzzer target for a bounded time (scripts/fuzz.sh) and the test suite under
 # AddressSanitizer + UndefinedBehaviorSanitizer (scripts/sanitize.sh). Any failure, crash or sanitizer
 # report fails the script. Tests that need the shared meshes read PARASHADE_MESH_DIR and skip with a
