@@ -37,7 +37,7 @@ nlohmann::ordered_json kernel_tuner_cache(const TuneSpace& space, const std::str
   for (const auto& c : candidates) {
     nlohmann::ordered_json e;
     for (const std::string& n : space.names) e[n] = c["params"][n];
-    const std::vector<double> times = c.value("frame_ms_samples", std::vector<double>{});
+    const std::vector<double> times = c.value("timing", nlohmann::json::object()).value("samples_ms", std::vector<double>{});
     e["time"] = c["frame_ms"];
     e["times"] = times;
     e["compile_time"] = c.value("compile_ms", 0.0);
@@ -47,7 +47,8 @@ nlohmann::ordered_json kernel_tuner_cache(const TuneSpace& space, const std::str
     e["framework_time"] = 0.0;
     e["timestamp"] = c.value("timestamp", "");
     // parashade's own observables, beside Kernel Tuner's: filter on them for the error budget.
-    for (const char* k : {"verified", "max_error", "nmse", "within_budget"}) e[k] = c.value(k, nlohmann::json());
+    for (const char* k : {"verified", "nmse", "within_budget"}) e[k] = c.value(k, nlohmann::json());
+    e["max_error"] = c.value("max_abs", nlohmann::json());  // the report's max_abs, under the export's own name
     cache[key_of(c["params"], space.names)] = e;
   }
   return nlohmann::ordered_json{{"schema_version", "1.1.0"},

@@ -13,8 +13,8 @@ namespace parashade::cli {
 
 // Kernel Tuner reads its cache files as files it may append to: "cache" must be the last key and the
 // text must end with "}\n}" (dump(1) gives that), hence an ordered object.
-// `candidates`: the tune report's candidates (params, frame_ms, frame_ms_samples, compile_ms,
-// verify_ms, timestamp, verified, max_error, nmse, within_budget), one cache entry each.
+// `candidates`: the tune report's candidates (params, frame_ms, timing.samples_ms, compile_ms,
+// verify_ms, timestamp, verified, max_abs, nmse, within_budget), one cache entry each.
 nlohmann::ordered_json kernel_tuner_cache(const TuneSpace& space, const std::string& device_name, const std::string& kernel_name,
                                   int width, int height, const nlohmann::json& candidates);
 

@@ -174,7 +174,7 @@ TEST_F(CliTune, RenderWithGivesTheBestsParameters) {
   flags.push_back("--no-tuned");
   ASSERT_TRUE(succeeds(render(scene_, flags))) << r.out;
   const nlohmann::json rep = read_report();
-  EXPECT_EQ(rep["tile_size"], best["tile"]);
+  EXPECT_EQ(rep["tile"], best["tile"]);
   // The report's work-items are the kernel's: at most one per tile (this frame has 4 tiles of 32).
   const auto wi = std::find(flags.begin(), flags.end(), "--work-items");
   ASSERT_NE(wi, flags.end());
@@ -248,7 +248,7 @@ TEST_F(CliTune, AnErrorBudgetChoosesTheExactMethodOverTheFastOneThatMissesIt) {
   ASSERT_EQ(field(rep, "/candidates").size(), 2u) << rep.dump(2);
   for (const auto& c : rep["candidates"]) {
     const bool is_gouraud = c["params"]["method"] == "gouraud";
-    EXPECT_NEAR(c["max_error"].get<double>(), is_gouraud ? gouraud : phong, 1e-9) << c.dump();
+    EXPECT_NEAR(c["max_abs"].get<double>(), is_gouraud ? gouraud : phong, 1e-9) << c.dump();
     EXPECT_EQ(c["within_budget"], !is_gouraud) << c.dump();
     EXPECT_TRUE(c["verified"].get<bool>()) << c.dump();
   }

@@ -87,7 +87,7 @@ def validate_report(kind, path):
     v = validator(kind)
     errs = errors(v, doc)
     check(not errs, "%s report does not validate: %s" % (kind, errs[:5]))
-    check(doc.get("schema") == "parashade.%s/1" % kind, "%s report's schema is %r" % (kind, doc.get("schema")))
+    check(doc.get("schema") == "parashade.%s/2" % kind, "%s report's schema is %r" % (kind, doc.get("schema")))
     # Strict enough to fail: without any one required key, or with the wrong kind, it must not validate.
     for key in required_keys(v):
         broken = copy.deepcopy(doc)
