@@ -440,6 +440,10 @@ TEST_F(CliTune, KernelTunerExportHasItsKeysAndOneEntryPerCandidate) {
                           "framework_time", "timestamp"})
       EXPECT_TRUE(e.contains(f)) << key << " lacks " << f;
     EXPECT_EQ(e["time"], c["frame_ms"]);
+    // The report's names (report format 2) under the export's own: every timed frame, the measured error.
+    EXPECT_EQ(e["times"], c["timing"]["samples_ms"]) << key;
+    EXPECT_FALSE(e["times"].empty()) << key;
+    EXPECT_EQ(e["max_error"], c["max_abs"]) << key;
     for (const std::string& n : keys) EXPECT_EQ(e[n], c["params"][n]) << key;
   }
 }
