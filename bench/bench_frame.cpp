@@ -22,6 +22,7 @@
 #include "parashade/scene.hpp"
 #include "parashade/shapes.hpp"
 #include "parashade/units.hpp"
+#include "benchmark_schema.hpp"
 
 namespace parashade {
 namespace {
@@ -141,6 +142,7 @@ void register_all() {
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
+  parashade::add_schema_context();
   try {
     const parashade::DeviceInfo& d = parashade::bench_device().info();
     benchmark::AddCustomContext("device", d.name);

@@ -29,6 +29,7 @@
 #include "parashade/host_clock.hpp"
 #include "parashade/statistics.hpp"
 #include "json_output.hpp"
+#include "parashade/report_header.hpp"
 #include "tool_main.hpp"
 
 namespace parashade {
@@ -137,15 +138,15 @@ int run(int argc, char** argv) {
               "CPU)\n",
               steady ? "steady" : "NOT steady", worst_alu, worst_memory, max_alu_spread, max_memory_spread);
   if (!json_path.empty()) {
-    const nlohmann::json j = {{"seconds", seconds},
-                              {"max_alu_spread", max_alu_spread},
-                              {"max_memory_spread", max_memory_spread},
-                              {"cpus", cpus},
-                              {"steady", steady},
-                              {"worst_alu_p90_over_min", worst_alu},
-                              {"worst_memory_p90_over_min", worst_memory},
-                              {"per_cpu", per_cpu}};
-    json.write(j);
+    nlohmann::json j = {{"seconds", seconds},
+                        {"max_alu_spread", max_alu_spread},
+                        {"max_memory_spread", max_memory_spread},
+                        {"cpus", cpus},
+                        {"steady", steady},
+                        {"worst_alu_p90_over_min", worst_alu},
+                        {"worst_memory_p90_over_min", worst_memory},
+                        {"per_cpu", per_cpu}};
+    json.write(stamp_report(j, "host-noise"));
   }
   return require_steady && !steady ? 1 : 0;
 }

@@ -21,6 +21,7 @@
 #include "parashade/geometry_stage.hpp"
 #include "parashade/parallel.hpp"
 #include "peer/bench_scenes.hpp"
+#include "benchmark_schema.hpp"
 
 namespace parashade {
 namespace {
@@ -135,6 +136,7 @@ void register_all() {
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
+  parashade::add_schema_context();
   parashade::register_all();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

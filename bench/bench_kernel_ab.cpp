@@ -31,6 +31,7 @@
 #include "parashade/statistics.hpp"
 #include "parashade/tile_choice.hpp"
 #include "json_output.hpp"
+#include "parashade/report_header.hpp"
 #include "tool_main.hpp"
 
 namespace parashade {
@@ -151,26 +152,26 @@ int run(int argc, char** argv) {
               median(sb.kernel_ms), kernel_ratio, pairs);
   std::printf("frame ms:  A %.3f, B %.3f (medians); B/A %.3f\n", median(sa.frame_ms), median(sb.frame_ms), frame_ratio);
   if (!json_path.empty()) {
-    const nlohmann::json j = {{"scene", scene_path},
-                              {"method", method_text},
-                              {"width", scene.width},
-                              {"height", scene.height},
-                              {"tile_size", options.tile_size},
-                              {"device", d.name},
-                              {"compute_units", d.compute_units},
-                              {"a_options", build_a.defines},
-                              {"b_options", build_b.defines},
-                              {"a_shape", build_a.shape},
-                              {"b_shape", build_b.shape},
-                              {"a_group", build_a.group},
-                              {"b_group", build_b.group},
-                              {"pairs", pairs},
-                              {"images_identical", same_image},
-                              {"kernel_ratio_median", kernel_ratio},
-                              {"frame_ratio_median", frame_ratio},
-                              {"a", {{"kernel_ms", sa.kernel_ms}, {"frame_ms", sa.frame_ms}}},
-                              {"b", {{"kernel_ms", sb.kernel_ms}, {"frame_ms", sb.frame_ms}}}};
-    json.write(j);
+    nlohmann::json j = {{"scene", scene_path},
+                        {"method", method_text},
+                        {"width", scene.width},
+                        {"height", scene.height},
+                        {"tile", options.tile_size},
+                        {"device", d.name},
+                        {"compute_units", d.compute_units},
+                        {"a_options", build_a.defines},
+                        {"b_options", build_b.defines},
+                        {"a_shape", build_a.shape},
+                        {"b_shape", build_b.shape},
+                        {"a_group", build_a.group},
+                        {"b_group", build_b.group},
+                        {"pairs", pairs},
+                        {"images_identical", same_image},
+                        {"kernel_ratio_median", kernel_ratio},
+                        {"frame_ratio_median", frame_ratio},
+                        {"a", {{"kernel_ms", sa.kernel_ms}, {"frame_ms", sa.frame_ms}}},
+                        {"b", {{"kernel_ms", sb.kernel_ms}, {"frame_ms", sb.frame_ms}}}};
+    json.write(stamp_report(j, "kernel-ab"));
   }
   if (require_same_image && !same_image) {
     std::fprintf(stderr, "bench_kernel_ab: the two builds' images differ (--same-image)\n");

@@ -54,6 +54,7 @@
 #include "parashade/units.hpp"
 #include "peer/bench_scenes.hpp"
 #include "peer/llvmpipe_peer.hpp"
+#include "benchmark_schema.hpp"
 
 namespace parashade {
 namespace {
@@ -199,7 +200,7 @@ void parashade_frame(benchmark::State& state, const std::string& case_name, cons
   const double n = double(state.iterations());
   common_counters(state, *scene, sum_ms / n, peak);
   state.counters["kernel_ms"] = kernel_ms / n;
-  state.counters["tile_size"] = chosen.tile_size;
+  state.counters["tile"] = chosen.tile_size;
   state.counters["triangles_after_culling"] = double(last->stats.geometry.triangles_out);
   if (options.unit_path()) state.counters["modeled_clocks"] = double(last->stats.clocks.clocks);
   if (!options.unit_path() && options.method != Method::combined) {  // the plain path's walk, counted on the host
@@ -270,6 +271,7 @@ void register_all(const std::vector<std::string>& scenes, const std::vector<std:
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
+  parashade::add_schema_context();
   std::vector<std::string> scenes = {"sphere_8k", "sphere_131k", "sphere_2m", "teapot",
                                      "robot",     "bunny",       "fandisk",   "fullscreen_quad"};
   std::vector<std::pair<int, int>> sizes = {{1920, 1080}};

@@ -11,6 +11,7 @@
 #include <benchmark/benchmark.h>
 
 #include "parashade/normalization.hpp"
+#include "benchmark_schema.hpp"
 
 namespace parashade {
 namespace {
@@ -67,6 +68,7 @@ void register_all() {
 int main(int argc, char** argv) {
   parashade::register_all();
   benchmark::Initialize(&argc, argv);
+  parashade::add_schema_context();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

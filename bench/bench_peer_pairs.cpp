@@ -34,6 +34,7 @@
 #include "parashade/tile_choice.hpp"
 #include "peer/bench_scenes.hpp"
 #include "peer/llvmpipe_peer.hpp"
+#include "parashade/report_header.hpp"
 #include "tool_main.hpp"
 
 namespace parashade {
@@ -156,16 +157,16 @@ int run(int argc, char** argv) {
                        {"parashade_ms", c.parashade_ms},
                        {"llvmpipe_ms", c.llvmpipe_ms}});
     }
-  json.write({{"schema", "parashade.peer-pairs/1"},
-              {"device", d.name},
-              {"compute_units", d.compute_units},
-              {"gl_renderer", gl.info().renderer},
-              {"gl_version", gl.info().version},
-              {"lp_num_threads", threads},
-              {"width", width},
-              {"height", height},
-              {"pairs", pairs},
-              {"cases", cases}});
+  nlohmann::json body = {{"device", d.name},
+                         {"compute_units", d.compute_units},
+                         {"gl_renderer", gl.info().renderer},
+                         {"gl_version", gl.info().version},
+                         {"lp_num_threads", threads},
+                         {"width", width},
+                         {"height", height},
+                         {"pairs", pairs},
+                         {"cases", cases}};
+  json.write(stamp_report(body, "peer-pairs"));
   return 0;
 }
 

@@ -37,6 +37,7 @@
 #include "parashade/setup.hpp"
 #include "parashade/shift_add_division.hpp"
 #include "parashade/kernels/constants.h"
+#include "benchmark_schema.hpp"
 
 namespace parashade {
 namespace {
@@ -812,6 +813,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   benchmark::Initialize(&argc, argv);
+  parashade::add_schema_context();
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
   parashade::register_all();
   parashade::RatioReporter reporter;

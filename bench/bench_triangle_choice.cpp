@@ -8,6 +8,7 @@
 #include "parashade/geometry_stage.hpp"
 #include "parashade/parallel.hpp"
 #include "parashade/triangle_choice.hpp"
+#include "benchmark_schema.hpp"
 
 namespace {
 
@@ -70,4 +71,11 @@ const bool bunny = std::getenv("PARASHADE_MESH_DIR") &&
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  parashade::add_schema_context();
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

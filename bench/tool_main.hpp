@@ -6,10 +6,12 @@
 #include <exception>
 
 #include "parashade/errors.hpp"
+#include "parashade/report_header.hpp"
 
 namespace parashade {
 
 inline int tool_main(const char* name, int (*run)(int, char**), int argc, char** argv) {
+  set_report_command_line(argc, argv);  // the command_line of a --json file (report_header.hpp)
   try {
     return run(argc, argv);
   } catch (const Error& e) {

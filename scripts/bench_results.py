@@ -1,11 +1,13 @@
 """Reading result files for report.py and claims.py: bench_llvmpipe / bench_frame JSON (Google Benchmark),
 `parashade scaling --report` JSON, scripts/peak_memory.py JSON, bench_peer_pairs JSON, and the method variants of
 scripts/combined_study.py (combined-study.json) and scripts/phong_methods.py (phong-methods.json), told
-apart by their "schema" field (files without one by their keys; docs/reports.md). Each Google Benchmark case becomes one
+apart by their "schema" field (docs/reports.md). Each Google Benchmark case becomes one
 row: {"peer", "scene", "size", "method", "name", counters...}, the median aggregate when the run had
 repetitions, else the single run."""
 import json
 import os
+
+from report_schema import VERSION
 
 
 def load_json(path):
@@ -13,43 +15,33 @@ def load_json(path):
         return json.load(f)
 
 
-# Result files this module reads, by their "schema" field (docs/reports.md): the kind before the "/"
-# and the versions it understands.
-SCHEMAS = {"parashade.scaling": ("scaling", {1}), "parashade.memory": ("memory", {1}),
-           "parashade.peer-pairs": ("peer_pairs", {1})}
-
-
-def legacy_kind(doc):
-    """Files without a "schema" field, by the keys each kind has: those written before reports carried one
-    (the committed docs/bench-report/results), and the studies' files (combined_study.py, phong_methods.py)."""
-    if "rows" in doc and "speedup_note" in doc:
-        return "scaling"
-    if "rows" in doc and "command" in doc:
-        return "memory"
-    if "measurements" in doc and "claims" in doc:
-        return "combined_study"
-    if "rows" in doc and doc["rows"] and "normalize" in doc["rows"][0]:
-        return "phong_methods"
-    return "unknown"
+# Result files this module reads, by their "schema" field (docs/reports.md; a Google Benchmark file's is in its
+# context): the kind before the "/" and the versions it understands. Files of format 1 or without a schema:
+# scripts/migrate_reports.py rewrites them.
+SCHEMAS = {"parashade.benchmark": ("benchmark", {VERSION}), "parashade.scaling": ("scaling", {VERSION}),
+           "parashade.memory": ("memory", {VERSION}), "parashade.peer-pairs": ("peer_pairs", {VERSION}),
+           "parashade.combined-study": ("combined_study", {VERSION}),
+           "parashade.phong-methods": ("phong_methods", {VERSION})}
 
 
 def kind(doc):
-    """"benchmark" (Google Benchmark's own format, known by its context), a kind from SCHEMAS, or
-    "unknown" (another parashade report, or a version this script does not know)."""
+    """A kind from SCHEMAS ("benchmark": Google Benchmark's own format), or "unknown" (another file, or
+    another parashade kind). A known kind at a version this script does not read is an error, not a guess."""
     if not isinstance(doc, dict):
         return "unknown"
-    if "benchmarks" in doc and "context" in doc:
-        return "benchmark"
     schema = doc.get("schema")
-    if schema is None:
-        return legacy_kind(doc)
+    if "benchmarks" in doc and isinstance(doc.get("context"), dict):
+        schema = doc["context"].get("schema")
     name, _, version = str(schema).partition("/")
     if name not in SCHEMAS:
+        if schema is None and ("benchmarks" in doc or "rows" in doc or "measurements" in doc):
+            raise ValueError("a result file without a schema (format 1 or older): "
+                             "scripts/migrate_reports.py rewrites it")
         return "unknown"
     k, versions = SCHEMAS[name]
     if not version.isdigit() or int(version) not in versions:
         raise ValueError(f"result schema {schema}: this script reads {name}/" +
-                         ",".join(str(v) for v in sorted(versions)))
+                         ",".join(str(v) for v in sorted(versions)) + " (scripts/migrate_reports.py rewrites older files)")
     return k
 
 

@@ -12,16 +12,18 @@ import argparse
 import json
 import os
 
+from report_schema import schema
+
 
 def candidates(combined, methods):
     rows = []
     for m in (combined or {}).get("measurements", []):
         rows.append({"scene": m["scene"], "variant": "--method " + m["method"], "study": "combined_study",
                      "baseline": m["method"] == "phong",
-                     "frame_ratio": 1.0 if m["method"] == "phong" else m["speedup_vs_phong_frame"],
-                     "kernel_ratio": 1.0 if m["method"] == "phong" else m["speedup_vs_phong_kernel"],
+                     "frame_ratio": 1.0 if m["method"] == "phong" else m["frame_ratio"],
+                     "kernel_ratio": 1.0 if m["method"] == "phong" else m["kernel_ratio"],
                      "nmse_vs_exact_phong": m["error_vs_exact_phong"]["nmse"],
-                     "ceiling_frame_ratio": m.get("ceiling_vs_phong_frame")})
+                     "ceiling_frame_ratio": m.get("ceiling_frame_ratio")})
     for r in (methods or {}).get("rows", []):
         base = r["normalize"] == "exact" and r["specular"] == "exact"
         rows.append({"scene": r["scene"], "variant": f"--method phong --normalize {r['normalize']} --specular {r['specular']}",
@@ -49,7 +51,7 @@ def main():
             if r["nmse_vs_exact_phong"] <= args.max_nmse and r["frame_ratio"] > best.get(r["scene"], {"frame_ratio": -1})["frame_ratio"]:
                 best[r["scene"]] = r
         return [v for _, v in sorted(best.items())]
-    out = {"max_nmse": args.max_nmse,
+    out = {"schema": schema("best-method"), "max_nmse": args.max_nmse,
            "note": "frame_ratio = baseline frame time / variant frame time, baseline from the same run (exact Phong); "
                    "best_other leaves the baselines out: the fastest other variant, faster than exact Phong or not",
            "best": fastest(rows), "best_other": fastest([r for r in rows if not r["baseline"]]),

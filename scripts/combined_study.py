@@ -24,6 +24,7 @@ import statistics
 import tempfile
 
 from render_report import render_report
+from report_schema import schema
 
 DEFAULT_METHODS = ["phong", "gouraud", "combined:1", "combined:2", "combined:3", "combined:4",
                    "combined:3 --combined-min-width 0", "combined:auto@1", "combined:auto@2", "combined:auto@4",
@@ -147,9 +148,9 @@ def main():
                         f"| {exact['max_abs']:.2f} / {exact['nmse']:.1e} | {exact.get('psnr_db', float('nan')):.2f} | {mix} "
                         f"| {share} | {'' if limit is None else f'{limit:.2f}'} |")
             records.append({"scene": r["scene"], "method": method, "command": "parashade " + cmd, "frame_ms": frame,
-                            "kernel_ms": kernel, "speedup_vs_phong_frame": speed, "speedup_vs_phong_kernel": kspeed,
+                            "kernel_ms": kernel, "frame_ratio": speed, "kernel_ratio": kspeed,
                             "error_vs_phong": own, "error_vs_exact_phong": exact, "width": r["width"],
-                            "height": r["height"], "triangle_choice": choice, "ceiling_vs_phong_frame": limit,
+                            "height": r["height"], "triangle_choice": choice, "ceiling_frame_ratio": limit,
                             "frame_ms_rounds": [x["frame_ms"] for _, x, _ in runs]})
     header = (f"Device: {device['name']} ({device['platform']}), {device['compute_units']} compute units. "
               f"Median of {args.frames} frames after 1 warm-up; ratios to Phong from {PAIRING_TEXT[args.pairing]}, "
@@ -173,8 +174,8 @@ def main():
                 if rec["method"] == f"combined:{k}":
                     claims.append({"claim": f"combined-k{k}-speedup", "source": "[Romanyuk & Romanyuk, combined shading]",
                                    "source_figure": f"{diffuse}x (diffuse), {with_linear}x with the linear normal approximation",
-                                   "scene": rec["scene"], "measured_figure": rec["speedup_vs_phong_frame"],
-                                   "measured_kernel_figure": rec["speedup_vs_phong_kernel"],
+                                   "scene": rec["scene"], "measured_figure": rec["frame_ratio"],
+                                   "measured_kernel_figure": rec["kernel_ratio"],
                                    "note": "speed-up of the whole frame (and of the kernel) against --method phong, "
                                            + PAIRING_TEXT[args.pairing]
                                            + "; shared, loaded machine"})
@@ -188,22 +189,22 @@ def main():
                 claims.append({"claim": "adaptive-" + rule.split(":")[0], "source": "[Dembitsky 2025, software/hardware rendering] ch. 3, listing",
                                "source_figure": "thresholds 0.9, 0.004, 0.008", "scene": rec["scene"],
                                "gouraud_fraction": choice["gouraud"] / max(1, choice["triangles"]),
-                               "measured_figure": rec["speedup_vs_phong_frame"],
-                               "measured_kernel_figure": rec["speedup_vs_phong_kernel"],
-                               "max_levels_vs_phong": rec["error_vs_phong"]["max_abs"],
+                               "measured_figure": rec["frame_ratio"],
+                               "measured_kernel_figure": rec["kernel_ratio"],
+                               "max_abs_vs_phong": rec["error_vs_phong"]["max_abs"],
                                "note": "triangles given to Gouraud by the listing's rule; speed-up against --method phong"})
             budget = words[0].partition("@")[2]
             if words[0].startswith("combined:auto@") and len(words) == 1:
                 claims.append({"claim": "auto-beats-phong", "source": "issue 4 (done means)", "source_figure": "> 1x within budget",
                                "scene": rec["scene"], "budget_levels": float(budget),
-                               "measured_figure": rec["speedup_vs_phong_frame"],
-                               "measured_kernel_figure": rec["speedup_vs_phong_kernel"],
-                               "max_levels_vs_phong": rec["error_vs_phong"]["max_abs"],
+                               "measured_figure": rec["frame_ratio"],
+                               "measured_kernel_figure": rec["kernel_ratio"],
+                               "max_abs_vs_phong": rec["error_vs_phong"]["max_abs"],
                                "within_budget": rec["error_vs_phong"]["max_abs"] <= float(budget),
                                "gouraud_fraction": choice["gouraud"] / max(1, choice["triangles"]) if choice else None,
                                "note": "combined:auto --max-error B (per-triangle choice, bound rule) against --method phong"})
         with open(args.json, "w") as f:
-            json.dump({"device": device, "frames": args.frames, "rounds": args.rounds,
+            json.dump({"schema": schema("combined-study"), "device": device, "frames": args.frames, "rounds": args.rounds,
                        "paired": args.pairing == "adjacent", "pairing": args.pairing,
                        "measurements": records,
                        "claims": claims}, f, indent=2)

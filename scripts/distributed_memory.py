@@ -52,7 +52,7 @@ def main():
                         sys.exit("failed (%d): %s\n%s" % (p.returncode, " ".join(cmd), p.stderr))
                     r = json.load(open(rep))
                     print("| %s | %d | %s | %s | %s | %s |" % (
-                        mode, n, read, " / ".join("%.0f" % q["peak_rss_mb"] for q in r["per_rank"]),
+                        mode, n, read, " / ".join("%.0f" % q["peak_rss_mib"] for q in r["per_rank"]),
                         " / ".join("%d" % q["records"] for q in r["per_rank"]), load), flush=True)
                     images.append(open(img, "rb").read())
                 if images[0] != images[1]:

@@ -23,6 +23,8 @@ import subprocess
 import sys
 import tempfile
 
+from report_schema import schema
+
 
 def sh(cmd):
     p = subprocess.run(cmd, capture_output=True, text=True)
@@ -54,7 +56,7 @@ def warm_figures(reports):
         for key in keys:
             rank[key] = statistics.median(statistics.median(f.get(key, 0.0) for f in r["per_rank"][i]["frames"])
                                           for r in reports)
-        rank["peak_rss_mb"] = max(r["per_rank"][i]["peak_rss_mb"] for r in reports)
+        rank["peak_rss_mib"] = max(r["per_rank"][i]["peak_rss_mib"] for r in reports)
     for key in ("render_ms", "prepare_ms"):
         out["imbalance"][key] = statistics.median(r["imbalance"][key] for r in reports)
     return out
@@ -136,7 +138,7 @@ def main():
     # p, a and s fitted over every N (median; least squares in 1/N). Composite: alpha-beta-gamma from the
     # ping-pong, nothing fitted, compared with the measured composite; pack (sort-last, local) from N = 1.
     C = args.cores
-    out = {"alpha_beta": a, "ping_pong": pp, "composite_probe": probe, "pixels": pixels, "cores": C, "runs": {},
+    out = {"schema": schema("distributed-model"), "alpha_beta": a, "ping_pong": pp, "composite_probe": probe, "pixels": pixels, "cores": C, "runs": {},
            "model": {}, "prediction": {}}
     rows = []
     for mode in ("sort-last", "sort-first"):
@@ -168,7 +170,7 @@ def main():
             rows.append((mode, n, r["frame_ms"], model_compute + model_pack + model_comp, meas_compute, model_compute,
                          max(p.get("pack_ms", 0) for p in r["per_rank"]), model_pack, meas_comp, model_comp,
                          r["imbalance"]["render_ms"], sum(p["bytes_sent"] for p in r["per_rank"]),
-                         max(p["records"] for p in r["per_rank"]), max(p["peak_rss_mb"] for p in r["per_rank"])))
+                         max(p["records"] for p in r["per_rank"]), max(p["peak_rss_mib"] for p in r["per_rank"])))
             out["runs"]["%s/%d" % (mode, n)] = r
 
     print("one-process render (no MPI): %.1f ms a frame, planned (--cu %d) %.1f ms (medians over rounds)" %

@@ -33,6 +33,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from hw_synth import LEN, ROOT, hw_sources, lane_param, throughput, unit_configs  # noqa: E402
+from report_schema import schema  # noqa: E402
 
 DEVICE, PACKAGE = "hx8k", "ct256"  # iCE40HX8K: 7 680 logic cells, the largest iCE40 nextpnr 0.4 knows but the UP5K's 5 280
 TARGET_MHZ = 100  # the timing-driven placer's goal; the achieved Fmax is what is reported
@@ -287,7 +288,7 @@ def main():
                 r["unit"], r["lanes"], r["arith"], "Fmax %.1f MHz (%.1f-%.1f)" % (r["fmax_mhz"], r["fmax_min"], r["fmax_max"])
                 if r["fits"] else "does not fit", r["luts"], r["carries"], r["ffs"]), flush=True)
     pixels, spans = add_throughput(rows, a)
-    result = dict(versions(), device="iCE40%s (%s)" % (DEVICE.upper(), PACKAGE), target_mhz=TARGET_MHZ,
+    result = dict(schema=schema("hw-pnr"), **versions(), device="iCE40%s (%s)" % (DEVICE.upper(), PACKAGE), target_mhz=TARGET_MHZ,
                   seeds=a.seeds, scene=os.path.basename(a.scene), pixels=pixels, spans=spans,
                   best=best_lanes(rows), rows=rows)
     with open(result_path, "w") as fh:

@@ -21,6 +21,8 @@ import subprocess
 import sys
 import tempfile
 
+from report_schema import schema
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 LEN = 13  # hw/'s span length bits
 
@@ -203,7 +205,7 @@ def main():
     pixels, spans = throughput(os.path.join(build, "parashade"), a.scene, rows)
     os.makedirs(a.out, exist_ok=True)
     with open(os.path.join(a.out, "hw-synthesis.json"), "w") as fh:
-        json.dump({"scene": os.path.basename(a.scene), "pixels": pixels, "spans": spans, "rows": rows}, fh, indent=1)
+        json.dump({"schema": schema("hw-synthesis"), "scene": os.path.basename(a.scene), "pixels": pixels, "spans": spans, "rows": rows}, fh, indent=1)
     lines = ["| unit | lanes | arith | adders: datapath + multiples (+ rounding, control) | sources' w(P) | FF bits | "
              "mux bits | gates | depth | %s pixels/clock |" % os.path.basename(a.scene).split(".")[0],
              "|---|---|---|---|---|---|---|---|---|---|"]

@@ -40,6 +40,7 @@ import sys
 import tempfile
 
 from render_report import render_report
+from report_schema import schema
 
 try:
     import numpy as np
@@ -332,7 +333,7 @@ def main():
             f.write(table)
     if a.json:
         with open(a.json, "w") as f:
-            json.dump(rows, f, indent=1)
+            json.dump({"schema": schema("mix-oracle"), "rows": rows}, f, indent=1)
 
 
 if __name__ == "__main__":

@@ -2,7 +2,7 @@
 """Peak resident memory of whole `parashade render` processes (--no-error, 3 frames, 1920x1080 unless
 --size), one process per scene and method (Gouraud and Phong unless --methods), measured by GNU time (%M,
 KiB). The process includes PoCL and its LLVM, the OpenCL buffers and the host's geometry. Writes JSON:
-{"schema": "parashade.memory/1", "rows": [{"scene", "method", "width", "height", "triangles", "peak_rss_mib",
+{"schema": "parashade.memory/2", "rows": [{"scene", "method", "width", "height", "triangles", "peak_rss_mib",
 "over_baseline_mib", "frame_bytes", "mesh_bytes", "budget_mib", "within_budget", "bands", "frame_ms"}],
 "baseline_mib", "command"}; the baseline is the peak of `parashade devices` (the OpenCL runtime alone).
 The budget of issue 16's target is 2 x (frame + mesh) + 64 MiB, with frame = width x height x 8 bytes
@@ -18,6 +18,8 @@ import os
 import subprocess
 import sys
 import tempfile
+
+from report_schema import schema
 
 MIB = 1024.0 * 1024.0
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -103,7 +105,7 @@ def main():
                   f"{r['mesh_bytes'] / MIB:.1f} mesh) + 64", file=sys.stderr)
         if r["within_budget"] is False:
             over.append(f"{r['scene']} {r['method']} ({r['over_baseline_mib']:.1f} > {r['budget_mib']:.1f} MiB)")
-    out = {"schema": "parashade.memory/1", "command": " ".join(sys.argv), "baseline_mib": baseline,
+    out = {"schema": schema("memory"), "command": " ".join(sys.argv), "baseline_mib": baseline,
            "baseline_note": "peak RSS of 'parashade devices' (OpenCL runtime, no frame)", "rows": rows}
     tmp_out = args.output + ".tmp"
     with open(tmp_out, "w") as f:

@@ -12,6 +12,7 @@ import os
 import tempfile
 
 from render_report import render_report
+from report_schema import schema
 
 VARIANTS = [
     ("exact", "exact"), ("slerp", "exact"), ("quadratic:exact", "exact"), ("quadratic:quad", "exact"),
@@ -54,7 +55,7 @@ def main():
                              "frame_ms": r["frame_ms"], "kernel_ms": r["stages_ms"]["kernel_ms"],
                              "exact_frame_ms": b["frame_ms"], "exact_kernel_ms": b["stages_ms"]["kernel_ms"],
                              "frame_ratio": b["frame_ratio"]["median"], "kernel_ratio": b["kernel_ratio"]["median"],
-                             "max_levels": m["max_abs"], "nmse": m["nmse"], "psnr_db": m["psnr_db"],
+                             "max_abs": m["max_abs"], "nmse": m["nmse"], "psnr_db": m["psnr_db"],
                              "fallback_spans": r["normalize"]["fallback_spans"], "span_setups": r["normalize"]["span_setups"]})
     print(f"Device: {device['name']} ({device['platform']}), {device['compute_units']} compute units; "
           f"median of {args.frames} frames after 1 warm-up; speed-up = exact time / variant time, the median of the pairs' "
@@ -64,11 +65,11 @@ def main():
     for r in rows:
         print(f"| {r['scene']} | {r['size']} | {r['normalize']} | {r['specular']} | {r['frame_ms']:.1f} ({r['exact_frame_ms']:.1f}) "
               f"| {r['kernel_ms']:.1f} ({r['exact_kernel_ms']:.1f}) "
-              f"| {r['frame_ratio']:.2f} / {r['kernel_ratio']:.2f} | {r['max_levels']:.1f} / {r['nmse']:.1e} / {r['psnr_db']:.1f} "
+              f"| {r['frame_ratio']:.2f} / {r['kernel_ratio']:.2f} | {r['max_abs']:.1f} / {r['nmse']:.1e} / {r['psnr_db']:.1f} "
               f"| {r['fallback_spans']} / {r['span_setups']} |")
     if args.json:
         with open(args.json, "w") as f:
-            json.dump({"device": device, "frames": args.frames, "rows": rows}, f, indent=1)
+            json.dump({"schema": schema("phong-methods"), "device": device, "frames": args.frames, "rows": rows}, f, indent=1)
 
 
 if __name__ == "__main__":

@@ -18,6 +18,8 @@ import subprocess
 import sys
 import tempfile
 
+from report_schema import schema
+
 STRATEGIES = ["round-robin", "lpt", "tiles", "dynamic"]
 
 
@@ -99,7 +101,7 @@ def main():
         print()
     if args.json:
         with open(args.json, "w") as f:
-            json.dump({"device": device, "size": args.size, "frames": args.frames, "rounds": args.rounds,
+            json.dump({"schema": schema("planner-sweep"), "device": device, "size": args.size, "frames": args.frames, "rounds": args.rounds,
                        "mismatches": mismatches,
                        "runs": [{"scene": s, "threads": th, "strategy": p, "units": u, "measurements": ms}
                                 for (s, th, p, u), ms in runs.items()]}, f, indent=1)

@@ -23,8 +23,8 @@ def main():
         if m["scene"] != args.scene:
             continue
         e = m["error_vs_exact_phong"]
-        rows.append(("--method " + m["method"].replace("@", " --max-error "), m["speedup_vs_phong_frame"],
-                     m["speedup_vs_phong_kernel"], m["frame_ms"], e["nmse"], e["psnr_db"], e["max_abs"],
+        rows.append(("--method " + m["method"].replace("@", " --max-error "), m["frame_ratio"],
+                     m["kernel_ratio"], m["frame_ms"], e["nmse"], e["psnr_db"], e["max_abs"],
                      m["error_vs_phong"]["max_abs"]))
     with open(os.path.join(args.results, "phong-methods.json")) as f:
         variants = json.load(f)
@@ -32,7 +32,7 @@ def main():
         if r["scene"] != args.scene or (r["normalize"] == "exact" and r["specular"] == "exact"):
             continue
         rows.append((f"--method phong --normalize {r['normalize']} --specular {r['specular']}", r["frame_ratio"],
-                     r["kernel_ratio"], r["frame_ms"], r["nmse"], r["psnr_db"], r["max_levels"], None))
+                     r["kernel_ratio"], r["frame_ms"], r["nmse"], r["psnr_db"], r["max_abs"], None))
     rows.sort(key=lambda row: -row[1])
     device = combined["device"]
     print(f"{args.scene}, {device['name']} ({device['compute_units']} compute units). Speed-up: frame (kernel) time of "

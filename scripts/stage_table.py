@@ -20,6 +20,8 @@ import subprocess
 import sys
 import tempfile
 
+from report_schema import schema
+
 STAGES = ["geometry_ms", "setup_ms", "binning_ms", "kernel_ms", "readback_ms", "total_ms"]
 SPHERES = {"sphere_8k": (64, 65), "sphere_131k": (256, 257), "sphere_2m": (1024, 1025)}
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -82,7 +84,7 @@ def main():
         print(f"| {r['scene']} | {r['method']} | " + " | ".join(cells) + " |")
     if args.json:
         with open(args.json, "w") as f:
-            json.dump({"before": args.before, "after": args.after, "frames": args.frames, "rounds": args.rounds,
+            json.dump({"schema": schema("stages"), "before": args.before, "after": args.after, "frames": args.frames, "rounds": args.rounds,
                        "size": args.size, "rows": rows}, f, indent=1)
 
 

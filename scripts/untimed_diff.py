@@ -16,7 +16,7 @@ import re
 import sys
 
 # Keys whose values depend on the run (time, speed, load, memory, who and when), by name.
-TIMED = re.compile(r"(_ms|_s|_ns|ms$|time|per_s|fps|speed|ratio|load|created|command|git_hash|version|samples|"
+TIMED = re.compile(r"(_ms|_s|_ns|ms$|time|per_s|fps|speed|ratio|load|created|command|git_hash|dirty|version|samples|"
                    r"iterations|repetition|rss|peak|mib|date|host|seconds|stddev|mean|median|min$|max$|cv$|"
                    r"frame_ratio|kernel_ratio|objective|threads|run_name|family_index|instance|aggregate|"
                    r"cpu|mhz|caches|executable|library|num_|best|variant|study|frames|warmup|pixel_per|"

@@ -72,7 +72,7 @@ nlohmann::json to_json(const PlanReport& r) {
     units.push_back({{"triangles", l.triangles}, {"spans", l.spans}, {"pixels", l.pixels}, {"clocks", l.clocks}});
   return {{"partition", partition_name(r.partition)},
           {"units", r.units},
-          {"tile_size", r.tile_size},
+          {"tile", r.tile_size},
           {"batch", r.batch},
           {"setup_clocks", r.setup_clocks},
           {"modeled_frame_clocks", r.frame_clocks()},

@@ -66,7 +66,7 @@ struct Config {
   ErrorMetrics ideal, exact;
   nlohmann::json ideal_json, exact_json;  // as the report has them (from another rank with --mpi)
   std::vector<double> total_ms, kernel_ms;
-  double frame_ms = 0, kernel_med_ms = 0, frame_min_ms = 0, kernel_min_ms = 0;
+  double frame_ms = 0, kernel_med_ms = 0, kernel_min_ms = 0;
   const Config* classic = nullptr;  // classic in the same arithmetic, when it is in the list
   std::string name() const { return unit_name(unit); }
 };
@@ -274,8 +274,6 @@ nlohmann::json scaling_report(const ScalingArgs& a, const ResolvedRender& base, 
                     {"pixels_per_clock", pixels_per_clock(c.clocks)},
                     {"modeled_speedup", optional_number(modeled_speedup(c))},
                     {"frame_ms", c.frame_ms},
-                    {"frame_ms_min", c.frame_min_ms},
-                    {"frame_ms_samples", c.total_ms},
                     {"timing", timing_json(c.total_ms, a.warmup)},
                     {"measured_speedup", optional_number(measured_speedup(c))},
                     {"kernel_ms", c.kernel_med_ms},
@@ -382,7 +380,6 @@ int run_scaling(const ScalingArgs& a) {
   for (Config& c : configs) {
     c.frame_ms = median(c.total_ms);
     c.kernel_med_ms = median(c.kernel_ms);
-    c.frame_min_ms = *std::min_element(c.total_ms.begin(), c.total_ms.end());
     c.kernel_min_ms = *std::min_element(c.kernel_ms.begin(), c.kernel_ms.end());
   }
   const nlohmann::json report = scaling_report(a, *base, configs);

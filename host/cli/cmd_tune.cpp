@@ -83,11 +83,10 @@ nlohmann::json result_json(const Result& r) {
           {"params", r.params},
           {"cached", r.cached},
           {"verified", r.m.verified},
-          {"max_error", r.m.max_error},
+          {"max_abs", r.m.max_error},
           {"nmse", number_or_null(r.m.nmse)},
           {"within_budget", r.within_budget},
           {"frame_ms", r.m.objective},
-          {"frame_ms_samples", r.m.times},
           {"timing", timing_json(r.m.times, 1)},
           {"compile_ms", r.compile_ms},
           {"verify_ms", r.verify_ms},
@@ -101,11 +100,11 @@ Result result_from_json(const nlohmann::json& j, std::size_t point) {
   r.params = j.at("params");
   r.cached = j.at("cached");
   r.m.verified = j.at("verified");
-  r.m.max_error = j.at("max_error");
+  r.m.max_error = j.at("max_abs");
   r.m.nmse = j.at("nmse").is_null() ? std::numeric_limits<double>::infinity() : j.at("nmse").get<double>();
   r.within_budget = j.at("within_budget");
   r.m.objective = j.at("frame_ms");
-  r.m.times = j.at("frame_ms_samples").get<std::vector<double>>();
+  r.m.times = j.at("timing").at("samples_ms").get<std::vector<double>>();
   r.compile_ms = j.at("compile_ms");
   r.verify_ms = j.at("verify_ms");
   r.timestamp = j.at("timestamp");

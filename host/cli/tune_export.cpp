@@ -20,6 +20,12 @@ std::string key_of(const nlohmann::json& params, const std::vector<std::string>&
   return key;
 }
 
+// A candidate's timed frames (the tune report's timing.samples_ms), none for no candidate.
+std::vector<double> samples_of(const nlohmann::json& c) {
+  if (c.is_null()) return {};
+  return c.value("timing", nlohmann::json::object()).value("samples_ms", std::vector<double>{});
+}
+
 std::string status_of(const ExportPoint& p) {
   if (p.restricted) return "restricted";
   if (p.candidate.is_null()) return "not_measured";
@@ -57,7 +63,7 @@ nlohmann::ordered_json entry_of(const std::vector<std::string>& names, const nlo
   const nlohmann::json none;
   const nlohmann::json& c = p ? p->candidate : none;
   const std::string status = p ? status_of(*p) : "not_a_point";
-  const std::vector<double> times = c.is_null() ? std::vector<double>{} : c.value("frame_ms_samples", std::vector<double>{});
+  const std::vector<double> times = samples_of(c);
   e["time"] = status == "measured" ? nlohmann::ordered_json(c["frame_ms"]) : nlohmann::ordered_json(kInvalid);
   e["times"] = times;
   e["compile_time"] = c.is_null() ? 0.0 : c.value("compile_ms", 0.0);
@@ -69,8 +75,11 @@ nlohmann::ordered_json entry_of(const std::vector<std::string>& names, const nlo
   if (status != "measured") e["__error__"] = kInvalid;
   e["status"] = status;
   // parashade's own observables: an error budget is not Kernel Tuner's, so they are kept beside its fields.
-  for (const char* k : {"verified", "max_error", "nmse", "within_budget"})
-    e[k] = c.is_null() ? nlohmann::ordered_json() : nlohmann::ordered_json(c.value(k, nlohmann::json()));
+  // The report's max_abs under the export's own name, max_error.
+  static const std::pair<const char*, const char*> kOwn[] = {
+      {"verified", "verified"}, {"max_error", "max_abs"}, {"nmse", "nmse"}, {"within_budget", "within_budget"}};
+  for (const auto& [k, from] : kOwn)
+    e[k] = c.is_null() ? nlohmann::ordered_json() : nlohmann::ordered_json(c.value(from, nlohmann::json()));
   return e;
 }
 
@@ -120,14 +129,14 @@ nlohmann::ordered_json t4_results(const std::vector<ExportPoint>& points) {
   for (const ExportPoint& p : points) {
     if (p.candidate.is_null()) continue;
     const nlohmann::json& c = p.candidate;
-    const std::vector<double> times = c.value("frame_ms_samples", std::vector<double>{});
+    const std::vector<double> times = samples_of(c);
     const bool correct = status_of(p) == "measured";
     nlohmann::ordered_json configuration = nlohmann::ordered_json::object();  // in the space's order
     for (const std::string& n : tune_param_names())
       if (p.params.contains(n)) configuration[n] = p.params[n];
     nlohmann::ordered_json measurements = {
         {{"name", "time"}, {"value", c["frame_ms"]}, {"unit", "ms"}},
-        {{"name", "max_error"}, {"value", c["max_error"]}, {"unit", "levels"}}};
+        {{"name", "max_error"}, {"value", c["max_abs"]}, {"unit", "levels"}}};
     if (c["nmse"].is_number()) measurements.push_back({{"name", "nmse"}, {"value", c["nmse"]}, {"unit", ""}});
     results.push_back({{"timestamp", c.value("timestamp", std::string())},
                        {"configuration", configuration},

@@ -20,8 +20,8 @@ namespace parashade::cli {
 // A point of the searched space as the export sees it.
 struct ExportPoint {
   nlohmann::json params;     // point_params: every parameter by name, "-" where the point does not read it
-  nlohmann::json candidate;  // its result in the tune report's form (params, frame_ms, frame_ms_samples,
-                             // compile_ms, verify_ms, timestamp, verified, max_error, nmse, within_budget), or null
+  nlohmann::json candidate;  // its result in the tune report's form (params, frame_ms, timing.samples_ms,
+                             // compile_ms, verify_ms, timestamp, verified, max_abs, nmse, within_budget), or null
   bool restricted = false;   // excluded by --restrict (never measured)
 };
 

@@ -38,7 +38,7 @@ KeyPixel key_pixel(const std::vector<char>& buf, std::size_t p, int bytes) {
 
 constexpr int kFigures = sizeof(RankFigures) / sizeof(double);
 
-double peak_rss_mb() {
+double peak_rss_mib() {
   std::ifstream in("/proc/self/status");
   std::string line;
   while (std::getline(in, line))
@@ -203,10 +203,10 @@ class RankRun {
     MPI_Op_free(&min_op_);
     MPI_Type_free(&pixel_type_);
     if (sort_last_ && rank_ == 0) unpack_composite();
-    double peak = peak_rss_mb();
-    figures_.peak_rss_mb.resize(rank_ == 0 ? n_ : 0);
+    double peak = peak_rss_mib();
+    figures_.peak_rss_mib.resize(rank_ == 0 ? n_ : 0);
     mpi_.collective([&] {
-      MPI_Gather(&peak, 1, MPI_DOUBLE, figures_.peak_rss_mb.data(), 1, MPI_DOUBLE, 0, mpi_.comm);
+      MPI_Gather(&peak, 1, MPI_DOUBLE, figures_.peak_rss_mib.data(), 1, MPI_DOUBLE, 0, mpi_.comm);
     });
     // Rank 0 writes the outputs; the others wait for its word.
     mpi_.step([&] {

@@ -19,6 +19,16 @@ std::vector<std::string>& command_line() {
   return args;
 }
 
+// The build: the commit as a bare hash, and whether the working tree had uncommitted changes beside it
+// (git_hash.cmake appends "-dirty"), so that a reader never has to parse the hash.
+nlohmann::json build_json() {
+  const std::string hash = parashade::git_hash, suffix = "-dirty";
+  const bool dirty = hash.size() > suffix.size() && hash.compare(hash.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return {{"version", parashade::version},
+          {"git_hash", dirty ? hash.substr(0, hash.size() - suffix.size()) : hash},
+          {"dirty", dirty}};
+}
+
 }  // namespace
 
 std::string utc_now_iso8601() {
@@ -48,7 +58,7 @@ nlohmann::json& stamp_report(nlohmann::json& report, const std::string& kind, in
   const double load = host_load_1min();
   const nlohmann::json header = {
       {"schema", "parashade." + kind + "/" + std::to_string(version)},
-      {"parashade", {{"version", parashade::version}, {"git_hash", parashade::git_hash}}},
+      {"parashade", build_json()},
       {"created_utc", utc_now_iso8601()},
       {"command_line", report_command_line()},
       {"host", {{"load_1min", load >= 0 ? nlohmann::json(load) : nlohmann::json(nullptr)}}}};

@@ -63,7 +63,7 @@ void shading_keys(const RenderResult& r, nlohmann::json& report) {
                          {"fallback_spans", r.stats.normalize_fallback_spans},
                          {"sequential_steps", r.stats.normalize_sequential_steps}};
   if (o.method != Method::combined) return;
-  if (o.combined.automatic) report["max_error_levels"] = o.combined.max_error;
+  if (o.combined.automatic) report["max_error"] = o.combined.max_error;
   report["combined_min_width"] = combined_min_width(o.combined);
   report["highlight_test"] = uses_highlight_mask(o.combined);
   report["triangle_choice_rule"] = triangle_rule_name(o.combined);
@@ -96,7 +96,7 @@ nlohmann::json one_device_report(const RenderResult& r, const std::filesystem::p
   nlohmann::json report = common_keys(r, image);
   const double ms = r.medians.total_ms, pixels = double(r.width) * r.height;
   report["device"] = to_json(r.devices.front());
-  report["tile_size"] = r.options.tile_size;
+  report["tile"] = r.options.tile_size;
   report["band_mib"] = band_mib(r);
   report["tuned"] = r.tuned;
   report["work_items"] = r.work_items;
@@ -140,7 +140,7 @@ nlohmann::json rank_json(const DistributedFigures& d, const RankFigures& f, int 
   nlohmann::json j = {{"rank", rank},           {"records", f.records},           {"record_bytes", f.record_bytes},
                       {"pixels", f.pixels},     {"prepare_ms", f.prepare_ms},     {"render_ms", f.render_ms},
                       {"rank_frame_ms", f.frame_ms}, {"composite_ms", f.composite_ms}, {"gather_ms", f.gather_ms},
-                      {"pack_ms", f.pack_ms},   {"bytes_sent", f.bytes_sent},     {"peak_rss_mb", d.peak_rss_mb[rank]}};
+                      {"pack_ms", f.pack_ms},   {"bytes_sent", f.bytes_sent},     {"peak_rss_mib", d.peak_rss_mib[rank]}};
   if (d.mode == Distribute::sort_last) {
     j["faces"] = f.faces;
     j["won_pixels"] = f.won_pixels;
@@ -168,9 +168,8 @@ nlohmann::json distributed_report(const RenderResult& r, const std::filesystem::
   report["threads_per_rank"] = d.threads_per_rank;
   report["device"] = to_json(r.devices.front());
   report["method"] = method_name(r.options.method);
-  report["tile_size"] = r.options.tile_size;
+  report["tile"] = r.options.tile_size;
   report["faces"] = d.faces;
-  report["frame_ms_samples"] = r.frame_ms;
   report["read_scene"] = d.scatter_scene ? "rank-0" : "every-rank";
   report["float_output"] = r.options.float_output;
   report["frame_ms_note"] = frame_ms_note(r.frames, r.warmup, "frames",

@@ -121,7 +121,7 @@ void print_distributed(const RenderResult& r, std::FILE* out) {
                d.threads_per_rank);
   std::fprintf(out, "frame: %.3f ms (median of %d after %d warm-up, barrier to barrier)\n", median(r.frame_ms), r.frames,
                r.warmup);
-  std::fprintf(out, "rank  %s  records  pixels  prepare_ms  render_ms  composite_ms  bytes_sent  peak_rss_mb\n",
+  std::fprintf(out, "rank  %s  records  pixels  prepare_ms  render_ms  composite_ms  bytes_sent  peak_rss_mib\n",
                sort_last ? "faces" : "band ");
   const std::vector<RankFigures> m = d.rank_medians();
   std::vector<double> render, prepare;
@@ -130,7 +130,7 @@ void print_distributed(const RenderResult& r, std::FILE* out) {
     const std::string share = sort_last ? std::to_string((long long)f.faces)
                                         : std::to_string(int(f.band_first)) + "+" + std::to_string(int(f.band_rows));
     std::fprintf(out, "%4d  %s  %7.0f  %6.0f  %10.3f  %9.3f  %12.3f  %10.0f  %11.1f\n", k, share.c_str(), f.records,
-                 f.pixels, f.prepare_ms, f.render_ms, f.composite_ms, f.bytes_sent, d.peak_rss_mb[k]);
+                 f.pixels, f.prepare_ms, f.render_ms, f.composite_ms, f.bytes_sent, d.peak_rss_mib[k]);
     render.push_back(f.render_ms), prepare.push_back(f.prepare_ms);
   }
   const auto imbalance = [](const std::vector<double>& v) {

@@ -59,7 +59,7 @@ struct DistributedFigures {
   Partition rank_partition = Partition::lpt;
   double planning_ms = 0;        // sort-last: faces to ranks, on rank 0
   std::vector<std::vector<RankFigures>> frames;  // per timed frame, every rank's
-  std::vector<double> peak_rss_mb;               // per rank
+  std::vector<double> peak_rss_mib;               // per rank
   // Per rank, the median over the timed frames of each figure (sort-first: the last frame's band).
   std::vector<RankFigures> rank_medians() const;
 };

@@ -13,11 +13,15 @@ namespace parashade {
 void set_report_command_line(int argc, const char* const* argv);
 const std::vector<std::string>& report_command_line();
 
-// Adds the header to `report`: "schema": "parashade.<kind>/<version>", "parashade": {version, git_hash},
+// The format version every report kind carries (docs/reports.md): raised, for all kinds at once, when a key
+// is renamed, removed or changes meaning. 2: one name per quantity (CHANGELOG).
+constexpr int kReportVersion = 2;
+
+// Adds the header to `report`: "schema": "parashade.<kind>/<version>", "parashade": {version, git_hash, dirty},
 // "created_utc" (ISO 8601), "command_line" (array), "host": {"load_1min"} (null where /proc/loadavg is
 // unreadable). Keys the body already has are not overwritten (a body may not take a header key).
-nlohmann::json& stamp_report(nlohmann::json& report, const std::string& kind, int version = 1);
-// `body` stamped as parashade.<kind>/1, as the text a report file holds.
+nlohmann::json& stamp_report(nlohmann::json& report, const std::string& kind, int version = kReportVersion);
+// `body` stamped as parashade.<kind>/<kReportVersion>, as the text a report file holds.
 std::string report_text(nlohmann::json body, const std::string& kind);
 
 // Now, UTC, as 2026-12-02T22:10:00Z (the header's created_utc).

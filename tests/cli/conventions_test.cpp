@@ -58,7 +58,7 @@ TEST_F(CliTest, RenderReportIsSelfDescribing) {
   ASSERT_TRUE(succeeds(run_parashade({"render", scene.string(), "-o", image().string(), "--report", report().string(),
                                       "--frames", "3", "--warmup", "1", "-q", "--no-error", "--no-tuned"})));
   const nlohmann::json rep = read_report();
-  EXPECT_EQ(field(rep, "/schema"), "parashade.render/1");
+  EXPECT_EQ(field(rep, "/schema"), "parashade.render/2");
   EXPECT_TRUE(std::regex_match(field(rep, "/created_utc").get<std::string>(),
                                std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)")));
   EXPECT_FALSE(field(rep, "/parashade/version").get<std::string>().empty());

@@ -18,7 +18,7 @@ class CliDefaultTile : public CliTest {
   int tile_of(const std::filesystem::path& scene, std::vector<std::string> options) {
     options.push_back("--no-tuned");
     EXPECT_TRUE(succeeds(render(scene, options)));
-    return read_report()["tile_size"].get<int>();
+    return read_report()["tile"].get<int>();
   }
 };
 

@@ -28,7 +28,7 @@ class CliDeferralReport : public CliTest {
 TEST_F(CliDeferralReport, DefaultsPerMethod) {
   EXPECT_EQ(report_of({"--method", "phong"})["defer_min_triangles"], 0) << "Phong defers every tile by default";
   const nlohmann::json combined = report_of({"--method", "combined:0", "--tile", "32"});
-  EXPECT_EQ(combined["tile_size"], 32);
+  EXPECT_EQ(combined["tile"], 32);
   EXPECT_EQ(combined["defer_min_triangles"], 32 * 32 / 16);
   EXPECT_EQ(report_of({"--method", "combined:2", "--tile", "16"})["defer_min_triangles"], 16 * 16 / 16);
 }

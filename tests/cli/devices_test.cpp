@@ -30,7 +30,7 @@ nlohmann::json device_list() {
   }
   std::error_code ignored;
   std::filesystem::remove(file, ignored);
-  EXPECT_EQ(report.value("schema", ""), "parashade.devices/1") << r;
+  EXPECT_EQ(report.value("schema", ""), "parashade.devices/2") << r;
   const nlohmann::json list = report.is_object() ? report.value("devices", nlohmann::json()) : nlohmann::json();
   EXPECT_TRUE(list.is_array()) << "devices --report has no \"devices\" array:" << r;
   return list.is_array() ? list : nlohmann::json::array();

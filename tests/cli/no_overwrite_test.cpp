@@ -140,7 +140,7 @@ TEST_F(CliNoOverwrite, ALinkIsWrittenThrough) {
   ASSERT_TRUE(succeeds(run_parashade(render_to({"--report", link.string()}))));
   EXPECT_TRUE(fs::is_symlink(link)) << "the link was replaced by a file";
   EXPECT_NE(bytes_of(target), "old") << "the link's target was not written";
-  EXPECT_EQ(nlohmann::json::parse(bytes_of(target))["schema"], "parashade.render/1");
+  EXPECT_EQ(nlohmann::json::parse(bytes_of(target))["schema"], "parashade.render/2");
 }
 
 }  // namespace

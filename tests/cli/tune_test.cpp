@@ -175,7 +175,7 @@ TEST_F(CliTune, RenderWithGivesTheBestsParameters) {
   flags.push_back("--no-tuned");
   ASSERT_TRUE(succeeds(render(scene_, flags))) << r.out;
   const nlohmann::json rep = read_report();
-  EXPECT_EQ(rep["tile_size"], best["tile"]);
+  EXPECT_EQ(rep["tile"], best["tile"]);
   // The report's work-items are the kernel's: at most one per tile (this frame has 4 tiles of 32).
   const auto wi = std::find(flags.begin(), flags.end(), "--work-items");
   ASSERT_NE(wi, flags.end());
@@ -249,7 +249,7 @@ TEST_F(CliTune, AnErrorBudgetChoosesTheExactMethodOverTheFastOneThatMissesIt) {
   ASSERT_EQ(field(rep, "/candidates").size(), 2u) << rep.dump(2);
   for (const auto& c : rep["candidates"]) {
     const bool is_gouraud = c["params"]["method"] == "gouraud";
-    EXPECT_NEAR(c["max_error"].get<double>(), is_gouraud ? gouraud : phong, 1e-9) << c.dump();
+    EXPECT_NEAR(c["max_abs"].get<double>(), is_gouraud ? gouraud : phong, 1e-9) << c.dump();
     EXPECT_EQ(c["within_budget"], !is_gouraud) << c.dump();
     EXPECT_TRUE(c["verified"].get<bool>()) << c.dump();
   }
@@ -454,7 +454,10 @@ TEST_F(CliTune, KernelTunerExportHoldsEveryPointOfItsTuneParams) {
                           "framework_time", "timestamp"})
       EXPECT_TRUE(e.contains(f)) << key << " lacks " << f;
     EXPECT_EQ(e["time"], c["frame_ms"]);
-    EXPECT_EQ(e["times"], c["frame_ms_samples"]);
+    // The report's names (report format 2) under the export's own: every timed frame, the measured error.
+    EXPECT_EQ(e["times"], c["timing"]["samples_ms"]) << key;
+    EXPECT_FALSE(e["times"].empty()) << key;
+    EXPECT_EQ(e["max_error"], c["max_abs"]) << key;
     for (const std::string& n : keys) EXPECT_EQ(e[n], c["params"][n]) << key;
   }
 }
@@ -529,7 +532,7 @@ TEST_F(CliTune, TheParetoObjectivePrintsAndReportsTheSpeedErrorFront) {
   // Each point of the front is beaten on both time and error by no candidate; each candidate off it is
   // beaten by one on it; fastest first (every candidate here is verified: the layouts keep the image).
   const auto beats = [](const nlohmann::json& a, const nlohmann::json& b) {
-    const double ta = a["frame_ms"], tb = b["frame_ms"], ea = a["max_error"], eb = b["max_error"];
+    const double ta = a["frame_ms"], tb = b["frame_ms"], ea = a["max_abs"], eb = b["max_abs"];
     return ta <= tb && ea <= eb && (ta < tb || ea < eb);
   };
   for (const auto& f : front)

@@ -4,7 +4,12 @@ validates against its schema in schemas/; every scene in scenes/ validates again
 and the schemas are strict enough to fail: a report without any one of its required keys, or a scene with
 an unknown key, does not validate.
 
-    schema_test.py PARASHADE SOURCE_DIR [MPIEXEC]
+    schema_test.py PARASHADE SOURCE_DIR [MPIEXEC] [BENCH_DIR]
+
+With BENCH_DIR (the build's bench/), the bench tools' files too: bench_host_noise, bench_kernel_ab and
+bench_peer_pairs --json and a Google Benchmark program's --benchmark_out; and scripts/peak_memory.py's file
+(with GNU time). The other scripts' kinds are checked on the committed results (results_test.py) and by
+the Scripts.* tests that run those scripts.
 """
 import copy
 import glob
@@ -13,17 +18,19 @@ import os
 import subprocess
 import sys
 import tempfile
-import warnings
 
-try:
-    import jsonschema
-except ImportError:
-    sys.exit("schema_test: python3-jsonschema is not installed (scripts/install-deps.sh installs it)")
+from schema_store import errors, load
+from schema_store import validator as store_validator
 
 PARASHADE, SOURCE = sys.argv[1], sys.argv[2]
 MPIEXEC = sys.argv[3] if len(sys.argv) > 3 and sys.argv[3] else None
+BENCH = sys.argv[4] if len(sys.argv) > 4 and sys.argv[4] else None
+# Kinds the scripts write, checked elsewhere (see above).
+SCRIPT_KINDS = {"combined-study", "phong-methods", "best-method", "mix-oracle", "distributed-model", "hw-synthesis",
+                "stages", "planner-sweep"}
 SCHEMAS = os.path.join(SOURCE, "schemas")
 failures = []
+skipped = set()  # kinds whose writer is not built here
 
 
 def check(cond, what):
@@ -32,38 +39,8 @@ def check(cond, what):
         print("FAIL: " + what, flush=True)
 
 
-def load(path):
-    with open(path) as f:
-        return json.load(f)
-
-
 def validator(name):
-    """Draft 2020-12 validator for schemas/NAME.schema.json, its references (common.schema.json) resolved
-    from the folder: through `referencing` where jsonschema has it (4.18 and later), else RefResolver
-    (Debian bookworm's 4.10)."""
-    schemas = []
-    for path in glob.glob(os.path.join(SCHEMAS, "*.schema.json")):
-        s = load(path)
-        jsonschema.Draft202012Validator.check_schema(s)
-        schemas.append(s)
-    schema = load(os.path.join(SCHEMAS, name + ".schema.json"))
-    try:
-        from referencing import Registry, Resource
-        from referencing.jsonschema import DRAFT202012
-    except ImportError:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", DeprecationWarning)
-            resolver = jsonschema.RefResolver.from_schema(schema, store={s["$id"]: s for s in schemas})
-            return jsonschema.Draft202012Validator(schema, resolver=resolver)
-    registry = Registry().with_resources(
-        (s["$id"], Resource.from_contents(s, default_specification=DRAFT202012)) for s in schemas)
-    return jsonschema.Draft202012Validator(schema, registry=registry)
-
-
-def errors(v, doc):
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", DeprecationWarning)
-        return [e.message for e in v.iter_errors(doc)]
+    return store_validator(SCHEMAS, name)
 
 
 def required_keys(v):
@@ -79,7 +56,7 @@ def run(args, cmd_prefix=()):
     return p
 
 
-def validate_file(kind, path, breakers):
+def validate_tune_file(kind, path, breakers):
     """A file that is not a report (no header): it validates against schemas/KIND.schema.json, and each of
     `breakers` (what: doc -> broken copy) makes it fail."""
     doc, v = validated(kind, path, "file")
@@ -102,11 +79,11 @@ def validate_tune_files(cache_path, kt_path):
         e["time"] = 1.0
         return doc
 
-    validate_file("tune-cache", cache_path, {
+    validate_tune_file("tune-cache", cache_path, {
         "an entry without its objective": lambda d: (first(d["entries"]).pop("objective"), d)[1],
         "a tile of 17 pixels": lambda d: (first(d["entries"])["params"].update(tile=17), d)[1],
         "a string for max_error": lambda d: (first(d["entries"]).update(max_error="1"), d)[1]})
-    validate_file("kernel-tuner-cache", kt_path, {
+    validate_tune_file("kernel-tuner-cache", kt_path, {
         "an entry without its status": lambda d: (first(d["cache"]).pop("status"), d)[1],
         "an invalid entry with a time": invalid_but_timed,
         "another objective": lambda d: dict(d, objective="energy")})
@@ -128,7 +105,7 @@ def validate_report(kind, path):
     doc, v = validated(kind, path, "report")
     if doc is None:
         return
-    check(doc.get("schema") == "parashade.%s/1" % kind, "%s report's schema is %r" % (kind, doc.get("schema")))
+    check(doc.get("schema") == "parashade.%s/2" % kind, "%s report's schema is %r" % (kind, doc.get("schema")))
     # Strict enough to fail: without any one required key, or with the wrong kind, it must not validate.
     for key in required_keys(v):
         broken = copy.deepcopy(doc)
@@ -141,6 +118,58 @@ def validate_report(kind, path):
         del broken["timing"]["stddev_ms"]
         check(errors(v, broken), "%s report whose timing lacks stddev_ms still validates" % kind)
     print("ok: %s (%d required keys each shown to be needed)" % (kind, len(required_keys(v))), flush=True)
+
+
+def validate_file(kind, path):
+    """A bench tool's or script's file: it validates, names its kind at the current version, and does not
+    validate without any one of its required keys."""
+    if not os.path.exists(path):
+        check(False, "%s: no file written at %s" % (kind, path))
+        return
+    doc = load(path)
+    v = validator(kind)
+    check(not errors(v, doc), "%s file does not validate: %s" % (kind, errors(v, doc)[:5]))
+    holder = doc["context"] if kind == "benchmark" else doc
+    check(holder.get("schema") == "parashade.%s/2" % kind, "%s file's schema is %r" % (kind, holder.get("schema")))
+    for key in v.schema.get("required", []):
+        broken = copy.deepcopy(doc)
+        broken.pop(key, None)
+        check(errors(v, broken), "%s file without '%s' still validates" % (kind, key))
+    print("ok: %s" % kind, flush=True)
+
+
+def tool_files(scene, out):
+    """The bench tools' and peak_memory.py's files, written for real on a small frame."""
+    def tool(name, kind, args):
+        exe = os.path.join(BENCH, name)
+        if not os.path.exists(exe):
+            print("skipped: %s (not built)" % name)
+            skipped.add(kind)
+            return False
+        p = subprocess.run([exe] + args, capture_output=True, text=True, timeout=300)
+        check(p.returncode == 0, "%s %s: exit %d\n%s" % (name, " ".join(args), p.returncode, p.stderr[-2000:]))
+        return p.returncode == 0
+    if tool("bench_host_noise", "host-noise", ["--seconds", "0.2", "--json", out("host-noise.json")]):
+        validate_file("host-noise", out("host-noise.json"))
+    if tool("bench_kernel_ab", "kernel-ab", [scene, "--size", "64x48", "--pairs", "2", "--b", "-D PREFETCH_AHEAD=2",
+                                "--json", out("kernel-ab.json")]):
+        validate_file("kernel-ab", out("kernel-ab.json"))
+    if tool("bench_peer_pairs", "peer-pairs", ["--scenes", "sphere_8k", "--methods", "gouraud", "--size", "64x48", "--pairs", "2",
+                                 "--json", out("peer-pairs.json")]):
+        validate_file("peer-pairs", out("peer-pairs.json"))
+    if tool("bench_host_stages", "benchmark", ["--benchmark_filter=^host/sphere_8k/gouraud/", "--benchmark_min_time=0.01",
+                                  "--benchmark_out=" + out("benchmark.json"), "--benchmark_out_format=json"]):
+        validate_file("benchmark", out("benchmark.json"))
+    if os.path.exists("/usr/bin/time"):
+        p = subprocess.run([sys.executable, os.path.abspath(os.path.join(SOURCE, "scripts", "peak_memory.py")),
+                            "--binary", os.path.abspath(PARASHADE), "--scenes", "sphere_8k", "--methods", "gouraud",
+                            "--size", "64x48", "-o", out("memory.json")],
+                           capture_output=True, text=True, timeout=300, cwd=os.path.abspath(SOURCE))
+        check(p.returncode == 0, "peak_memory.py: exit %d\n%s" % (p.returncode, p.stderr[-2000:]))
+        validate_file("memory", out("memory.json"))
+    else:
+        print("skipped: memory (no GNU time at /usr/bin/time)")
+        skipped.add("memory")
 
 
 def flip_reports(scene, small, out):
@@ -212,11 +241,14 @@ def run_all(tmp):
     run(["compare", out("r.png"), out("r.png"), "--report", out("compare.json")])
     validate_report("compare", out("compare.json"))
     flip_reports(scene, small, out)
+    if BENCH:
+        tool_files(scene, out)
 
     # Every schema file is a report kind this test wrote (or the scene or common schema): none unchecked.
     kinds = {os.path.basename(p)[: -len(".schema.json")] for p in glob.glob(os.path.join(SCHEMAS, "*.schema.json"))}
     written = {os.path.basename(p)[:-5] for p in glob.glob(os.path.join(tmp, "*.json"))}
-    unchecked = kinds - written - {"scene", "common"} - (set() if MPIEXEC else {"render-distributed"})
+    unchecked = (kinds - written - {"scene", "common"} - SCRIPT_KINDS - (set() if MPIEXEC else {"render-distributed"})
+                 - (set() if BENCH else {"host-noise", "kernel-ab", "peer-pairs", "benchmark", "memory"}) - skipped)
     check(not unchecked, "schemas without a report in this test: %s" % sorted(unchecked))
 
     # Scenes: every committed scene validates; an unknown key, a missing "objects", a light without its

@@ -12,6 +12,9 @@ import tempfile
 
 from checks import check, finish, load_script
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "schema"))
+from schema_store import errors, validator  # noqa: E402  (tests/schema: the schemas as validators)
+
 SOURCE, BINARY = sys.argv[1], sys.argv[2]
 study = load_script(SOURCE, "combined_study")
 
@@ -56,11 +59,13 @@ with tempfile.TemporaryDirectory() as tmp:
     check(proc.returncode == 0, "the in-process study failed: %s" % proc.stderr[-2000:])
     if proc.returncode == 0:
         doc = json.load(open(out))
+        errs = errors(validator(os.path.join(SOURCE, "schemas"), "combined-study"), doc)
+        check(not errs, "the study's file does not validate against combined-study.schema.json: %s" % errs[:3])
         check(doc.get("pairing") == "in-process", "pairing not recorded: %r" % doc.get("pairing"))
         rows = {m["method"]: m for m in doc["measurements"]}
         check("--against phong" in rows["gouraud"]["command"], "Gouraud not rendered against Phong: " + rows["gouraud"]["command"])
         check("--against" not in rows["phong"]["command"], "Phong rendered against itself")
-        check(rows["combined:0@16 --triangle-choice bound"].get("ceiling_vs_phong_frame") is not None,
+        check(rows["combined:0@16 --triangle-choice bound"].get("ceiling_frame_ratio") is not None,
               "no ceiling with in-process pairs")
         check("alternating with its own in one process" in proc.stdout, "the table does not say where its ratios come from")
 
@@ -74,10 +79,10 @@ with tempfile.TemporaryDirectory() as tmp:
     if proc.returncode == 0:
         rows = {m["method"]: m for m in json.load(open(out))["measurements"]}
         mixed = rows.get("combined:0@16 --triangle-choice bound", {})
-        c = mixed.get("ceiling_vs_phong_frame")
+        c = mixed.get("ceiling_frame_ratio")
         pix = (mixed.get("triangle_choice") or {}).get("visible_pixels") or {}
         check(c is not None and c > 0, "no ceiling for the per-triangle choice: %r" % c)
-        check(rows["phong"].get("ceiling_vs_phong_frame") is None, "Phong itself has a ceiling")
+        check(rows["phong"].get("ceiling_frame_ratio") is None, "Phong itself has a ceiling")
         check(pix.get("phong", 0) > 0 and pix.get("gouraud", 0) > 0, "the sphere's mix has no Phong or no Gouraud pixels: %r" % pix)
         check("ceiling vs Phong (frame)" in proc.stdout, "the table has no ceiling column")
         check(mixed.get("width") == 960 and mixed.get("height") == 540, "--size not passed to render: %r x %r"

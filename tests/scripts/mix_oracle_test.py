@@ -14,6 +14,9 @@ import numpy as np
 
 from checks import check, finish, load_script
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "schema"))
+from schema_store import errors, validator  # noqa: E402  (tests/schema: the schemas as validators)
+
 SOURCE, BINARY = sys.argv[1], sys.argv[2]
 oracle = load_script(SOURCE, "mix_oracle")
 
@@ -71,7 +74,10 @@ with tempfile.TemporaryDirectory() as tmp:
                         "--frames", "3", "--budgets", "2", "--json", out], capture_output=True, text=True)
     check(r.returncode == 0, "real study failed: " + r.stderr[-800:])
     if r.returncode == 0:
-        row = json.load(open(out))[0]
+        doc = json.load(open(out))
+        errs = errors(validator(os.path.join(SOURCE, "schemas"), "mix-oracle"), doc)
+        check(not errs, "the study's file does not validate against mix-oracle.schema.json: %s" % errs[:3])
+        row = doc["rows"][0]
         check(row["size"] == "320x180", "size not passed on: " + row["size"])
         pp, pt = row["phong_share_per_pixel"], row["phong_share_per_triangle"]
         check(pp is not None and pt is not None and 0 < pp <= pt <= 1,
