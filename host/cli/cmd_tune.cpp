@@ -169,6 +169,7 @@ class TuneRun {
     request_.options.method = parse_method(a.method);
     if (request_.options.method == Method::combined) request_.options.combined = parse_combined(a.method);
     request_.use_tuned = false;  // the default configuration: the layout `render` takes without --tile (tile_choice.hpp)
+    request_.device_kernel_shape = true;  // and without --kernel-shape (device_layout.hpp)
     request_.quiet = a.quiet;
   }
 

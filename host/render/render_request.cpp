@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "parashade/combined.hpp"
+#include "parashade/device_layout.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/memory_budget.hpp"
 #include "parashade/render_step.hpp"
@@ -99,6 +100,42 @@ void resolve_layout(ResolvedRender& r) {
     r.options.plan->units = std::max(1, r.devices.front()->info().compute_units);
 }
 
+// The shape from the device (device_layout.hpp) where the request leaves it to the device, no tuned entry
+// gave one and the frame is on one device; kept (said in a note) where the table of combinations refuses it.
+void take_device_shape(ResolvedRender& r) {
+  if (!r.request.device_kernel_shape || !r.tuned.is_null() || r.mode != DeviceMode::one) return;
+  const DeviceInfo& dev = r.devices.front()->info();
+  RenderOptions o = r.options;
+  o.kernel_shape = device_kernel_shape(dev);
+  if (o.kernel_shape == r.options.kernel_shape) return;
+  try {
+    check_render_options(o, r.mode);
+    r.options = o;
+  } catch (const Error& e) {  // ConfigError or UsageError: what the other shape does not run
+    if (!r.request.quiet)
+      r.notes.push_back(std::string("parashade: note: the ") + kernel_shape_name(r.options.kernel_shape) +
+                        " kernel shape on " + dev.name + ", whose own is " + kernel_shape_name(o.kernel_shape) +
+                        " (docs/pipeline.md), which this frame cannot take: " + e.what());
+  }
+}
+
+// The work-group the device allows where neither the request nor a tuned entry gave one (after the tile is
+// known: the lanes shape's work-group is within its pixels), and where each layout setting came from.
+// `asked`: the request's options, before the tuned entry.
+void take_device_layout(ResolvedRender& r, const RenderOptions& asked) {
+  const bool tuned = !r.tuned.is_null();
+  const std::string chosen = tuned ? kFromTuneCache : kFromDevice;
+  LayoutSources& s = r.sources;
+  s.tile = asked.tile_size ? kFromOption : tuned ? kFromTuneCache : kFromFrame;
+  s.work_items = asked.work_items ? kFromOption : chosen;
+  s.work_group_size = asked.work_group_size ? kFromOption : chosen;
+  const bool device_shape = r.request.device_kernel_shape && r.mode == DeviceMode::one;
+  s.kernel_shape = tuned ? kFromTuneCache : device_shape ? kFromDevice : kFromOption;
+  if (tuned || asked.work_group_size) return;
+  const int n = device_work_group_size(r.devices.front()->info(), r.options.kernel_shape, r.options.tile_size);
+  if (n != r.options.group_size()) r.options.work_group_size = n;
+}
+
 // A budget below its floor (issue 46, item 18) is said, not refused: the 8-bit rounding plus float Phong's
 // own error, which no choice of methods can remove.
 void note_error_floor(ResolvedRender& r) {
@@ -182,7 +219,9 @@ ResolvedRender resolve_render(RenderRequest request, CommandFiles& files) {
   r.request = std::move(request);
   open_devices_for(r, selector);
   if (r.mode == DeviceMode::one || r.mode == DeviceMode::unit_sub_devices) apply_tuned(r);
+  take_device_shape(r);
   resolve_layout(r);
+  take_device_layout(r, r.request.options);
   note_error_floor(r);
   return r;
 }
@@ -192,11 +231,13 @@ ResolvedRender with_options(const ResolvedRender& base, const RenderOptions& opt
   ResolvedRender r;
   r.request = base.request;
   r.request.options = options;
+  r.request.device_kernel_shape = false;  // the shape is the caller's
   r.scene = base.scene;
   r.options = options;
   r.mode = base.mode;
   r.devices = base.devices;
   resolve_layout(r);
+  take_device_layout(r, options);
   return r;
 }
 

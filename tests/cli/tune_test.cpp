@@ -279,6 +279,8 @@ TEST_F(CliTune, CacheEntriesOfAnotherBuildOrDeviceAreNotUsed) {
   RunResult used = render(scene_, {"--tune-cache", cache().string()});
   ASSERT_TRUE(succeeds(used));
   EXPECT_NE(used.err.find("using the tuned configuration"), std::string::npos) << used;
+  for (const char* setting : {"kernel_shape", "work_group_size", "work_items", "tile"})
+    EXPECT_EQ(field(read_report(), std::string("/layout/sources/") + setting), "tune cache") << setting;
 
   const auto rewrite = [&](const std::string& pointer, const nlohmann::json& value, const std::string& name) {
     nlohmann::json c = good;
