@@ -292,10 +292,15 @@ TEST_F(CliTune, CacheEntriesOfAnotherBuildOrDeviceAreNotUsed) {
   const auto other_build = rewrite("/version", "0.0.1+deadbee", "other_build.json");
   const auto other_cus = rewrite("/compute_units", good["entries"][0]["compute_units"].get<int>() + 7, "other_cus.json");
   const auto other_driver = rewrite("/driver_version", "driver from elsewhere", "other_driver.json");
+  // Two implementations may give one CPU the same name (PoCL's and Intel's runtimes): the platform tells them apart.
+  const auto other_platform = rewrite("/platform", "Intel(R) OpenCL", "other_platform.json");
+  const std::string name = good["entries"][0]["device_name"];
   for (const auto& [path, why] : std::vector<std::pair<std::filesystem::path, std::string>>{
            {other_build, "another parashade build (0.0.1+deadbee"},
            {other_cus, "another device"},
-           {other_driver, "another device (" + good["entries"][0]["device_name"].get<std::string>() + ", driver driver from elsewhere"}}) {
+           {other_driver, "another device (" + good["entries"][0]["platform"].get<std::string>() + " / " + name +
+                              ", driver driver from elsewhere"},
+           {other_platform, "1 entry of another device (Intel(R) OpenCL / " + name + ", driver "}}) {
     SCOPED_TRACE(path.filename().string());
     // ... but not by render, which says why ...
     const RunResult r = render(scene_, {"--tune-cache", path.string()});
