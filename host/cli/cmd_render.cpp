@@ -171,11 +171,10 @@ std::vector<std::string> written_files(const RenderOutputs& o) {
 
 // What resolving decided that the user should hear before the frames.
 void print_notes(const RenderArgs& a, const ResolvedRender& r) {
-  for (const std::string& w : r.warnings) std::cerr << "parashade: warning: " << w << "\n";
+  print_resolved(r);
   if (!r.options.units && r.options.unit_path() && !a.quiet)
     std::cerr << "parashade: note: " << (r.options.arith.fixed ? "--arith " + a.arith : std::string("--coverage dda"))
               << " runs on the classic unit (--units chooses another)\n";
-  for (const std::string& n : r.notes) std::cerr << n << "\n";
 }
 
 // What the devices the request resolved to allow (after resolve: the selector may come from the environment).
@@ -298,8 +297,9 @@ void add_shading_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
 // Where it renders: the device(s), MPI ranks, and the tune cache's entry for them.
 void add_device_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
   add_device_option(*cmd, a->device,
-                    "OpenCL device: index or name substring (see 'parashade devices'); 'all' or a comma list splits the "
-                    "frame across devices by measured speed; sub:NAME:N or sub:NAME:N1+N2 uses NAME's sub-devices (bands "
+                    "OpenCL device: index or name substring (see 'parashade devices'); 'all' (the real devices: not a "
+                    "simulator, nor PoCL's basic beside pthread) or a comma list splits the frame across devices by "
+                    "measured speed; sub:NAME:N or sub:NAME:N1+N2 uses NAME's sub-devices (bands "
                     "of the frame; with --cu, the units' depth pass on them)");
   cmd->add_option("--distribute", a->distribute,
                   "Under mpirun: the frame across the MPI ranks, sort-last (shares of the triangles by modeled cost, "

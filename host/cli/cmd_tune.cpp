@@ -224,6 +224,7 @@ class TuneRun {
                 "where nothing reads them; strategy %s, seed %llu\n",
                 space_size(space_), points_.valid.size(), points_.refused, points_.not_applicable, a_.strategy.c_str(),
                 (unsigned long long)a_.seed);
+    print_resolved(*base_);
     if (!points_.refusal_example.empty() && !a_.quiet)
       std::cerr << "parashade: note: refused, e.g. " << points_.refusal_example << "\n";
     if (const std::string stale = cache_->stale_entries(dev); !stale.empty() && !a_.quiet)

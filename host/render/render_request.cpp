@@ -51,14 +51,21 @@ DeviceMode mode_of(const std::string& selector, const RenderOptions& o) {
 
 void open_devices_for(ResolvedRender& r, const Selector& s) {
   if (r.mode == DeviceMode::bands) {
-    for (auto& d : opened(s, [&] { return open_devices(s.text); })) r.devices.push_back(std::move(d));
+    std::vector<std::string> left_out;
+    for (auto& d : opened(s, [&] { return open_devices(s.text, &left_out); })) r.devices.push_back(std::move(d));
+    std::string names;
+    for (const std::string& n : left_out) names += (names.empty() ? "" : ", ") + n;
+    if (!names.empty() && !r.request.quiet)
+      r.notes.push_back("parashade: note: device list 'all' leaves out " + names +
+                        "; name the devices to split across them (A,B)");
   } else if (r.mode == DeviceMode::unit_sub_devices) {
     SubDevices sub = opened(s, [&] { return open_sub_devices(s.text, SubDeviceContext::shared); });
     r.devices.push_back(std::move(sub.parent));
     for (auto& d : sub.subs) r.devices.push_back(std::move(d));
   } else {
     r.devices.push_back(opened(s, [&] { return open_device(s.text); }));
-    if (s.text.empty() && !r.request.quiet) r.notes.push_back(default_device_note(r.devices.front()->info()));
+    if (takes_default_device(s.text) && !r.request.quiet)
+      r.notes.push_back(default_device_note(r.devices.front()->info()));
   }
 }
 
