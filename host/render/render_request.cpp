@@ -107,23 +107,13 @@ void resolve_layout(ResolvedRender& r) {
     r.options.plan->units = std::max(1, r.devices.front()->info().compute_units);
 }
 
-// The shape from the device (device_layout.hpp) where the request leaves it to the device, no tuned entry
-// gave one and the frame is on one device; kept (said in a note) where the table of combinations refuses it.
+// The shape from the device where the request leaves it to the device, no tuned entry gave one and the frame
+// is on one device (device_shape_for); a shape the frame cannot take is said in a note.
 void take_device_shape(ResolvedRender& r) {
   if (!r.request.device_kernel_shape || !r.tuned.is_null() || r.mode != DeviceMode::one) return;
-  const DeviceInfo& dev = r.devices.front()->info();
-  RenderOptions o = r.options;
-  o.kernel_shape = device_kernel_shape(dev);
-  if (o.kernel_shape == r.options.kernel_shape) return;
-  try {
-    check_render_options(o, r.mode);
-    r.options = o;
-  } catch (const Error& e) {  // ConfigError or UsageError: what the other shape does not run
-    if (!r.request.quiet)
-      r.notes.push_back(std::string("parashade: note: the ") + kernel_shape_name(r.options.kernel_shape) +
-                        " kernel shape on " + dev.name + ", whose own is " + kernel_shape_name(o.kernel_shape) +
-                        " (docs/pipeline.md), which this frame cannot take: " + e.what());
-  }
+  std::string refused;
+  r.options.kernel_shape = device_shape_for(r.devices.front()->info(), r.options, r.mode, &refused);
+  if (!refused.empty() && !r.request.quiet) r.notes.push_back("parashade: note: " + refused);
 }
 
 // The work-group the device allows where neither the request nor a tuned entry gave one (after the tile is
@@ -205,6 +195,23 @@ void check_render_options(const RenderOptions& options, DeviceMode mode) {
   RenderOptions o = options;
   if (o.tile_size == 0) o.tile_size = TILE_DEFAULT;  // chosen later from the valid sizes
   check_frame_config(o, mode);
+}
+
+KernelShape device_shape_for(const DeviceInfo& device, const RenderOptions& options, DeviceMode mode,
+                             std::string* refused) {
+  RenderOptions o = options;
+  o.kernel_shape = device_kernel_shape(device);
+  if (o.kernel_shape == options.kernel_shape) return o.kernel_shape;
+  try {
+    check_render_options(o, mode);
+    return o.kernel_shape;
+  } catch (const Error& e) {  // ConfigError or UsageError: what the device's shape does not run
+    if (refused)
+      *refused = std::string("the ") + kernel_shape_name(options.kernel_shape) + " kernel shape on " + device.name +
+                 ", whose own is " + kernel_shape_name(o.kernel_shape) +
+                 " (docs/pipeline.md), which this frame cannot take: " + e.what();
+    return options.kernel_shape;
+  }
 }
 
 ResolvedRender resolve_render(RenderRequest request, CommandFiles& files) {

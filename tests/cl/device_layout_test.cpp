@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include "parashade/device_layout.hpp"
+#include "parashade/render_step.hpp"
+#include "parashade/units.hpp"
 
 namespace parashade {
 namespace {
@@ -68,6 +70,22 @@ TEST(DeviceLayout, AGpuTakesTheLanesShape) {
   DeviceInfo accelerator = kGpu;
   accelerator.type = "accelerator";
   EXPECT_EQ(device_kernel_shape(accelerator), KernelShape::lanes);
+}
+
+// What resolve_render takes without --kernel-shape (device_shape_for): the device's own shape where the table
+// of combinations allows it; a frame the lanes shape cannot take keeps the vector shape, and says why.
+TEST(DeviceLayout, AGpuKeepsTheVectorShapeForAFrameTheLanesShapeRefuses) {
+  RenderOptions plain;
+  std::string refused;
+  EXPECT_EQ(device_shape_for(kGpu, plain, DeviceMode::one, &refused), KernelShape::lanes);
+  EXPECT_EQ(refused, "");
+  EXPECT_EQ(device_shape_for(kPthread, plain, DeviceMode::one, &refused), KernelShape::vector);
+  EXPECT_EQ(refused, "");
+  RenderOptions fixed;
+  fixed.units = parse_units("counter");
+  fixed.arith = parse_arith("fixed:12.12");
+  EXPECT_EQ(device_shape_for(kGpu, fixed, DeviceMode::one, &refused), KernelShape::vector);
+  EXPECT_NE(refused.find("the vector kernel shape on Some GPU, whose own is lanes"), std::string::npos) << refused;
 }
 
 }  // namespace
