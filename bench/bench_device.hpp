@@ -8,6 +8,7 @@
 
 #include "parashade/kernels/constants.h"
 #include "parashade/device.hpp"
+#include "parashade/device_layout.hpp"
 
 namespace parashade {
 
@@ -42,8 +43,8 @@ inline void run_fill_limit(benchmark::State& state, Device& device, int width, i
     kernel.setArg(1, cl_uint(0xFF336699u));
     kernel.setArg(2, cl_int(vectors));
   }
-  // plane: WORK_ITEMS_PER_COMPUTE_UNIT work-items per compute unit, as the frame kernel's default.
-  const cl::NDRange global{plane ? std::size_t(WORK_ITEMS_PER_COMPUTE_UNIT * device.info().compute_units) : std::size_t(vectors)};
+  // plane: the frame kernel's default work-items on a CPU (device_layout.hpp), one a vector at most.
+  const cl::NDRange global{plane ? std::size_t(device_work_items(device.info(), vectors)) : std::size_t(vectors)};
   for (int i = 0; i < 2; ++i) device.queue().enqueueNDRangeKernel(kernel, cl::NullRange, global);
   device.queue().finish();
   double sum_ms = 0.0;

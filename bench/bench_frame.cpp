@@ -49,7 +49,7 @@ const Scene& scene_named(const std::string& name) {
   return cache.emplace(name, std::move(s)).first->second;
 }
 
-// 8-bit output, the default tiles (TILE_DEFAULT), WORK_ITEMS_PER_COMPUTE_UNIT work-items per compute unit (the
+// 8-bit output, the default tiles (TILE_DEFAULT), the device's work-items (device_layout.hpp; the
 // defaults), plain method path.
 RenderOptions method_options(Method method) {
   RenderOptions o;

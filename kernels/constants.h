@@ -29,16 +29,6 @@
 #define TILE_MAX 64
 #define TILE_DEFAULT 32
 
-/* Work-items of the frame kernel per compute unit by default (--work-items 0; at most one per tile): each
- * walks interleaved tiles. PoCL 3.1's pthread device hands a thread about half the remaining work-groups at
- * a time (at most 32 times its thread count; get_wg_index_range in its scheduler), so a few work-groups split
- * the frame almost statically and one core idles while the other finishes the busy tiles; 256 per compute
- * unit leave it chunks of an eighth of a 1080 frame or less.
- * Against 16 per compute unit on 64-pixel tiles (2 compute units, frames alternating in one process):
- * 1920x1080 frames 1.00-1.10x faster, 3840x2160 1.02-1.30x (bench/README.md run AC). One work-group per
- * 16-pixel tile is slower again: PoCL pays a fixed cost per work-group. */
-#define WORK_ITEMS_PER_COMPUTE_UNIT 256
-
 /* The lanes shape's work-group (render_lanes.cl, --work-group-size 0): work-items per tile, each owning
  * TILE * TILE / LANES_WORK_GROUP_DEFAULT of its pixels (at most the tile's pixels). */
 #define LANES_WORK_GROUP_DEFAULT 256

@@ -156,9 +156,22 @@ int default_device(const std::vector<DeviceInfo>& devices) {
   return best;
 }
 
+std::string left_out_of_all(const DeviceInfo& d, const std::vector<DeviceInfo>& devices) {
+  if (is_simulator(d) && std::any_of(devices.begin(), devices.end(), [](const DeviceInfo& o) { return !is_simulator(o); }))
+    return "a simulator, beside real devices";
+  if (is_pocl_basic(d) && std::any_of(devices.begin(), devices.end(), is_pocl_threaded))
+    return "PoCL's one-thread device, on the cores of its threaded one";
+  return "";
+}
+
 std::string default_device_note(const DeviceInfo& d) {
   return "parashade: device: " + d.name + " (" + d.platform + ", " + std::to_string(d.compute_units) +
          " compute unit" + (d.compute_units == 1 ? "" : "s") + "; the default: --device to choose)";
+}
+
+bool takes_default_device(const std::string& selector) {
+  const char* variable = std::getenv("PARASHADE_DEVICE");
+  return selector.empty() && !(variable && *variable);
 }
 
 std::vector<DeviceInfo> list_devices() {

@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "kernel_variant.hpp"
+#include "parashade/device_layout.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/host_clock.hpp"
 #include "shading_tables.hpp"
@@ -216,7 +217,7 @@ std::string Renderer::kernel_build() const { return kernel_() ? variant_->build_
 int Renderer::work_items(int tiles) const {
   const int group = options_.group_size();
   if (options_.kernel_shape == KernelShape::lanes) return std::max(1, tiles) * group;  // a work-group per tile
-  const int wanted = options_.work_items > 0 ? options_.work_items : WORK_ITEMS_PER_COMPUTE_UNIT * std::max(1, device_.info().compute_units);
+  const int wanted = options_.work_items > 0 ? options_.work_items : device_work_items(device_.info(), tiles);
   const int n = std::max(1, std::min(tiles, wanted));
   return (n + group - 1) / group * group;  // whole work-groups (the kernel skips the tiles past the last)
 }

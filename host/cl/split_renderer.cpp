@@ -28,11 +28,16 @@ bool is_device_list(const std::string& selector) {
   return selector == "all" || selector.find(',') != std::string::npos || is_sub_device_selector(selector);
 }
 
-std::vector<std::unique_ptr<Device>> open_devices(const std::string& selector) {
+std::vector<std::unique_ptr<Device>> open_devices(const std::string& selector, std::vector<std::string>* left_out) {
   if (is_sub_device_selector(selector)) return open_sub_devices(selector, SubDeviceContext::own).subs;
   std::vector<std::string> names;
   if (selector == "all") {
-    for (const DeviceInfo& d : list_devices()) names.push_back(std::to_string(d.index));
+    const std::vector<DeviceInfo> devices = list_devices();
+    for (const DeviceInfo& d : devices) {
+      const std::string why = left_out_of_all(d, devices);
+      if (why.empty()) names.push_back(std::to_string(d.index));
+      else if (left_out) left_out->push_back(d.name + " (" + why + ")");
+    }
   } else {
     std::size_t from = 0;
     while (from <= selector.size()) {

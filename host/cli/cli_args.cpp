@@ -1,5 +1,6 @@
 #include "cli_args.hpp"
 
+#include <iostream>
 #include <tuple>
 
 #include "parashade/errors.hpp"
@@ -91,6 +92,11 @@ ResolvedRender resolve_with_option_names(const RenderRequest& request, CommandFi
     throw UsageError(option_names(e, request.options, mode) + ": " + e.what() +
                      " (parashade combinations lists what combines)");
   }
+}
+
+void print_resolved(const ResolvedRender& r) {
+  for (const std::string& w : r.warnings) std::cerr << "parashade: warning: " << w << "\n";
+  for (const std::string& n : r.notes) std::cerr << n << "\n";
 }
 
 }  // namespace parashade::cli

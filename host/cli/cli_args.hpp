@@ -63,4 +63,9 @@ void with_option_names(const FrameConfig& config, DeviceMode devices, const std:
 // resolve_render, its refusals named by the command line's options.
 ResolvedRender resolve_with_option_names(const RenderRequest& request, CommandFiles& files);
 
+// What resolving decided that the user should hear before the work, on stderr: the warnings (the scene's, a
+// tune cache's), then the notes (the default device taken, the tuned entry, ...; none with -q). Every
+// command that resolves a render (render, tune, scaling) says them alike.
+void print_resolved(const ResolvedRender& r);
+
 }  // namespace parashade::cli

@@ -12,6 +12,7 @@
 #include "progress.hpp"
 #include "../render/error_pictures.hpp"
 #include "parashade/combined.hpp"
+#include "parashade/device_layout.hpp"
 #include "parashade/distributed.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/render_outputs.hpp"
@@ -52,6 +53,7 @@ struct RenderArgs {
   std::string distribute, rank_partition, read_scene;  // --distribute: MPI ranks (docs/distributed.md)
   double rank_timeout = kDefaultRankTimeoutSeconds;     // --distribute: the rank watchdog
   bool no_tuned = false, explicit_config = false, keep_going = false;  // explicit: --tile, --work-items, --cu or --partition given
+  bool shape_given = false;                                            // --kernel-shape given (else the device's)
 };
 
 // The combined method's options (--method combined:*, --combined-min-width, --triangle-choice, --max-error).
@@ -146,6 +148,7 @@ RenderRequest render_request(const RenderArgs& a, const RenderOutputs& outputs) 
   r.flip = {a.flip || !outputs.flip_map.empty(), outputs.against_exact, !outputs.flip_map.empty()};
   r.use_tuned = !a.no_tuned && !a.explicit_config;
   r.tune_cache = a.tune_cache;
+  r.device_kernel_shape = !a.shape_given;
   if (!a.against.empty()) {
     r.against = for_option("--against", [&] { return parse_method(a.against); });
     // A combined configuration would need options of its own; the baselines are the plain methods.
@@ -168,11 +171,10 @@ std::vector<std::string> written_files(const RenderOutputs& o) {
 
 // What resolving decided that the user should hear before the frames.
 void print_notes(const RenderArgs& a, const ResolvedRender& r) {
-  for (const std::string& w : r.warnings) std::cerr << "parashade: warning: " << w << "\n";
+  print_resolved(r);
   if (!r.options.units && r.options.unit_path() && !a.quiet)
     std::cerr << "parashade: note: " << (r.options.arith.fixed ? "--arith " + a.arith : std::string("--coverage dda"))
               << " runs on the classic unit (--units chooses another)\n";
-  for (const std::string& n : r.notes) std::cerr << n << "\n";
 }
 
 // What the devices the request resolved to allow (after resolve: the selector may come from the environment).
@@ -295,8 +297,9 @@ void add_shading_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
 // Where it renders: the device(s), MPI ranks, and the tune cache's entry for them.
 void add_device_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
   add_device_option(*cmd, a->device,
-                    "OpenCL device: index or name substring (see 'parashade devices'); 'all' or a comma list splits the "
-                    "frame across devices by measured speed; sub:NAME:N or sub:NAME:N1+N2 uses NAME's sub-devices (bands "
+                    "OpenCL device: index or name substring (see 'parashade devices'); 'all' (the real devices: not a "
+                    "simulator, nor PoCL's basic beside pthread) or a comma list splits the frame across devices by "
+                    "measured speed; sub:NAME:N or sub:NAME:N1+N2 uses NAME's sub-devices (bands "
                     "of the frame; with --cu, the units' depth pass on them)");
   cmd->add_option("--distribute", a->distribute,
                   "Under mpirun: the frame across the MPI ranks, sort-last (shares of the triangles by modeled cost, "
@@ -324,18 +327,18 @@ void add_layout_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
                       std::to_string(TILE_DEFAULT) + "; a tuned entry's when there is one)")
       ->check(tile_validator());
   cmd->add_option("--work-items", a->options.work_items,
-                  "Kernel work-items, each rendering every N-th tile (0: " + std::to_string(WORK_ITEMS_PER_COMPUTE_UNIT) +
-                      " per compute unit)")
+                  "Kernel work-items, each rendering every N-th tile (0: the device's: on a CPU one a tile up to " +
+                      std::to_string(kCpuWorkItemsPerComputeUnit) + " per compute unit; docs/pipeline.md)")
       ->capture_default_str();
   cmd->add_option("--kernel-shape", a->kernel_shape,
                   "The frame kernel's shape: vector (a work-item walks whole tiles with explicit 16-lane vectors) or "
                   "lanes (a work-group per tile, a work-item per pixel lane, for implicit vectorizers and GPUs; the "
-                  "plain frame and --float only). Same image; docs/pipeline.md")
-      ->capture_default_str();
+                  "plain frame and --float only). Default: a tuned entry's, else the device's (vector on a CPU or "
+                  "simulator, lanes on a GPU). Same image; docs/pipeline.md");
   cmd->add_option("--work-group-size", a->options.work_group_size,
                   "Work-items per work-group, a power of two (0: the shape's default, 1 for vector, " +
-                      std::to_string(LANES_WORK_GROUP_DEFAULT) + " or the tile's pixels for lanes, each owning tile x "
-                      "tile / N of them)")
+                      std::to_string(LANES_WORK_GROUP_DEFAULT) + " or the tile's pixels or the device's largest for "
+                      "lanes, each owning tile x tile / N of them)")
       ->capture_default_str();
   cmd->add_option("--defer-min-triangles", a->options.defer_min_triangles,
                   "Phong and the combined method on the stamps: a tile of at least N triangles shades each pixel once, "
@@ -416,6 +419,7 @@ Command add_render_command(CLI::App& app) {
             a->explicit_config = cmd->count("--tile") + cmd->count("--work-items") + cmd->count("--cu") +
                                      cmd->count("--partition") + cmd->count("--kernel-shape") +
                                      cmd->count("--work-group-size") > 0;
+            a->shape_given = cmd->count("--kernel-shape") > 0;
             return run_render(*a);
           }};
 }

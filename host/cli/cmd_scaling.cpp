@@ -357,6 +357,7 @@ int run_scaling(const ScalingArgs& a) {
     CommandFiles files;
     if (rank == 0) files.output("--report", a.report);
     base = std::make_unique<ResolvedRender>(resolve_with_option_names(request, files));
+    if (rank == 0) print_resolved(*base);
     // The exact reference, once for the scene: every configuration shades the same screen triangles.
     if (!a.quiet && rank == 0)
       std::cerr << "scaling " << base->scene.name << " (" << base->scene.width << "x" << base->scene.height << ", "

@@ -182,6 +182,7 @@ class TuneRun {
     request_.options.method = parse_method(a.method);
     if (request_.options.method == Method::combined) request_.options.combined = parse_combined(a.method);
     request_.use_tuned = false;  // the default configuration: the layout `render` takes without --tile (tile_choice.hpp)
+    request_.device_kernel_shape = true;  // and without --kernel-shape (device_layout.hpp)
     request_.quiet = a.quiet;
   }
 
@@ -251,6 +252,7 @@ class TuneRun {
                 "where nothing reads them%s; strategy %s, seed %llu\n",
                 space_size(space_), points_.valid.size(), points_.refused, points_.not_applicable, restricted.c_str(),
                 a_.strategy.c_str(), (unsigned long long)a_.seed);
+    print_resolved(*base_);
     if (!points_.refusal_example.empty() && !a_.quiet)
       std::cerr << "parashade: note: refused, e.g. " << points_.refusal_example << "\n";
     if (const std::string stale = cache_->stale_entries(dev); !stale.empty() && !a_.quiet)

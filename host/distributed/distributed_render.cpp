@@ -196,6 +196,8 @@ class RankRun {
   int run(RenderResult* result, std::vector<std::string>* lines) {
     read_scene();
     mpi_.step([&] { device_ = open_device(job_.request.device); });
+    if (rank_ == 0 && !job_.quiet && takes_default_device(job_.request.device))
+      std::cerr << default_device_note(device_->info()) << "\n";  // rank 0's: each rank takes its host's own
     if (n_ > 65535 && sort_last_) throw UsageError("sort-last takes at most 65535 ranks");
     share_scene();
     start_composite();

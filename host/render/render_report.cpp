@@ -92,6 +92,16 @@ void hardware_keys(const RenderResult& r, nlohmann::json& report) {
   }
 }
 
+// The kernel's layout and where each setting came from (device_layout.hpp's LayoutSources).
+nlohmann::json layout_json(const RenderResult& r) {
+  const LayoutSources& s = r.sources;
+  return {{"kernel_shape", kernel_shape_name(r.options.kernel_shape)},
+          {"work_group_size", r.options.group_size()},
+          {"sources",
+           {{"kernel_shape", s.kernel_shape}, {"work_group_size", s.work_group_size}, {"work_items", s.work_items},
+            {"tile", s.tile}}}};
+}
+
 nlohmann::json one_device_report(const RenderResult& r, const std::filesystem::path& image) {
   nlohmann::json report = common_keys(r, image);
   const double ms = r.medians.total_ms, pixels = double(r.width) * r.height;
@@ -100,6 +110,7 @@ nlohmann::json one_device_report(const RenderResult& r, const std::filesystem::p
   report["band_mib"] = band_mib(r);
   report["tuned"] = r.tuned;
   report["work_items"] = r.work_items;
+  report["layout"] = layout_json(r);
   report["defer_min_triangles"] = r.deferral ? nlohmann::json(*r.deferral) : nlohmann::json(nullptr);
   report["kernel_build"] = r.kernel_build;
   report["triangles"] = {{"in", r.stats.geometry.triangles_in}, {"after_culling", r.stats.geometry.triangles_out}};

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "parashade/combined.hpp"
+#include "parashade/device_layout.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/memory_budget.hpp"
 #include "parashade/render_step.hpp"
@@ -50,14 +51,21 @@ DeviceMode mode_of(const std::string& selector, const RenderOptions& o) {
 
 void open_devices_for(ResolvedRender& r, const Selector& s) {
   if (r.mode == DeviceMode::bands) {
-    for (auto& d : opened(s, [&] { return open_devices(s.text); })) r.devices.push_back(std::move(d));
+    std::vector<std::string> left_out;
+    for (auto& d : opened(s, [&] { return open_devices(s.text, &left_out); })) r.devices.push_back(std::move(d));
+    std::string names;
+    for (const std::string& n : left_out) names += (names.empty() ? "" : ", ") + n;
+    if (!names.empty() && !r.request.quiet)
+      r.notes.push_back("parashade: note: device list 'all' leaves out " + names +
+                        "; name the devices to split across them (A,B)");
   } else if (r.mode == DeviceMode::unit_sub_devices) {
     SubDevices sub = opened(s, [&] { return open_sub_devices(s.text, SubDeviceContext::shared); });
     r.devices.push_back(std::move(sub.parent));
     for (auto& d : sub.subs) r.devices.push_back(std::move(d));
   } else {
     r.devices.push_back(opened(s, [&] { return open_device(s.text); }));
-    if (s.text.empty() && !r.request.quiet) r.notes.push_back(default_device_note(r.devices.front()->info()));
+    if (takes_default_device(s.text) && !r.request.quiet)
+      r.notes.push_back(default_device_note(r.devices.front()->info()));
   }
 }
 
@@ -97,6 +105,32 @@ void resolve_layout(ResolvedRender& r) {
                                                       : default_tile_size(r.scene, r.options, r.options.band_record_bytes);
   if (r.options.plan && r.options.plan->units == 0)
     r.options.plan->units = std::max(1, r.devices.front()->info().compute_units);
+}
+
+// The shape from the device where the request leaves it to the device, no tuned entry gave one and the frame
+// is on one device (device_shape_for); a shape the frame cannot take is said in a note.
+void take_device_shape(ResolvedRender& r) {
+  if (!r.request.device_kernel_shape || !r.tuned.is_null() || r.mode != DeviceMode::one) return;
+  std::string refused;
+  r.options.kernel_shape = device_shape_for(r.devices.front()->info(), r.options, r.mode, &refused);
+  if (!refused.empty() && !r.request.quiet) r.notes.push_back("parashade: note: " + refused);
+}
+
+// The work-group the device allows where neither the request nor a tuned entry gave one (after the tile is
+// known: the lanes shape's work-group is within its pixels), and where each layout setting came from.
+// `asked`: the request's options, before the tuned entry.
+void take_device_layout(ResolvedRender& r, const RenderOptions& asked) {
+  const bool tuned = !r.tuned.is_null();
+  const std::string chosen = tuned ? kFromTuneCache : kFromDevice;
+  LayoutSources& s = r.sources;
+  s.tile = asked.tile_size ? kFromOption : tuned ? kFromTuneCache : kFromFrame;
+  s.work_items = asked.work_items ? kFromOption : chosen;
+  s.work_group_size = asked.work_group_size ? kFromOption : chosen;
+  const bool device_shape = r.request.device_kernel_shape && r.mode == DeviceMode::one;
+  s.kernel_shape = tuned ? kFromTuneCache : device_shape ? kFromDevice : kFromOption;
+  if (tuned || asked.work_group_size) return;
+  const int n = device_work_group_size(r.devices.front()->info(), r.options.kernel_shape, r.options.tile_size);
+  if (n != r.options.group_size()) r.options.work_group_size = n;
 }
 
 // A budget below its floor (issue 46, item 18) is said, not refused: the 8-bit rounding plus float Phong's
@@ -163,6 +197,23 @@ void check_render_options(const RenderOptions& options, DeviceMode mode) {
   check_frame_config(o, mode);
 }
 
+KernelShape device_shape_for(const DeviceInfo& device, const RenderOptions& options, DeviceMode mode,
+                             std::string* refused) {
+  RenderOptions o = options;
+  o.kernel_shape = device_kernel_shape(device);
+  if (o.kernel_shape == options.kernel_shape) return o.kernel_shape;
+  try {
+    check_render_options(o, mode);
+    return o.kernel_shape;
+  } catch (const Error& e) {  // ConfigError or UsageError: what the device's shape does not run
+    if (refused)
+      *refused = std::string("the ") + kernel_shape_name(options.kernel_shape) + " kernel shape on " + device.name +
+                 ", whose own is " + kernel_shape_name(o.kernel_shape) +
+                 " (docs/pipeline.md), which this frame cannot take: " + e.what();
+    return options.kernel_shape;
+  }
+}
+
 ResolvedRender resolve_render(RenderRequest request, CommandFiles& files) {
   ResolvedRender r;
   const Selector selector = selector_of(request.device);
@@ -182,7 +233,9 @@ ResolvedRender resolve_render(RenderRequest request, CommandFiles& files) {
   r.request = std::move(request);
   open_devices_for(r, selector);
   if (r.mode == DeviceMode::one || r.mode == DeviceMode::unit_sub_devices) apply_tuned(r);
+  take_device_shape(r);
   resolve_layout(r);
+  take_device_layout(r, r.request.options);
   note_error_floor(r);
   return r;
 }
@@ -192,11 +245,13 @@ ResolvedRender with_options(const ResolvedRender& base, const RenderOptions& opt
   ResolvedRender r;
   r.request = base.request;
   r.request.options = options;
+  r.request.device_kernel_shape = false;  // the shape is the caller's
   r.scene = base.scene;
   r.options = options;
   r.mode = base.mode;
   r.devices = base.devices;
   resolve_layout(r);
+  take_device_layout(r, options);
   return r;
 }
 

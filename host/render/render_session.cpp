@@ -24,6 +24,7 @@ RenderResult describe(const ResolvedRender& r) {
   for (const auto& d : r.devices)
     if (r.mode == DeviceMode::bands || out.devices.empty()) out.devices.push_back(d->info());
   out.tuned = r.tuned;
+  out.sources = r.sources;
   out.frames = r.request.frames;
   out.warmup = r.request.warmup;
   return out;

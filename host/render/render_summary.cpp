@@ -15,6 +15,14 @@ namespace {
 
 using ull = unsigned long long;
 
+// The kernel's layout, each setting with where it came from (option, tune cache, device properties, frame).
+void print_layout(const RenderResult& r, std::FILE* out) {
+  const LayoutSources& s = r.sources;
+  std::fprintf(out, "layout: %s kernel shape (%s), work-groups of %d (%s), %d work-items (%s), tile %d (%s)\n",
+               kernel_shape_name(r.options.kernel_shape), s.kernel_shape.c_str(), r.options.group_size(),
+               s.work_group_size.c_str(), r.work_items, s.work_items.c_str(), r.options.tile_size, s.tile.c_str());
+}
+
 void print_frame(const RenderResult& r, std::FILE* out) {
   const FrameTimings& m = r.medians;
   const double pixels = double(r.width) * r.height, triangles = double(r.stats.geometry.triangles_in);
@@ -24,6 +32,7 @@ void print_frame(const RenderResult& r, std::FILE* out) {
                                                     : method_name(r.options.method));
   const DeviceInfo& dev = r.devices.front();
   std::fprintf(out, "device: %s (%s), %d compute units\n", dev.name.c_str(), dev.platform.c_str(), dev.compute_units);
+  print_layout(r, out);
   // The stages add up to the frame: launch is the kernels from enqueue to completion on the host's clock
   // (kernel, the device's own time, is part of it), and other is what no stage covers (buffers, arguments;
   // from medians, so it may be slightly negative).

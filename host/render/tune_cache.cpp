@@ -42,7 +42,7 @@ nlohmann::json read_entries(const std::filesystem::path& path) {
 std::string identity(const nlohmann::json& e) {
   if (!e.is_object()) return e.dump();
   nlohmann::json id = nlohmann::json::object();
-  for (const char* key : {"device_name", "driver_version", "compute_units", "version", "problem", "params"})
+  for (const char* key : {"platform", "device_name", "driver_version", "compute_units", "version", "problem", "params"})
     id[key] = e.value(key, nlohmann::json());
   return id.dump();
 }
@@ -132,9 +132,24 @@ std::string TuneCache::set_aside() const {
          " not understood, not used (" + faults_.front() + (n > 1 ? "; and more" : "") + ")";
 }
 
+namespace {
+
+// The device an entry was measured on: platform, name, driver and compute units. Two implementations can
+// name one CPU alike (PoCL's and Intel's runtimes), so the platform is part of it.
+bool same_device(const nlohmann::json& e, const DeviceInfo& d) {
+  return e.value("platform", "") == d.platform && e.value("device_name", "") == d.name &&
+         e.value("driver_version", "") == d.driver && e.value("compute_units", -1) == d.compute_units;
+}
+
+// "PLATFORM / NAME, driver D, N compute units", as entries and devices are told apart.
+std::string device_text(const std::string& platform, const std::string& name, const std::string& driver, int units) {
+  return platform + " / " + name + ", driver " + driver + ", " + std::to_string(units) + " compute units";
+}
+
+}  // namespace
+
 bool TuneCache::ours(const nlohmann::json& e, const DeviceInfo& d) const {
-  return e.value("device_name", "") == d.name && e.value("driver_version", "") == d.driver &&
-         e.value("compute_units", -1) == d.compute_units && e.value("version", "") == build_id();
+  return same_device(e, d) && e.value("version", "") == build_id();
 }
 
 std::optional<nlohmann::json> TuneCache::find(const DeviceInfo& d, const TuneProblem& p, const nlohmann::json& params) const {
@@ -193,16 +208,14 @@ std::string TuneCache::stale_entries(const DeviceInfo& d, const TuneProblem* p) 
       if (q.value("scene", "") != p->scene || q.value("width", 0) != p->width || q.value("height", 0) != p->height)
         continue;
     }
-    const bool same_device = e.value("device_name", "") == d.name && e.value("driver_version", "") == d.driver &&
-                             e.value("compute_units", -1) == d.compute_units;
-    if (same_device) {
+    if (same_device(e, d)) {
       ++other_build;
       if (build_example.empty()) build_example = e.value("version", std::string("an unversioned build"));
     } else {
       ++other_device;
       if (device_example.empty())
-        device_example = e.value("device_name", std::string("?")) + ", driver " + e.value("driver_version", std::string("?")) +
-                         ", " + std::to_string(e.value("compute_units", -1)) + " compute units";
+        device_example = device_text(e.value("platform", std::string("no platform")), e.value("device_name", std::string("?")),
+                                     e.value("driver_version", std::string("?")), e.value("compute_units", -1));
     }
   }
   if (!other_build && !other_device) return "";
@@ -213,8 +226,7 @@ std::string TuneCache::stale_entries(const DeviceInfo& d, const TuneProblem* p) 
   if (other_build && other_device) s += " and ";
   if (other_device)
     s += std::to_string(other_device) + " entr" + (other_device == 1 ? "y" : "ies") + " of another device (" +
-         device_example + "; this is " + d.name + ", driver " + d.driver + ", " + std::to_string(d.compute_units) +
-         " compute units)";
+         device_example + "; this is " + device_text(d.platform, d.name, d.driver, d.compute_units) + ")";
   return s + " not used";
 }
 

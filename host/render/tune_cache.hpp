@@ -1,6 +1,6 @@
 #pragma once
 // The tuner's cache, in the spirit of Kernel Tuner's cache files: one JSON file of entries, each with
-// the device (name, driver, compute units), the parashade build (version and git commit, <parashade/version.hpp>), the problem (scene,
+// the device (platform, name, driver, compute units), the parashade build (version and git commit, <parashade/version.hpp>), the problem (scene,
 // size and the shading: method, unit, normalization, specular model), the layout parameters, the
 // measured times, the objective (median frame ms) and the error against the exact reference. Rewritten
 // whole (atomically) after every candidate, so an interrupted `tune` resumes where it stopped; each write

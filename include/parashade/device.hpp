@@ -70,9 +70,18 @@ bool is_simulator(const DeviceInfo& d);
 // the choice does not depend on the order the ICD loader lists the platforms in.
 int default_device(const std::vector<DeviceInfo>& devices);
 
-// "parashade: device: NAME (PLATFORM, N compute units; the default: --device to choose)": what render
-// says on stderr when it took the default device.
+// Why `--device all` leaves `d` out of `devices` (list_devices()), or "" when it takes it: a simulator where a
+// real device exists (Oclgrind: a frame of 160x90 takes it most of a second, and the first split frame gives it
+// an equal band), PoCL's one-thread `basic` where PoCL has a threaded device (its thread competes with the
+// threaded device's for the same cores). The devices default_device never takes while others exist.
+std::string left_out_of_all(const DeviceInfo& d, const std::vector<DeviceInfo>& devices);
+
+// "parashade: device: NAME (PLATFORM, N compute units; the default: --device to choose)": what every command
+// that opens a device (render, tune, scaling, render --distribute's rank 0) says on stderr when it took the
+// default device, that is when takes_default_device(its selector).
 std::string default_device_note(const DeviceInfo& d);
+// Whether open_device(selector) takes the default device: no selector and no PARASHADE_DEVICE.
+bool takes_default_device(const std::string& selector);
 
 // Opens the device chosen by `selector`: empty = the PARASHADE_DEVICE environment variable's selector when
 // it is set (its errors name it), else the default device (default_device); a number = index in

@@ -20,6 +20,7 @@
 #include "parashade/combinations.hpp"
 #include "parashade/command_files.hpp"
 #include "parashade/device.hpp"
+#include "parashade/device_layout.hpp"
 #include "parashade/image.hpp"
 #include "parashade/metrics.hpp"
 #include "parashade/reference.hpp"
@@ -63,6 +64,9 @@ struct RenderRequest {
   // holds a frame of its own, budgeted with --float against the host memory limit before rendering.
   std::vector<std::string> pictures;
   bool use_tuned = true;       // the best entry of the tune cache for this device, build and problem
+  // The kernel shape from the device (device_layout.hpp) instead of options.kernel_shape, where no tuned entry
+  // gives one, the frame is on one device and the table of combinations allows it (render, tune).
+  bool device_kernel_shape = false;
   std::filesystem::path tune_cache;  // empty: default_tune_cache()
   std::optional<Method> against;     // a plain method whose frames alternate with these (render --against)
   bool quiet = false;                // no notes in ResolvedRender::notes
@@ -79,6 +83,7 @@ struct ResolvedRender {
   // One; or the list (bands); or the parent and its sub-devices. Shared by the variants of with_options.
   std::vector<std::shared_ptr<Device>> devices;
   nlohmann::json tuned;                          // {cache, params, objective_ms}, or null
+  LayoutSources sources;                         // where the shape, work-group, work-items and tile came from
   std::vector<std::string> notes;     // for stderr before the work: the tuned entry taken, stale entries
   std::vector<std::string> warnings;  // the scene's warnings and a tune cache that could not be read
 };
@@ -90,8 +95,15 @@ ResolvedRender resolve_render(RenderRequest request, CommandFiles& files);
 
 // The same scene on the same devices with other options (tune's candidates, scaling's configurations):
 // `options` checked against the table and resolved as resolve_render resolves them (tile 0: the scene's
-// default; the plan's units 0: the device's compute units); no tuned entry is looked up.
+// default; the plan's units 0: the device's compute units; the work-group 0: the device's); no tuned entry is
+// looked up, and the shape is `options`'.
 ResolvedRender with_options(const ResolvedRender& base, const RenderOptions& options);
+
+// The kernel shape `device` takes for `options` on `mode` when the request leaves it to the device: its own
+// (device_layout.hpp's device_kernel_shape) where the table of combinations allows it, else options'; then
+// `refused` (when given) receives one sentence saying why the device's own was not taken.
+KernelShape device_shape_for(const DeviceInfo& device, const RenderOptions& options, DeviceMode mode,
+                             std::string* refused = nullptr);
 
 // Options checked against the table of combinations on `mode` (check_frame_config; tile 0 counts as valid,
 // it is chosen later): the one check of a configuration, made by resolve_render and with_options, and by
@@ -140,6 +152,7 @@ struct RenderResult {
   DeviceMode mode = DeviceMode::one;
   std::vector<DeviceInfo> devices;  // the device (first) and, split, the others
   nlohmann::json tuned;
+  LayoutSources sources;
   int frames = 0, warmup = 0;
   RenderedImage image;
   FrameStats stats;                 // the last timed frame's

@@ -31,7 +31,7 @@ constexpr int kMaxDeferMinTriangles = 1 << 24;
 // A frame's configuration (frame_config.hpp) and how the device runs it.
 struct RenderOptions : FrameConfig {
   bool float_output = false;  // also read back unclamped float RGB (for EXR and exact error figures)
-  int work_items = 0;  // kernel work-items, each rendering every G-th tile; 0: WORK_ITEMS_PER_COMPUTE_UNIT per CU
+  int work_items = 0;  // kernel work-items, each rendering every G-th tile; 0: the device's (device_layout.hpp)
   // Work-items per work-group, the kernel's local size (--work-group-size; 0: the shape's default). The vector
   // shape's each walk tiles of their own (default 1, work_items rounded up to a multiple); the lanes shape's are one
   // tile's pixel lanes, each owning tile x tile / N of its pixels (default LANES_WORK_GROUP_DEFAULT, at most the

@@ -14,8 +14,10 @@ namespace parashade {
 
 // True for "all" or a comma-separated list of device selectors.
 bool is_device_list(const std::string& selector);
-// Opens every device the list names (each as open_device() would), in list order, no device twice.
-std::vector<std::unique_ptr<Device>> open_devices(const std::string& selector);
+// Opens every device the list names (each as open_device() would), in list order, no device twice. "all":
+// every device but those left_out_of_all (device.hpp), which are added to `left_out` with the reason.
+std::vector<std::unique_ptr<Device>> open_devices(const std::string& selector,
+                                                  std::vector<std::string>* left_out = nullptr);
 
 class SplitRenderer {
  public:

@@ -280,6 +280,8 @@ TEST_F(CliTune, CacheEntriesOfAnotherBuildOrDeviceAreNotUsed) {
   RunResult used = render(scene_, {"--tune-cache", cache().string()});
   ASSERT_TRUE(succeeds(used));
   EXPECT_NE(used.err.find("using the tuned configuration"), std::string::npos) << used;
+  for (const char* setting : {"kernel_shape", "work_group_size", "work_items", "tile"})
+    EXPECT_EQ(field(read_report(), std::string("/layout/sources/") + setting), "tune cache") << setting;
 
   const auto rewrite = [&](const std::string& pointer, const nlohmann::json& value, const std::string& name) {
     nlohmann::json c = good;
@@ -291,10 +293,15 @@ TEST_F(CliTune, CacheEntriesOfAnotherBuildOrDeviceAreNotUsed) {
   const auto other_build = rewrite("/version", "0.0.1+deadbee", "other_build.json");
   const auto other_cus = rewrite("/compute_units", good["entries"][0]["compute_units"].get<int>() + 7, "other_cus.json");
   const auto other_driver = rewrite("/driver_version", "driver from elsewhere", "other_driver.json");
+  // Two implementations may give one CPU the same name (PoCL's and Intel's runtimes): the platform tells them apart.
+  const auto other_platform = rewrite("/platform", "Intel(R) OpenCL", "other_platform.json");
+  const std::string name = good["entries"][0]["device_name"];
   for (const auto& [path, why] : std::vector<std::pair<std::filesystem::path, std::string>>{
            {other_build, "another parashade build (0.0.1+deadbee"},
            {other_cus, "another device"},
-           {other_driver, "another device (" + good["entries"][0]["device_name"].get<std::string>() + ", driver driver from elsewhere"}}) {
+           {other_driver, "another device (" + good["entries"][0]["platform"].get<std::string>() + " / " + name +
+                              ", driver driver from elsewhere"},
+           {other_platform, "1 entry of another device (Intel(R) OpenCL / " + name + ", driver "}}) {
     SCOPED_TRACE(path.filename().string());
     // ... but not by render, which says why ...
     const RunResult r = render(scene_, {"--tune-cache", path.string()});

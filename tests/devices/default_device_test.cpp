@@ -72,6 +72,19 @@ class DefaultDeviceOfTheTestFolder : public ::testing::Test {
     return {r, rendered.is_object() ? rendered.value(json::json_pointer("/device/name"), std::string()) : ""};
   }
 
+  // An ICD folder of Oclgrind and PoCL (the two implementations every test machine has); "" when either is
+  // not registered (the test then fails saying so).
+  std::string use_oclgrind_and_pocl() const {
+    const std::string oclgrind = registered_library("oclgrind"), pocl = registered_library("pocl");
+    if (oclgrind.empty() || pocl.empty()) return "Oclgrind or PoCL is not registered in " PARASHADE_ICD_DIR;
+    const fs::path vendors = dir_.path() / "two-vendors";
+    fs::create_directories(vendors);
+    std::ofstream(vendors / "a.icd") << oclgrind;
+    std::ofstream(vendors / "b.icd") << pocl;
+    ::setenv("OCL_ICD_VENDORS", vendors.c_str(), 1);
+    return "";
+  }
+
   TempDir dir_;
   const ScopedEnv devices_{"POCL_DEVICES", "basic pthread"};
   const ScopedEnv no_variable_{"PARASHADE_DEVICE", nullptr};
@@ -137,6 +150,75 @@ TEST_F(DefaultDeviceOfTheTestFolder, PthreadAmongTheTestImplementations) {
   const auto [r, rendered_on] = render_by_default();
   ASSERT_TRUE(r.exited() && r.exit_code == 0) << r;
   EXPECT_EQ(rendered_on, listing.devices[std::size_t(pthread)].value("name", "")) << r;
+}
+
+// `--device all` splits a frame across the real devices: not Oclgrind (a simulator, hundreds of times slower,
+// and the first split frame gives every device an equal band) nor PoCL's `basic` (one thread on the cores of
+// `pthread`), each left out with a note; named in a list (A,B) they still take a band.
+TEST_F(DefaultDeviceOfTheTestFolder, AllLeavesOutTheSimulatorAndBasic) {
+  const std::string missing = use_oclgrind_and_pocl();
+  ASSERT_TRUE(missing.empty()) << missing;
+  const fs::path report = dir_.path() / "split.json";
+  const auto split = [&](const std::string& devices, bool quiet) {
+    std::vector<std::string> args = {"render", (source_dir() / "scenes" / "sphere.json").string(), "--size", "48x32",
+                                     "-o", (dir_.path() / "split.png").string(), "--report", report.string(),
+                                     "--frames", "1", "--warmup", "0", "--device", devices};
+    if (quiet) args.push_back("-q");
+    const RunResult r = run_parashade(args);
+    std::vector<std::string> names;
+    const json rendered = json::parse(slurp(report), nullptr, false);
+    if (rendered.is_object())
+      for (const json& d : rendered.value("device_info", json::array())) names.push_back(d.value("name", ""));
+    return std::make_pair(r, names);
+  };
+  const auto [all, names] = split("all", false);
+  ASSERT_TRUE(all.exited() && all.exit_code == 0) << all;
+  ASSERT_EQ(names.size(), 1u) << all;
+  EXPECT_EQ(names[0].rfind("pthread-", 0), 0u) << all;
+  EXPECT_NE(all.err.find("device list 'all' leaves out Oclgrind Simulator (a simulator, beside real devices), basic-"),
+            std::string::npos) << all;
+  EXPECT_NE(all.err.find("(PoCL's one-thread device, on the cores of its threaded one)"), std::string::npos) << all;
+  const auto [quiet, quiet_names] = split("all", true);
+  EXPECT_EQ(quiet.err.find("leaves out"), std::string::npos) << quiet;
+  const auto [listed, listed_names] = split("pthread,basic", true);
+  ASSERT_TRUE(listed.exited() && listed.exit_code == 0) << listed;
+  EXPECT_EQ(listed_names.size(), 2u) << listed;
+}
+
+// Every command that takes the default device says which, the same way (device.hpp's default_device_note),
+// and none says it when --device or PARASHADE_DEVICE chose: render, tune and scaling (render --distribute's
+// rank 0 too, tests/mpi).
+TEST_F(DefaultDeviceOfTheTestFolder, EveryCommandThatTakesTheDefaultSaysIt) {
+  const std::string missing = use_oclgrind_and_pocl();
+  ASSERT_TRUE(missing.empty()) << missing;
+  const std::string scene = (source_dir() / "scenes" / "sphere.json").string();
+  const std::string out = (dir_.path() / "out").string();
+  fs::create_directories(out);
+  const std::vector<std::vector<std::string>> commands = {
+      {"render", scene, "--size", "48x32", "-o", out + "/r.png", "--frames", "1", "--warmup", "0", "--no-error",
+       "--no-tuned"},
+      {"tune", scene, "--size", "48x32", "--param", "tile=32", "--param", "work_items=0", "--param", "partition=none",
+       "--frames", "1", "--cache", out + "/tune.json"},
+      {"scaling", scene, "--size", "48x32", "--units", "classic", "--frames", "1"}};
+  const std::string said = "parashade: device: pthread-";
+  for (const std::vector<std::string>& command : commands) {
+    SCOPED_TRACE(command[0]);
+    const RunResult taken = run_parashade(command);
+    ASSERT_TRUE(taken.exited() && taken.exit_code == 0) << taken;
+    const std::size_t at = taken.err.find(said);
+    EXPECT_NE(at, std::string::npos) << taken;
+    EXPECT_EQ(taken.err.find(said, at + 1), std::string::npos) << "said once" << taken;
+    EXPECT_NE(taken.err.find("compute units; the default: --device to choose)\n"), std::string::npos) << taken;
+    std::vector<std::string> chosen = command;
+    chosen.insert(chosen.end(), {"--device", "pthread"});
+    const RunResult named = run_parashade(chosen);
+    ASSERT_TRUE(named.exited() && named.exit_code == 0) << named;
+    EXPECT_EQ(named.err.find("parashade: device:"), std::string::npos) << named;
+    const ScopedEnv variable("PARASHADE_DEVICE", "pthread");
+    const RunResult by_variable = run_parashade(command);
+    ASSERT_TRUE(by_variable.exited() && by_variable.exit_code == 0) << by_variable;
+    EXPECT_EQ(by_variable.err.find("parashade: device:"), std::string::npos) << by_variable;
+  }
 }
 
 }  // namespace

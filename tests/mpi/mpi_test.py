@@ -278,6 +278,12 @@ def main():
                 ("gouraud --float", SCENE, ["--float"], [(3, [])]),
                 ("gouraud, rank 0 broadcasts", SCENE, [], [(2, ["--read-scene", "rank-0"])]),
             ])
+            # Without -q rank 0 alone says the default device it took, as render does (docs/environment.md).
+            said = os.path.join(tmp, "said.png")
+            rc, out, err = mpirun(2, ["render", SCENE, "-o", said, "--frames", "1", "--distribute", "sort-first"] +
+                                  [a for a in COMMON if a != "-q"])
+            check(rc == 0 and err.count("parashade: device: ") == 1 and "the default: --device to choose)" in err,
+                  "the default device is not said once under --distribute (exit %d): %s" % (rc, err.strip()))
         elif GROUP == "faults":
             img = os.path.join(tmp, "f.png")
             args = ["render", SCENE, "-o", img, "--frames", "1"] + COMMON
