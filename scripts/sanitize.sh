@@ -58,7 +58,9 @@ status=0
 # deferral threshold, a tile size): each case is a PoCL kernel build, which the sanitizers do not instrument, and
 # the host code they run is run under the sanitizers by the other tests. Under ASan they took 17 % of the
 # sanitized tests' time (docs/robustness.md).
-kernel_only='^(StampLayout\.|CombinedKernel\.TilesDoNotChangeThePixels$|CliDeterminism\.(DeferralThreshold|TileSize)DoesNotChangeTheImage$)'
+# Nor CliDistributeAlone: it runs --distribute outside mpirun (an Open MPI singleton), whose MCA components
+# leak in modules LeakSanitizer cannot name, so no suppression matches them; the mpi label is left out alike.
+kernel_only='^(StampLayout\.|CombinedKernel\.TilesDoNotChangeThePixels$|CliDeterminism\.(DeferralThreshold|TileSize)DoesNotChangeTheImage$|CliDistributeAlone\.)'
 ctest --test-dir build-asan --output-on-failure --parallel "$(nproc)" --timeout 1800 -LE 'anydevice|mpi|hw' \
   -E "$kernel_only" || status=$?
 done_at=$(date +%s)
