@@ -9,9 +9,10 @@
 # python3-numpy, python3-pil, openimageio-tools (oiiotool): scripts/mix_oracle.py reads render's images.
 # time: GNU time, the peak memory of scripts/peak_memory.py (the PeakMemory test, bench-suite.sh).
 #
-# --test (scripts/test.sh, README's second command) adds what only the tests use and Debian does not
-# package: Intel's CPU OpenCL runtime, the third implementation of the anydevice tests (docs/pipeline.md),
-# from PyPI (intel-opencl-rt, intel-cmplr-lib-rt) into a Python venv (Debian's python3-venv) at the fixed prefix
+# --test (scripts/test.sh, README's second command) adds what only the tests use: doxygen (the API
+# reference's test, docs.api_reference) and, not packaged by Debian, Intel's CPU OpenCL runtime, the
+# third implementation of the anydevice tests (docs/pipeline.md), from PyPI (intel-opencl-rt,
+# intel-cmplr-lib-rt) into a Python venv (Debian's python3-venv) at the fixed prefix
 # /opt/parashade/intel-opencl (about 850 MB; docs/environment.md), skipped when it is there. If pip or the
 # network fails, a warning says so and the script goes on: the tests on Intel's runtime then skip, saying
 # how to install it. README's first command (render-default.sh) runs without --test.
@@ -29,9 +30,9 @@ SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 TEST_PACKAGES=""
-if [ "$TEST" = 1 ]; then TEST_PACKAGES="python3-venv"; fi
+if [ "$TEST" = 1 ]; then TEST_PACKAGES="python3-venv doxygen"; fi
 $SUDO apt-get update -q
-# shellcheck disable=SC2086  # TEST_PACKAGES is empty or one word
+# shellcheck disable=SC2086  # TEST_PACKAGES is empty or words
 $SUDO apt-get install -y -q --no-install-recommends $TEST_PACKAGES \
     g++ cmake ninja-build pkg-config \
     pocl-opencl-icd oclgrind ocl-icd-opencl-dev opencl-c-headers opencl-clhpp-headers clinfo \
