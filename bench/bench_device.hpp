@@ -6,6 +6,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <CL/opencl.hpp>
+
 #include "parashade/kernels/constants.h"
 #include "parashade/device.hpp"
 #include "parashade/device_layout.hpp"

@@ -10,8 +10,9 @@
 # time: GNU time, the peak memory of scripts/peak_memory.py (the PeakMemory test, bench-suite.sh).
 #
 # --test (scripts/test.sh, README's second command) adds what only the tests use: nextpnr-ice40 (Debian; the
-# place and route of hw/, scripts/hw_pnr.py, docs/hardware.md) and, not packaged by Debian, Intel's CPU
-# OpenCL runtime, the third implementation of the anydevice tests (docs/pipeline.md),
+# place and route of hw/, scripts/hw_pnr.py, docs/hardware.md), doxygen (the API reference's test,
+# docs.api_reference) and, not packaged by Debian, Intel's CPU OpenCL runtime, the third implementation of
+# the anydevice tests (docs/pipeline.md),
 # from PyPI (intel-opencl-rt, intel-cmplr-lib-rt) into a Python venv (Debian's python3-venv) at the fixed prefix
 # /opt/parashade/intel-opencl (about 850 MB; docs/environment.md), skipped when it is there. If pip or the
 # network fails, a warning says so and the script goes on: the tests on Intel's runtime then skip, saying
@@ -30,7 +31,7 @@ SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 TEST_PACKAGES=""
-if [ "$TEST" = 1 ]; then TEST_PACKAGES="python3-venv nextpnr-ice40"; fi
+if [ "$TEST" = 1 ]; then TEST_PACKAGES="python3-venv nextpnr-ice40 doxygen"; fi
 $SUDO apt-get update -q
 # shellcheck disable=SC2086  # TEST_PACKAGES is empty or words
 $SUDO apt-get install -y -q --no-install-recommends $TEST_PACKAGES \

@@ -1,6 +1,8 @@
 #include <exception>
 #include <string>
 
+#include <CL/opencl.hpp>
+
 #include "parashade/device.hpp"
 #include "parashade/errors.hpp"
 

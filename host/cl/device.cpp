@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <map>
 #include <sstream>
 #include <tuple>
+
+#include <CL/opencl.hpp>
 
 #include "build_notice.hpp"
 #include "captured_stderr.hpp"
@@ -184,27 +187,39 @@ std::vector<DeviceInfo> list_devices() {
   }
 }
 
+struct Device::Handles {
+  cl::Device device;
+  cl::Context context;
+  cl::CommandQueue queue;
+  std::map<std::pair<std::vector<std::string>, std::string>, cl::Program> programs;
+};
+
 Device::Device(cl::Device device, DeviceInfo info) : Device(device, std::move(info), cl::Context()) {}
 
 Device::Device(cl::Device device, DeviceInfo info, cl::Context context)
-    : device_(device), info_(std::move(info)), context_(std::move(context)) {
+    : info_(std::move(info)), cl_(new Handles{device, std::move(context), {}, {}}) {
   try {
-    if (!context_()) context_ = cl::Context(device_);
-    queue_ = cl::CommandQueue(context_, device_, CL_QUEUE_PROFILING_ENABLE);
+    if (!cl_->context()) cl_->context = cl::Context(cl_->device);
+    cl_->queue = cl::CommandQueue(cl_->context, cl_->device, CL_QUEUE_PROFILING_ENABLE);
   } catch (const cl::Error&) {
     rethrow_cl_error("opening device '" + info_.name + "'");
   }
 }
 
+Device::~Device() = default;
+cl::Context& Device::context() { return cl_->context; }
+cl::CommandQueue& Device::queue() { return cl_->queue; }
+cl::Device& Device::device() { return cl_->device; }
+
 cl::Program& Device::program(const std::vector<std::string>& files, const std::string& given) {
   const auto key = std::make_pair(files, given);
   const std::string options = given + injected_failure(info_);
-  const auto it = programs_.find(key);
-  if (it != programs_.end()) return it->second;
+  const auto it = cl_->programs.find(key);
+  if (it != cl_->programs.end()) return it->second;
   const std::string source = injected_warning(info_) + kernel_source(files);
   cl::Program program;
   try {
-    program = cl::Program(context_, source);
+    program = cl::Program(cl_->context, source);
   } catch (const cl::Error&) {
     rethrow_cl_error("creating program on '" + info_.name + "'");
   }
@@ -216,11 +231,11 @@ cl::Program& Device::program(const std::vector<std::string>& files, const std::s
     // (the warnings themselves are not shown, and clang-14 finds none in our sources); errors still
     // fail the build and their log is reported below. Under PARASHADE_KERNEL_WERROR=1 the warnings are
     // kept and checked below instead.
-    program.build(device_, ("-cl-std=CL1.2 " + std::string(strict ? "" : "-w ") + options).c_str());
+    program.build(cl_->device, ("-cl-std=CL1.2 " + std::string(strict ? "" : "-w ") + options).c_str());
   } catch (const cl::Error& e) {
     std::string log;
     try {
-      log = program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device_);
+      log = program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(cl_->device);
     } catch (const cl::Error&) {
     }
     const std::string printed = trim(compiler_output.take());
@@ -235,7 +250,7 @@ cl::Program& Device::program(const std::vector<std::string>& files, const std::s
   if (strict) {
     std::string log;
     try {
-      log = program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(device_);
+      log = program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(cl_->device);
     } catch (const cl::Error&) {
     }
     // PoCL's kernel cache skips the compiler, and so the log, for a program it built before: a warning
@@ -246,7 +261,7 @@ cl::Program& Device::program(const std::vector<std::string>& files, const std::s
                         "' gave warnings, errors under PARASHADE_KERNEL_WERROR=1:\n" + warnings + "--- build log ---\n" +
                         trim(log));
   }
-  return programs_.emplace(key, std::move(program)).first->second;
+  return cl_->programs.emplace(key, std::move(program)).first->second;
 }
 
 std::unique_ptr<Device> open_device(const std::string& selector) {

@@ -7,7 +7,7 @@
 
 #include "kernel_variant.hpp"
 #include "parashade/errors.hpp"
-#include "parashade/renderer.hpp"
+#include "renderer_impl.hpp"
 #include "tile_kernel_args.hpp"
 
 namespace parashade {
@@ -21,7 +21,7 @@ double event_span_ms(cl_ulong start, cl_ulong end) { return end > start ? double
 // sub-device whose block holds u). dynamic: the batches too, in proportion to each one's units: a
 // counter is shared only by the work-items of one device (the spec promises atomics on a buffer to the
 // work-items of one device, not across devices), so each sub-device's units pull from their own range.
-std::vector<UnitPassShare> Renderer::unit_pass_shares(const Plan& plan) const {
+std::vector<UnitPassShare> Renderer::Impl::unit_pass_shares(const Plan& plan) const {
   const int units = plan.report.units, packets = plan.work.packets();
   if (unit_devices_.empty()) return {{device_.info().name, device_.info().compute_units, 0, units, 0, packets}};
   std::vector<int> cus;
@@ -38,7 +38,7 @@ std::vector<UnitPassShare> Renderer::unit_pass_shares(const Plan& plan) const {
   return out;
 }
 
-void Renderer::enqueue_unit_pass(cl::Kernel& resolve, const KernelVariant& variant, const TileKernelArgs& frame_args,
+void Renderer::Impl::enqueue_unit_pass(cl::Kernel& resolve, const KernelVariant& variant, const TileKernelArgs& frame_args,
                                  const Plan& plan, const std::vector<UnitPassShare>& shares, std::size_t pixels,
                                  UnitPassEvents& events) {
   cl::CommandQueue& q = device_.queue();
@@ -121,7 +121,7 @@ void Renderer::enqueue_unit_pass(cl::Kernel& resolve, const KernelVariant& varia
   }
 }
 
-void Renderer::unit_pass_times(const UnitPassEvents& events, FrameTimings& t) const {
+void Renderer::Impl::unit_pass_times(const UnitPassEvents& events, FrameTimings& t) const {
   cl_ulong first = ~cl_ulong(0), last = 0;
   std::size_t e = 0;
   for (const UnitPassShare& s : frame_.stats.unit_pass) {
@@ -143,7 +143,7 @@ void Renderer::unit_pass_times(const UnitPassEvents& events, FrameTimings& t) co
                                     m.getProfilingInfo<CL_PROFILING_COMMAND_END>());
 }
 
-std::vector<std::uint64_t> Renderer::plan_keys(const Scene& scene) {
+std::vector<std::uint64_t> Renderer::Impl::plan_keys(const Scene& scene) {
   if (!options_.plan) throw UsageError("depth keys exist only in a planned frame (--cu)");
   std::vector<std::uint64_t> keys(std::size_t(scene.width) * scene.height);
   try {

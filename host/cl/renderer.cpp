@@ -1,4 +1,4 @@
-#include "parashade/renderer.hpp"
+#include "renderer_impl.hpp"
 
 #include <chrono>
 #include <cstring>
@@ -42,7 +42,7 @@ RenderOptions resolved_units(RenderOptions o, const Device& device) {
 
 }  // namespace
 
-Renderer::Renderer(Device& device, RenderOptions options, std::vector<Device*> unit_devices)
+Renderer::Impl::Impl(Device& device, RenderOptions options, std::vector<Device*> unit_devices)
     : device_(device),
       options_(resolved_units(options, device)),
       unit_devices_(std::move(unit_devices)),
@@ -67,7 +67,7 @@ Renderer::Renderer(Device& device, RenderOptions options, std::vector<Device*> u
   }
 }
 
-void Renderer::set_band(int first, int rows) {
+void Renderer::Impl::set_band(int first, int rows) {
   if (options_.plan && rows >= 0)
     throw UsageError("planned units run on one device, or on the sub-devices of one, not in bands");
   pipeline_.set_band(first, rows);
@@ -75,7 +75,7 @@ void Renderer::set_band(int first, int rows) {
   options_.band_rows = rows;
 }
 
-cl::Buffer& Renderer::ensure(cl::Buffer& buffer, std::size_t& capacity, std::size_t bytes, cl_mem_flags flags) {
+cl::Buffer& Renderer::Impl::ensure(cl::Buffer& buffer, std::size_t& capacity, std::size_t bytes, cl_mem_flags flags) {
   bytes = std::max<std::size_t>(bytes, 64);
   if (bytes > capacity) {
     if (bytes > device_.info().max_allocation)
@@ -92,7 +92,7 @@ cl::Buffer& Renderer::ensure(cl::Buffer& buffer, std::size_t& capacity, std::siz
 // Every blocking OpenCL call costs a round trip to the device's threads (~60 us on PoCL here), so the
 // input buffers are mapped together: the tile list at its current capacity, since binning's size is
 // known only later (it is mapped again in the rare frame it must grow).
-void Renderer::enqueue_record_maps(std::size_t tri_bytes, std::size_t attr_bytes, std::vector<cl::Event>& events) {
+void Renderer::Impl::enqueue_record_maps(std::size_t tri_bytes, std::size_t attr_bytes, std::vector<cl::Event>& events) {
   cl::CommandQueue& q = device_.queue();
   events.resize(3);
   mapped_ = FrameRecords{};
@@ -105,12 +105,12 @@ void Renderer::enqueue_record_maps(std::size_t tri_bytes, std::size_t attr_bytes
       q.enqueueMapBuffer(tile_tris_, CL_FALSE, CL_MAP_WRITE_INVALIDATE_REGION, 0, list_mapped_bytes_, nullptr, &events[2]));
 }
 
-void Renderer::premap_records() {
+void Renderer::Impl::premap_records() {
   if (!premapped_.empty() || tris_cap_ == 0) return;  // mapped already, or no frame yet to size them
   enqueue_record_maps(tris_cap_, attrs_cap_, premapped_);
 }
 
-void Renderer::unmap_premapped() {
+void Renderer::Impl::unmap_premapped() {
   if (premapped_.empty()) return;
   cl::CommandQueue& q = device_.queue();
   q.enqueueUnmapMemObject(tris_, mapped_.triangles);
@@ -121,7 +121,7 @@ void Renderer::unmap_premapped() {
   premapped_.clear();
 }
 
-FrameRecords Renderer::records(std::size_t n, std::size_t attribute_floats, bool fixed, bool leaves) {
+FrameRecords Renderer::Impl::records(std::size_t n, std::size_t attribute_floats, bool fixed, bool leaves) {
   cl::CommandQueue& q = device_.queue();
   const std::size_t tri_bytes = std::max<std::size_t>(64, n * sizeof(TriangleGeometry));
   const std::size_t attr_bytes = std::max<std::size_t>(64, n * attribute_floats * sizeof(float));
@@ -152,7 +152,7 @@ FrameRecords Renderer::records(std::size_t n, std::size_t attribute_floats, bool
   return mapped_;
 }
 
-std::uint32_t* Renderer::tile_list(std::size_t entries) {
+std::uint32_t* Renderer::Impl::tile_list(std::size_t entries) {
   const std::size_t list_bytes = entries * sizeof(std::uint32_t);
   if (list_bytes > list_mapped_bytes_) {
     cl::CommandQueue& q = device_.queue();
@@ -165,12 +165,12 @@ std::uint32_t* Renderer::tile_list(std::size_t entries) {
   return mapped_list_;
 }
 
-const PreparedFrame& Renderer::prepare(const Scene& scene, double* upload_ms) {
+const PreparedFrame& Renderer::Impl::prepare(const Scene& scene, double* upload_ms) {
   pipeline_.begin_frame(scene, SIZE_MAX);
   return prepare_band(scene, 0, upload_ms);
 }
 
-const PreparedFrame& Renderer::prepare_band(const Scene& scene, int band, double* upload_ms) {
+const PreparedFrame& Renderer::Impl::prepare_band(const Scene& scene, int band, double* upload_ms) {
   cl::CommandQueue& q = device_.queue();
   if (options_.dda_coverage) q.finish();  // the previous frame's row table may still be in flight
   const PreparedFrame& f = pipeline_.prepare_band(scene, *this, band);
@@ -197,14 +197,14 @@ const PreparedFrame& Renderer::prepare_band(const Scene& scene, int band, double
   return f;
 }
 
-TileKernelArgs Renderer::tile_args(const cl::Buffer& tile_start, const cl::Buffer& tile_list, cl_float4 viewer,
+TileKernelArgs Renderer::Impl::tile_args(const cl::Buffer& tile_start, const cl::Buffer& tile_list, cl_float4 viewer,
                                    cl_float4 background, const Scene& scene, const PreparedFrame& f) const {
   return {&tris_,  &attrs_,     &tile_start,  &tile_list,    &lights_,  &materials_,   viewer,
           background, cl_int(f.tiles_x), cl_int(f.end_tile), cl_int(scene.width), cl_int(scene.height),
           &out_rgba_, &out_float_, &fixed_, &tile_counters_, &leaves_, &dda_first_, &dda_rows_};
 }
 
-std::optional<int> Renderer::deferral_threshold(const Scene& scene) const {
+std::optional<int> Renderer::Impl::deferral_threshold(const Scene& scene) const {
   if (options_.kernel_shape == KernelShape::lanes) return 0;  // every pixel shaded once after the walk, every tile
   KernelVariant v = *variant_;
   v.plan_pass = 0;  // as the report has always said it (a planned frame's resolve pass never defers)
@@ -212,9 +212,9 @@ std::optional<int> Renderer::deferral_threshold(const Scene& scene) const {
   return options_.deferral_threshold();
 }
 
-std::string Renderer::kernel_build() const { return kernel_() ? variant_->build_options() : std::string(); }
+std::string Renderer::Impl::kernel_build() const { return kernel_() ? variant_->build_options() : std::string(); }
 
-int Renderer::work_items(int tiles) const {
+int Renderer::Impl::work_items(int tiles) const {
   const int group = options_.group_size();
   if (options_.kernel_shape == KernelShape::lanes) return std::max(1, tiles) * group;  // a work-group per tile
   const int wanted = options_.work_items > 0 ? options_.work_items : device_work_items(device_.info(), tiles);
@@ -236,7 +236,7 @@ void check_work_group_size(const RenderOptions& o, const DeviceInfo* device) {
                      std::to_string(device->max_work_group));
 }
 
-Renderer::~Renderer() {
+Renderer::Impl::~Impl() {
   try {
     release_frame();
     unmap_premapped();
@@ -246,7 +246,7 @@ Renderer::~Renderer() {
   }
 }
 
-void Renderer::release_frame() {
+void Renderer::Impl::release_frame() {
   if (mapped_rgba_) {
     device_.queue().enqueueUnmapMemObject(out_rgba_, mapped_rgba_);
     mapped_rgba_ = nullptr;
@@ -255,7 +255,7 @@ void Renderer::release_frame() {
 
 // The scene's lights and materials into constant memory. The tables are members: the writes do not block,
 // so the host memory they read must outlive this call (the frame waits for its kernel before it returns).
-void Renderer::upload_tables(const Scene& scene) {
+void Renderer::Impl::upload_tables(const Scene& scene) {
   cl::CommandQueue& q = device_.queue();
   std::vector<cl_float4>& lights = light_values_;
   std::vector<cl_float4>& materials = material_values_;
@@ -272,7 +272,7 @@ void Renderer::upload_tables(const Scene& scene) {
 
 // The kernel writes the 8-bit frame straight into the image kept here (no copy on the host); the other
 // outputs, and placeholders for the buffers this variant does not read.
-void Renderer::prepare_outputs(const Scene& scene, std::size_t counter_bytes) {
+void Renderer::Impl::prepare_outputs(const Scene& scene, std::size_t counter_bytes) {
   cl::CommandQueue& q = device_.queue();
   const std::size_t pixels = std::size_t(scene.width) * scene.height;
   RenderedImage& img = frame_.image;
@@ -296,7 +296,7 @@ void Renderer::prepare_outputs(const Scene& scene, std::size_t counter_bytes) {
 
 // The frame kernel of this renderer's variant for the scene's lights and viewer: built when they change,
 // not every frame (a planned frame's variant is its resolve pass).
-cl::Kernel& Renderer::frame_kernel(const Scene& scene) {
+cl::Kernel& Renderer::Impl::frame_kernel(const Scene& scene) {
   if (variant_->set_scene(scene) || !kernel_()) {
     variant_->plan_pass = options_.plan ? 2 : 0;
     kernel_ = cl::Kernel(device_.program(kernel_files(*variant_), variant_->build_options()), "render_tiles");
@@ -306,9 +306,9 @@ cl::Kernel& Renderer::frame_kernel(const Scene& scene) {
 
 // Three counters per tile: the unit's spans, pixels and clocks, or the per-span normalization's setups,
 // fallbacks and sequential steps (never both: the table refuses per-span normals on a unit).
-bool Renderer::counts_per_tile() const { return options_.unit_path() || options_.span_normalize(); }
+bool Renderer::Impl::counts_per_tile() const { return options_.unit_path() || options_.span_normalize(); }
 
-void Renderer::add_tile_counters(const cl_ulong* c, FrameStats& stats) const {
+void Renderer::Impl::add_tile_counters(const cl_ulong* c, FrameStats& stats) const {
   for (int tile = 0; tile < stats.tiles && options_.span_normalize(); ++tile) {
     stats.normalize_span_setups += c[3 * tile];
     stats.normalize_fallback_spans += c[3 * tile + 1];
@@ -325,7 +325,7 @@ void Renderer::add_tile_counters(const cl_ulong* c, FrameStats& stats) const {
 // first_tile); a streamed frame's next band is prepared when the band before it is shaded. `done` is the
 // last kernel's event, band_done the others'; `last` when the last band was launched. Returns the earlier
 // bands' launch time.
-double Renderer::launch_bands(const Scene& scene, int bands, const PreparedFrame* band, const TileKernelArgs& args,
+double Renderer::Impl::launch_bands(const Scene& scene, int bands, const PreparedFrame* band, const TileKernelArgs& args,
                               cl::Event& done, std::vector<cl::Event>& band_done, Clock::time_point& last) {
   cl::CommandQueue& q = device_.queue();
   last = Clock::now();
@@ -352,7 +352,7 @@ double Renderer::launch_bands(const Scene& scene, int bands, const PreparedFrame
 
 // The frame mapped (valid in the image's memory: on a CPU device the kernel wrote it there already), with
 // the float colour and the tile counters, waited for; the counters added to the stats.
-Renderer::MappedFrame Renderer::map_frame(std::size_t pixels, std::size_t counter_bytes) {
+Renderer::Impl::MappedFrame Renderer::Impl::map_frame(std::size_t pixels, std::size_t counter_bytes) {
   cl::CommandQueue& q = device_.queue();
   MappedFrame m;
   m.rgba = q.enqueueMapBuffer(out_rgba_, CL_FALSE, CL_MAP_READ, 0, pixels * 4, nullptr, &m.mapped);
@@ -375,7 +375,7 @@ Renderer::MappedFrame Renderer::map_frame(std::size_t pixels, std::size_t counte
 }
 
 // Read-back: from the kernel's end to the frame in host memory (device clock), plus the host copies.
-void Renderer::copy_out(MappedFrame& m, std::size_t pixels, const cl::Event& done) {
+void Renderer::Impl::copy_out(MappedFrame& m, std::size_t pixels, const cl::Event& done) {
   const auto t0 = Clock::now();
   RenderedImage& img = frame_.image;
   if (m.rgba != rgba_host_) std::memcpy(img.rgba.data(), m.rgba, pixels * 4);  // the spec says it is the host pointer
@@ -392,7 +392,7 @@ void Renderer::copy_out(MappedFrame& m, std::size_t pixels, const cl::Event& don
   frame_.timings.readback_ms = double(map_end > kernel_end ? map_end - kernel_end : 0) * 1e-6 + ms_since(t0);
 }
 
-const Frame& Renderer::render(const Scene& scene) {
+const Frame& Renderer::Impl::render(const Scene& scene) {
   Frame& frame = frame_;
   FrameTimings& t = frame.timings;
   t = FrameTimings{};
@@ -446,7 +446,7 @@ const Frame& Renderer::render(const Scene& scene) {
   return frame;
 }
 
-std::vector<std::uint32_t> Renderer::coverage_counts(const Scene& scene) {
+std::vector<std::uint32_t> Renderer::Impl::coverage_counts(const Scene& scene) {
   try {
     const PreparedFrame& f = prepare(scene);
     cl::CommandQueue& q = device_.queue();
@@ -473,5 +473,19 @@ std::vector<std::uint32_t> Renderer::coverage_counts(const Scene& scene) {
     rethrow_cl_error("counting coverage on '" + device_.info().name + "'");
   }
 }
+
+// Renderer: the public face, each call passed to its Impl.
+Renderer::Renderer(Device& device, RenderOptions options, std::vector<Device*> unit_devices)
+    : impl_(std::make_unique<Impl>(device, std::move(options), std::move(unit_devices))) {}
+Renderer::~Renderer() = default;
+const Frame& Renderer::render(const Scene& scene) { return impl_->render(scene); }
+std::vector<std::uint32_t> Renderer::coverage_counts(const Scene& scene) { return impl_->coverage_counts(scene); }
+const ScreenGeometry& Renderer::geometry() const { return impl_->geometry(); }
+const RenderOptions& Renderer::options() const { return impl_->options(); }
+void Renderer::set_band(int first, int rows) { impl_->set_band(first, rows); }
+int Renderer::work_items(int tiles) const { return impl_->work_items(tiles); }
+std::optional<int> Renderer::deferral_threshold(const Scene& scene) const { return impl_->deferral_threshold(scene); }
+std::vector<std::uint64_t> Renderer::plan_keys(const Scene& scene) { return impl_->plan_keys(scene); }
+std::string Renderer::kernel_build() const { return impl_->kernel_build(); }
 
 }  // namespace parashade

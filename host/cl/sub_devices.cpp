@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <exception>
 
+#include <CL/opencl.hpp>
+
 #include "parashade/errors.hpp"
 
 namespace parashade {

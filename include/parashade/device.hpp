@@ -1,13 +1,19 @@
 #pragma once
 // OpenCL platforms and devices: listing, choosing one, building (and caching) programs from the
 // embedded kernel sources, and turning OpenCL errors into messages with the call and the error name.
-#include <map>
+// No OpenCL header here: a program that uses Device's OpenCL handles includes <CL/opencl.hpp> itself.
+#include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
-#include <utility>
 #include <vector>
 
-#include <CL/opencl.hpp>
+namespace cl {  // the OpenCL C++ bindings' classes (<CL/opencl.hpp>), named but not needed here
+class CommandQueue;
+class Context;
+class Device;
+class Program;
+}  // namespace cl
 
 namespace parashade {
 
@@ -30,17 +36,21 @@ struct DeviceInfo {
 // OpenCL platform at all.
 std::vector<DeviceInfo> list_devices();
 
-// An open device: context, in-order profiling queue, and a cache of built programs.
+// An open device: context, in-order profiling queue, and a cache of built programs. Its OpenCL handles
+// (context(), queue(), device(), program()) are for code that includes <CL/opencl.hpp>.
 class Device {
  public:
   Device(cl::Device device, DeviceInfo info);
   // A device of a context it shares with other devices (a parent and its sub-devices: sub_devices.hpp);
   // its own queue, its own program cache.
   Device(cl::Device device, DeviceInfo info, cl::Context context);
+  ~Device();
+  Device(const Device&) = delete;
+  Device& operator=(const Device&) = delete;
   const DeviceInfo& info() const { return info_; }
-  cl::Context& context() { return context_; }
-  cl::CommandQueue& queue() { return queue_; }
-  cl::Device& device() { return device_; }
+  cl::Context& context();
+  cl::CommandQueue& queue();
+  cl::Device& device();
   // Builds the concatenation of `files` of kernels/ (their #include "..." lines resolved from the
   // embedded sources) with -cl-std=CL1.2 and `options`, once per (files, options). Throws DeviceError
   // with the device name and the build log. Fault injection for tests: when the environment variable
@@ -51,11 +61,9 @@ class Device {
   cl::Program& program(const std::vector<std::string>& files, const std::string& options);
 
  private:
-  cl::Device device_;
+  struct Handles;  // the OpenCL objects and the built programs (device.cpp)
   DeviceInfo info_;
-  cl::Context context_;
-  cl::CommandQueue queue_;
-  std::map<std::pair<std::vector<std::string>, std::string>, cl::Program> programs_;
+  std::unique_ptr<Handles> cl_;
 };
 
 // Whether `d` is a simulator rather than hardware: Oclgrind (platform "Oclgrind", device "Oclgrind

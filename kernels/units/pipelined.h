@@ -9,6 +9,7 @@
 #define PARASHADE_UNIT_PIPELINED_H
 
 #include "../fixed_point.h"
+#include "../unit_cost.h" /* SPAN_LOAD_CLOCKS */
 
 #define UNIT_PIPELINED 5
 

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <CL/opencl.hpp>
+
 #include "parashade/device.hpp"
 #include "parashade/errors.hpp"
 

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <CL/opencl.hpp>
+
 #include "cl_fixture.hpp"
 #include "parashade/errors.hpp"
 

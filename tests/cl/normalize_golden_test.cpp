@@ -19,6 +19,8 @@
 
 #include <gtest/gtest.h>
 
+#include <CL/opencl.hpp>
+
 #include "cl_fixture.hpp"
 #include "parashade/normalization.hpp"
 #include "parashade/kernels/constants.h"
