@@ -51,7 +51,8 @@ if [ -d build ] && [ -z "${PARASHADE_TEST_VENVS:-}" ]; then export PARASHADE_TES
 status=0
 # -LE anydevice: the Oclgrind runs (tests/anydevice, docs/pipeline.md) check the kernels, which the
 # sanitizers do not instrument; under them they would only double their time.
-# Not under the sanitizers: the anydevice label (Oclgrind is itself an instrumenting interpreter), mpi
+# Not under the sanitizers: the install label and docs.api_reference (they configure, compile and install the
+# package and run Doxygen; the main suite runs them, and no host code of theirs runs here); the anydevice label (Oclgrind is itself an instrumenting interpreter), mpi
 # (Open MPI's own allocations would fill LeakSanitizer's report; its ranks run the same renderer the other
 # tests run) and hw (Verilator's models of the RTL, no parashade code but the vectors' writer).
 # Nor the tests that only compare two kernel builds' images on one host path (stamps against row segments, a
@@ -61,8 +62,8 @@ status=0
 # Nor CliDistributeAlone: it runs --distribute outside mpirun (an Open MPI singleton), whose MCA components
 # leak in modules LeakSanitizer cannot name, so no suppression matches them; the mpi label is left out alike.
 kernel_only='^(StampLayout\.|CombinedKernel\.TilesDoNotChangeThePixels$|CliDeterminism\.(DeferralThreshold|TileSize)DoesNotChangeTheImage$|CliDistributeAlone\.)'
-ctest --test-dir build-asan --output-on-failure --parallel "$(nproc)" --timeout 1800 -LE 'anydevice|mpi|hw' \
-  -E "$kernel_only" || status=$?
+ctest --test-dir build-asan --output-on-failure --parallel "$(nproc)" --timeout 1800 -LE 'anydevice|mpi|hw|install' \
+  -E "$kernel_only|^docs\.api_reference$" || status=$?
 done_at=$(date +%s)
 
 echo "sanitize.sh: build $((built - start)) s, tests $((done_at - built)) s, total $((done_at - start)) s"
