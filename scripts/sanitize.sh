@@ -56,12 +56,12 @@ status=0
 # (Open MPI's own allocations would fill LeakSanitizer's report; its ranks run the same renderer the other
 # tests run) and hw (Verilator's models of the RTL, no parashade code but the vectors' writer).
 # Nor the tests that only compare two kernel builds' images on one host path (stamps against row segments, a
-# deferral threshold, a tile size): each case is a PoCL kernel build, which the sanitizers do not instrument, and
+# deferral threshold, a tile size, the lanes shape against the vector shape): each case is a PoCL kernel build, which the sanitizers do not instrument, and
 # the host code they run is run under the sanitizers by the other tests. Under ASan they took 17 % of the
 # sanitized tests' time (docs/robustness.md).
 # Nor CliDistributeAlone: it runs --distribute outside mpirun (an Open MPI singleton), whose MCA components
 # leak in modules LeakSanitizer cannot name, so no suppression matches them; the mpi label is left out alike.
-kernel_only='^(StampLayout\.|CombinedKernel\.TilesDoNotChangeThePixels$|CliDeterminism\.(DeferralThreshold|TileSize)DoesNotChangeTheImage$|CliDistributeAlone\.)'
+kernel_only='^(StampLayout\.|LanesShape\.|CombinedKernel\.TilesDoNotChangeThePixels$|CliDeterminism\.(DeferralThreshold|TileSize)DoesNotChangeTheImage$|CliDistributeAlone\.)'
 ctest --test-dir build-asan --output-on-failure --parallel "$(nproc)" --timeout 1800 -LE 'anydevice|mpi|hw|install' \
   -E "$kernel_only|^docs\.api_reference$" || status=$?
 done_at=$(date +%s)
