@@ -26,7 +26,7 @@ PARASHADE, SOURCE = sys.argv[1], sys.argv[2]
 MPIEXEC = sys.argv[3] if len(sys.argv) > 3 and sys.argv[3] else None
 BENCH = sys.argv[4] if len(sys.argv) > 4 and sys.argv[4] else None
 # Kinds the scripts write, checked elsewhere (see above).
-SCRIPT_KINDS = {"combined-study", "phong-methods", "best-method", "mix-oracle", "distributed-model", "hw-synthesis",
+SCRIPT_KINDS = {"combined-study", "phong-methods", "best-method", "mix-oracle", "distributed-model", "hw-synthesis", "hw-pnr",
                 "stages", "planner-sweep"}
 SCHEMAS = os.path.join(SOURCE, "schemas")
 failures = []
