@@ -17,12 +17,14 @@ namespace {
 using namespace testing_support;
 namespace fs = std::filesystem;
 
-// 200 MiB: the process and its libraries, no geometry. AddressSanitizer's shadow and quarantine add about
-// 50 MiB to a refused run (253 MiB seen under scripts/sanitize.sh): 400 MiB there, still far below a loaded mesh.
+constexpr long kRefusalPeakKib = 200 << 10;  // 200 MiB: the process and its libraries, no geometry
+// Under AddressSanitizer a peak says little of the program: its quarantine keeps up to 256 MiB of freed memory
+// and its shadow an eighth more (a refused OBJ peaked at 683 MiB under scripts/sanitize.sh, under 200 MiB
+// without). The peaks are checked by the plain build's run of these tests.
 #if defined(__SANITIZE_ADDRESS__)
-constexpr long kRefusalPeakKib = 400 << 10;
+constexpr bool kPeaksMeasured = false;
 #else
-constexpr long kRefusalPeakKib = 200 << 10;
+constexpr bool kPeaksMeasured = true;
 #endif
 
 class CliHugeMesh : public CliTest {
@@ -45,7 +47,7 @@ TEST_F(CliHugeMesh, ASparseObjWithANulIsRefusedAtOnce) {
   const RunResult r = render_mesh(mesh);
   EXPECT_TRUE(fails_with(r, kBadInput, {"sparse.obj:5", "NUL"}));
   EXPECT_LT(seconds_, 5.0);
-  EXPECT_LT(r.max_rss_kib, kRefusalPeakKib) << r;
+  if (kPeaksMeasured) EXPECT_LT(r.max_rss_kib, kRefusalPeakKib) << r;
   EXPECT_TRUE(nothing_written());
 }
 
@@ -68,7 +70,7 @@ TEST_F(CliHugeMesh, AnObjBeyondTheMemoryLimitIsRefusedFromItsCounts) {
   const ScopedEnv limit("PARASHADE_MEMORY_LIMIT", "300M");
   const RunResult r = render_mesh(mesh);
   EXPECT_TRUE(fails_with(r, kBadInput, {"grid.obj", "1996002 triangles", "limit"}));
-  EXPECT_LT(r.max_rss_kib, kRefusalPeakKib) << r;
+  if (kPeaksMeasured) EXPECT_LT(r.max_rss_kib, kRefusalPeakKib) << r;
   EXPECT_TRUE(nothing_written());
 }
 
@@ -92,7 +94,7 @@ TEST_F(CliHugeMesh, ABinaryPlyDeclaringMoreVerticesThanTheLimitIsRefusedFromItsH
   const ScopedEnv limit("PARASHADE_MEMORY_LIMIT", "1G");
   const RunResult r = render_mesh(mesh);
   EXPECT_TRUE(fails_with(r, kBadInput, {"many.ply", "40000000 vertices", "limit"}));
-  EXPECT_LT(r.max_rss_kib, kRefusalPeakKib) << r;
+  if (kPeaksMeasured) EXPECT_LT(r.max_rss_kib, kRefusalPeakKib) << r;
   EXPECT_TRUE(nothing_written());
 }
 
