@@ -32,7 +32,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hw_synth import LEN, ROOT, hw_sources, lane_param, throughput, unit_configs  # noqa: E402
+from hw_synth import LEN, ROOT, hw_sources, lane_param, plot_throughput_area, throughput, unit_configs  # noqa: E402
 from report_schema import schema  # noqa: E402
 
 DEVICE, PACKAGE = "hx8k", "ct256"  # iCE40HX8K: 7 680 logic cells, the largest iCE40 nextpnr 0.4 knows but the UP5K's 5 280
@@ -300,37 +300,12 @@ def main():
 
 
 def plot(rows, a):
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("hw_pnr: python3-matplotlib not found: no plot", file=sys.stderr)
-        return 0
-    for fmt in sorted({r["arith"] for r in rows}):
-        fig, ax = plt.subplots(figsize=(7, 4.5))
-        for unit, marker in (("classic", "o"), ("counter", "s"), ("interleave", "^"), ("segment", "v"), ("pipelined", "D")):
-            pts = sorted((r["luts"], r["pixels_per_us"], r["pixels_per_us_min"], r["pixels_per_us_max"], r["lanes"])
-                         for r in rows if r["unit"] == unit and r["arith"] == fmt and r["fits"])
-            if not pts:
-                continue
-            ax.errorbar([p[0] for p in pts], [p[1] for p in pts], yerr=[[p[1] - p[2] for p in pts], [p[3] - p[1] for p in pts]],
-                        marker=marker, label=unit, capsize=2)
-            for x, y, _, _, n in pts:
-                if unit not in ("classic", "counter"):
-                    ax.annotate(str(n), (x, y), textcoords="offset points", xytext=(3, 3), fontsize=7)
-        ax.set_xscale("log")
-        ax.set_xlabel("area: iCE40 LUTs of the unit (Yosys synth_ice40), %s" % fmt)
-        ax.set_ylabel("pixels per µs = Fmax × pixels/clock, %s" % os.path.basename(a.scene))
-        ax.set_title("Throughput in time against area, iCE40%s (median of seeds, bars: spread)" % DEVICE.upper())
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend()
-        fig.tight_layout()
-        path = os.path.join(a.out, "hw-pnr-throughput-area-%s.png" % fmt.replace(":", "-").replace(".", "_"))
-        fig.savefig(path, dpi=110)
-        print("plot:", path)
-    return 0
-
+    return plot_throughput_area(
+        rows, a.out, "hw-pnr-throughput-area", "hw_pnr", "luts", "pixels_per_us",
+        ("area: iCE40 LUTs of the unit (Yosys synth_ice40)",
+         "pixels per µs = Fmax × pixels/clock, %s" % os.path.basename(a.scene),
+         "Throughput in time against area, iCE40%s (median of seeds, bars: spread)" % DEVICE.upper()),
+        spread=("pixels_per_us_min", "pixels_per_us_max"), keep=lambda r: r["fits"])
 
 if __name__ == "__main__":
     sys.exit(main())

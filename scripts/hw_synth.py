@@ -220,36 +220,54 @@ def main():
     return plot(rows, a)
 
 
-def plot(rows, a):
+UNIT_MARKERS = (("classic", "o"), ("counter", "s"), ("interleave", "^"), ("segment", "v"), ("pipelined", "D"))
+
+
+def plot_throughput_area(rows, out, stem, prog, x, y, labels, spread=None, keep=lambda r: True):
+    """One plot per format of throughput (row key y) against area (row key x), a line per unit, the lane counts
+    of the multi-lane units annotated; spread=(low key, high key) draws error bars. labels: (x label, y label,
+    title), the x label followed by the format. Shared by hw_synth.py and hw_pnr.py."""
     try:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError:
-        print("hw_synth: python3-matplotlib not found: no plot", file=sys.stderr)
+        print("%s: python3-matplotlib not found: no plot" % prog, file=sys.stderr)
         return 0
     for fmt in sorted({r["arith"] for r in rows}):
         fig, ax = plt.subplots(figsize=(7, 4.5))
-        for unit, marker in (("classic", "o"), ("counter", "s"), ("interleave", "^"), ("segment", "v"), ("pipelined", "D")):
-            pts = sorted((r["gates"], r["pixels_per_clock"], r["lanes"]) for r in rows if r["unit"] == unit and r["arith"] == fmt)
+        for unit, marker in UNIT_MARKERS:
+            pts = sorted(((r[x], r[y], r["lanes"], r) for r in rows if r["unit"] == unit and r["arith"] == fmt and keep(r)),
+                         key=lambda p: p[:3])
             if not pts:
                 continue
-            ax.plot([p[0] for p in pts], [p[1] for p in pts], marker=marker, label=unit)
-            for g, t, n in pts:
+            xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+            if spread:
+                ax.errorbar(xs, ys, yerr=[[p[1] - p[3][spread[0]] for p in pts], [p[3][spread[1]] - p[1] for p in pts]],
+                            marker=marker, label=unit, capsize=2)
+            else:
+                ax.plot(xs, ys, marker=marker, label=unit)
+            for px, py, n, _ in pts:
                 if unit not in ("classic", "counter"):
-                    ax.annotate(str(n), (g, t), textcoords="offset points", xytext=(3, 3), fontsize=7)
+                    ax.annotate(str(n), (px, py), textcoords="offset points", xytext=(3, 3), fontsize=7)
         ax.set_xscale("log")
-        ax.set_xlabel("area: gates after synthesis (Yosys synth + abc), %s" % fmt)
-        ax.set_ylabel("pixels per modeled clock, %s" % os.path.basename(a.scene))
-        ax.set_title("Throughput against area (lanes annotated)")
+        ax.set_xlabel("%s, %s" % (labels[0], fmt))
+        ax.set_ylabel(labels[1])
+        ax.set_title(labels[2])
         ax.grid(True, which="both", alpha=0.3)
         ax.legend()
         fig.tight_layout()
-        path = os.path.join(a.out, "hw-throughput-area-%s.png" % fmt.replace(":", "-").replace(".", "_"))
+        path = os.path.join(out, "%s-%s.png" % (stem, fmt.replace(":", "-").replace(".", "_")))
         fig.savefig(path, dpi=110)
         print("plot:", path)
     return 0
 
+
+def plot(rows, a):
+    return plot_throughput_area(rows, a.out, "hw-throughput-area", "hw_synth", "gates", "pixels_per_clock",
+                                ("area: gates after synthesis (Yosys synth + abc)",
+                                 "pixels per modeled clock, %s" % os.path.basename(a.scene),
+                                 "Throughput against area (lanes annotated)"))
 
 if __name__ == "__main__":
     sys.exit(main())
