@@ -273,10 +273,10 @@ def main():
     result_path = os.path.join(a.out, "hw-pnr.json")
     rows = json.load(open(result_path))["rows"] if a.resume and os.path.exists(result_path) else []
     done = {(r["unit"], r["lanes"], r["arith"]) for r in rows}
-    os.makedirs(a.out, exist_ok=True)
     with tempfile.TemporaryDirectory() as work:
-        if a.quick:
+        if a.quick:  # writes nothing to OUT
             return quick(work)
+        os.makedirs(a.out, exist_ok=True)
         for config in unit_configs(a.formats.split(","), [int(n) for n in a.lanes.split(",")]):
             if (config[0], config[1], "fixed:%d.%d" % config[2:]) in done:
                 continue

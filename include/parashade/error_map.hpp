@@ -45,9 +45,9 @@ int error_colour_index(double error, double top, const ErrorScale& scale = Error
 RenderedImage error_map_image(const std::vector<double>& errors, int width, int height, const ErrorScale& scale);
 
 // The scale of such a map as a picture of its own: a colour bar from 0 (bottom) to `top`, ticks placed on
-// `scale` and labelled in levels, under the title "levels, <scale name>"; the top tick reads "<top> max" when
-// `top_is_max`. At least `height` rows tall (the map's height, so that it stands beside the map), more when the
-// bar needs them.
+// `scale` and labelled in levels, under a title of two lines, "levels" and the scale's name; the top tick reads
+// "<top> max" when `top_is_max`. At least `height` rows tall (the map's height, so that it stands beside the
+// map), more when the bar needs them.
 RenderedImage error_legend_image(double top, bool top_is_max, const ErrorScale& scale, int height);
 
 }  // namespace parashade
