@@ -298,9 +298,7 @@ class TuneRun {
     plain.kernel_shape = base_->options.kernel_shape;
     plain.work_group_size = base_->options.work_group_size;
     plain.plan.reset();
-    if (plain.tile_size == o.tile_size && plain.work_items == o.work_items && plain.kernel_shape == o.kernel_shape &&
-        plain.work_group_size == o.work_group_size && !o.plan)
-      return verified_bytes_[shading] = bytes;
+    if (tuned_params(plain) == tuned_params(o)) return verified_bytes_[shading] = bytes;  // o is the default layout
     const ResolvedRender reference = with_options(*base_, plain);
     RenderSession session(reference);
     const Frame& g = session.frame();

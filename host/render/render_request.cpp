@@ -128,7 +128,9 @@ void take_device_layout(ResolvedRender& r, const RenderOptions& asked) {
   s.work_group_size = asked.work_group_size ? kFromOption : chosen;
   const bool device_shape = r.request.device_kernel_shape && r.mode == DeviceMode::one;
   s.kernel_shape = tuned ? kFromTuneCache : device_shape ? kFromDevice : kFromOption;
-  if (tuned || asked.work_group_size) return;
+  // An entry tuned at the default work-group (0) gets the device's, as an untuned run does: the lanes
+  // default (256) may be over the device's largest work-group.
+  if (r.options.work_group_size != 0) return;
   const int n = device_work_group_size(r.devices.front()->info(), r.options.kernel_shape, r.options.tile_size);
   if (n != r.options.group_size()) r.options.work_group_size = n;
 }
