@@ -112,10 +112,14 @@ INLINE int max_lane(intV v) {
 #endif
 
 /* Read prefetch of the cache line at p (any address space): a hint, no effect on results. Only where the
- * kernel is compiled for the CPU itself (PoCL's CPU devices): a device that interprets or compiles for
- * another target need not know the intrinsic (Oclgrind refuses the kernel: "Undefined external function
- * llvm.prefetch"). */
-#if defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
+ * kernel is compiled for the CPU itself (the host's CPU_DEVICE: PoCL's CPU devices, Intel's CPU runtime, whose
+ * OpenCL prefetch() is an out-of-line call but whose compiler emits prefetcht0 for the intrinsic): a device that
+ * interprets or compiles for another target need not know the intrinsic (Oclgrind refuses the kernel:
+ * "Undefined external function llvm.prefetch"). */
+#ifndef CPU_DEVICE
+#define CPU_DEVICE 0
+#endif
+#if CPU_DEVICE && defined(__clang__)
 #define PREFETCH_LINE(p) __builtin_prefetch((p), 0, 3)
 #else
 #define PREFETCH_LINE(p)

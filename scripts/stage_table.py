@@ -7,6 +7,11 @@ same machine.
     scripts/stage_table.py --before old/parashade --after build/parashade \\
         --scene scenes/teapot.json --scene sphere_2m --methods gouraud,phong --frames 40 --rounds 3
 
+Two devices on one binary (alternated runs, as bench/README.md's Run DD):
+
+    scripts/stage_table.py --before build/parashade --before-options "--device pthread" \
+        --after build/parashade --after-options "--device 'Intel(R) OpenCL'" --scene scenes/bunny.json --size 1920x1080
+
 A scene is a file, or sphere_131k / sphere_2m (scenes/sphere.json re-tessellated as bench_llvmpipe's). A method
 may carry render options after it: --methods "phong,combined:0 --triangle-choice bound --max-error 4".
 Prints a Markdown table (ms, before -> after); --json writes the figures.
@@ -39,11 +44,11 @@ def scene_file(name, tmp):
     return path
 
 
-def stages(binary, scene, method, frames, tmp, size=None):
+def stages(binary, scene, method, frames, tmp, size=None, options=""):
     report = os.path.join(tmp, "report.json")
     words = shlex.split(method)  # the method, then its own render options
     cmd = [binary, "render", scene, "-o", os.path.join(tmp, "image.png"), "--method", words[0], "--frames", str(frames),
-           "--no-error", "-q", "--report", report] + words[1:] + (["--size", size] if size else [])
+           "--no-error", "-q", "--report", report] + words[1:] + (["--size", size] if size else []) + shlex.split(options)
     run = subprocess.run(cmd, capture_output=True, text=True)
     if run.returncode != 0:
         sys.exit(f"stage_table.py: {' '.join(cmd)} failed ({run.returncode}): {run.stderr.strip()}")
@@ -55,6 +60,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--before", required=True, help="parashade binary before the change")
     ap.add_argument("--after", required=True, help="parashade binary after it")
+    ap.add_argument("--before-options", default="", help="render options of the before side only (e.g. its --device)")
+    ap.add_argument("--after-options", default="", help="render options of the after side only")
     ap.add_argument("--scene", action="append", required=True, help="scene file or sphere_131k / sphere_2m (repeat)")
     ap.add_argument("--methods", default="gouraud,phong", help="comma-separated; each may carry render options")
     ap.add_argument("--frames", type=int, default=40)
@@ -71,7 +78,8 @@ def main():
                 for i in range(args.rounds):
                     # Each round in the other order, so a phase change within a round favours neither binary.
                     for side in ("before", "after") if i % 2 == 0 else ("after", "before"):
-                        runs[side].append(stages(getattr(args, side), scene, method, args.frames, tmp, args.size))
+                        runs[side].append(stages(getattr(args, side), scene, method, args.frames, tmp, args.size,
+                                               getattr(args, side + "_options")))
                         print(f"[{name} {method} {side}] frame {runs[side][-1]['total_ms']:.2f} ms", file=sys.stderr)
                 row = {"scene": os.path.splitext(os.path.basename(name))[0], "method": method}
                 for side in runs:
@@ -84,7 +92,8 @@ def main():
         print(f"| {r['scene']} | {r['method']} | " + " | ".join(cells) + " |")
     if args.json:
         with open(args.json, "w") as f:
-            json.dump({"schema": schema("stages"), "before": args.before, "after": args.after, "frames": args.frames, "rounds": args.rounds,
+            json.dump({"schema": schema("stages"), "before": args.before, "after": args.after,
+                       "before_options": args.before_options, "after_options": args.after_options, "frames": args.frames, "rounds": args.rounds,
                        "size": args.size, "rows": rows}, f, indent=1)
 
 

@@ -147,6 +147,8 @@ bool better_default(const DeviceInfo& a, const DeviceInfo& b, bool threaded_pocl
 
 }  // namespace
 
+std::string device_build_options(const DeviceInfo& info) { return info.type == "cpu" ? " -D CPU_DEVICE=1" : ""; }
+
 bool is_simulator(const DeviceInfo& d) {
   return lower(d.platform).find("oclgrind") != std::string::npos || lower(d.name).find("oclgrind") != std::string::npos;
 }
@@ -213,7 +215,7 @@ cl::Device& Device::device() { return cl_->device; }
 
 cl::Program& Device::program(const std::vector<std::string>& files, const std::string& given) {
   const auto key = std::make_pair(files, given);
-  const std::string options = given + injected_failure(info_);
+  const std::string options = given + device_build_options(info_) + injected_failure(info_);
   const auto it = cl_->programs.find(key);
   if (it != cl_->programs.end()) return it->second;
   const std::string source = injected_warning(info_) + kernel_source(files);

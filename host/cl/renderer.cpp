@@ -212,7 +212,9 @@ std::optional<int> Renderer::Impl::deferral_threshold(const Scene& scene) const 
   return options_.deferral_threshold();
 }
 
-std::string Renderer::Impl::kernel_build() const { return kernel_() ? variant_->build_options() : std::string(); }
+std::string Renderer::Impl::kernel_build() const {
+  return kernel_() ? variant_->build_options() + device_build_options(device_.info()) : std::string();
+}
 
 int Renderer::Impl::work_items(int tiles) const {
   const int group = options_.group_size();

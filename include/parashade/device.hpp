@@ -36,6 +36,12 @@ struct DeviceInfo {
 // OpenCL platform at all.
 std::vector<DeviceInfo> list_devices();
 
+// The -D options that follow from the device itself rather than from a render option, appended to every
+// program built on it: " -D CPU_DEVICE=1" where the kernels are compiled for the CPU that runs them (PoCL's
+// CPU devices, Intel's CPU runtime), so they may prefetch with the compiler's own intrinsic; empty elsewhere
+// (Oclgrind, which reports a GPU, refuses that intrinsic).
+std::string device_build_options(const DeviceInfo& info);
+
 // An open device: context, in-order profiling queue, and a cache of built programs. Its OpenCL handles
 // (context(), queue(), device(), program()) are for code that includes <CL/opencl.hpp>.
 class Device {

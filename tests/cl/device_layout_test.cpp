@@ -55,6 +55,13 @@ TEST(DeviceLayout, TheSimulatorRunsAsACpu) {
   EXPECT_EQ(device_work_items(kOclgrind, 2040), 256);
 }
 
+TEST(DeviceLayout, OnlyACpuPrefetchesWithTheCompilersIntrinsic) {
+  // Intel's runtime compiles OpenCL's prefetch() as a call: the kernels prefetch by the intrinsic on a CPU
+  // device (device.hpp), which Oclgrind refuses and a GPU's compiler need not know.
+  for (const DeviceInfo& d : {kPthread, kIntel}) EXPECT_EQ(device_build_options(d), " -D CPU_DEVICE=1") << d.platform;
+  for (const DeviceInfo& d : {kOclgrind, kGpu}) EXPECT_EQ(device_build_options(d), "") << d.platform;
+}
+
 TEST(DeviceLayout, AGpuTakesTheLanesShape) {
   EXPECT_TRUE(fills_lanes_with_work_items(kGpu));
   EXPECT_EQ(device_kernel_shape(kGpu), KernelShape::lanes);
