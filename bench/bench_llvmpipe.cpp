@@ -6,6 +6,8 @@
 //   fill_limit/WxH                     a kernel that only writes every pixel: the device's ceiling
 //   plane_fill_limit/WxH               every pixel's Gouraud colour and depth from planes, packed and
 //                                      written: the least per-pixel work of a full-screen triangle
+//   phong_plane_fill_limit/WxH         every pixel's normal and position from planes, normalized, lit by
+//                                      fullscreen_quad's lights, packed and written (phong_plane_fill.hpp)
 // Frame time: llvmpipe — clear, draw, glReadPixels (the meshes stay in vertex buffers uploaded once
 // before timing, as an application keeps them); parashade — the renderer's whole frame (host vertex
 // stage, clip and cull, setup, binning with the upload of the frame's triangles, kernel, read-back).
@@ -48,6 +50,7 @@
 #include "parashade/image.hpp"
 #include "parashade/lane_utilization.hpp"
 #include "parashade/metrics.hpp"
+#include "parashade/phong_plane_fill.hpp"
 #include "parashade/reference.hpp"
 #include "parashade/renderer.hpp"
 #include "parashade/tile_choice.hpp"
@@ -212,6 +215,23 @@ void parashade_frame(benchmark::State& state, const std::string& case_name, cons
   set_error_counters(state, case_name, *scene, last->image);
 }
 
+// The Phong floor at w x h with the full-screen quad's lights, material and viewer (phong_plane_fill.hpp).
+void phong_fill_limit(benchmark::State& state, int w, int h) {
+  const Scene* scene = scene_or_skip(state, "fullscreen_quad", w, h);
+  if (!scene) return;
+  PhongPlaneFill fill(bench_device(), *scene, w, h);
+  for (int i = 0; i < 2; ++i) fill.run_ms();
+  double sum_ms = 0.0;
+  for (auto _ : state) {
+    const double ms = fill.run_ms();
+    state.SetIterationTime(ms * 1e-3);
+    sum_ms += ms;
+  }
+  const double frame_ms = sum_ms / double(state.iterations());
+  state.counters["frame_ms"] = frame_ms;
+  state.counters["mpixel_per_s"] = double(w) * h / (frame_ms * 1e3);
+}
+
 // The fastest repetition beside Google Benchmark's median: on a shared machine other processes only add
 // time, so the minimum of interleaved repetitions is the steadier estimate of a frame's own cost.
 double minimum(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); }
@@ -257,6 +277,11 @@ void register_all(const std::vector<std::string>& scenes, const std::vector<std:
           ->Unit(benchmark::kMillisecond)
           ->ComputeStatistics("min", minimum);
     }
+    benchmark::RegisterBenchmark(("phong_plane_fill_limit/" + size).c_str(),
+                                 [=](benchmark::State& st) { phong_fill_limit(st, w, h); })
+        ->UseManualTime()
+        ->Unit(benchmark::kMillisecond)
+        ->ComputeStatistics("min", minimum);
     for (const bool plane : {false, true})
       benchmark::RegisterBenchmark(((plane ? "plane_fill_limit/" : "fill_limit/") + size).c_str(),
                                    [=](benchmark::State& st) { run_fill_limit(st, bench_device(), w, h, plane); })

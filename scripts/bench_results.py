@@ -98,7 +98,7 @@ def benchmark_rows(doc, aggregate="median"):
         row["name"] = name
         row["peer"] = parts[0]
         row["scene"] = parts[1] if len(parts) > 1 else ""
-        row["size"] = parts[2] if len(parts) > 2 else (parts[1] if parts[0] in ("fill_limit", "plane_fill_limit") else "")
+        row["size"] = parts[2] if len(parts) > 2 else (parts[1] if parts[0] in ("fill_limit", "plane_fill_limit", "phong_plane_fill_limit") else "")
         row["method"] = parts[3] if len(parts) > 3 else ""
         rows[name] = row
     return list(rows.values())

@@ -43,7 +43,7 @@ def main():
             v = b.get(key)
             if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
                 problems.append(f"{name}: {key} = {v}")
-        if name.startswith(("fill_limit", "plane_fill_limit")):
+        if name.startswith(("fill_limit", "plane_fill_limit", "phong_plane_fill_limit")):
             continue
         peers.add(name.split("/")[0])
         if not (b.get("peak_rss_mib", 0) > 0):

@@ -293,13 +293,26 @@ def ratio_table(rows):
 
 
 def fill_table(rows):
-    lines = ["| size | fill limit ms | fullscreen_quad parashade Gouraud ms | x fill limit | "
-             "fullscreen_quad llvmpipe Gouraud ms |", "|---|---|---|---|---|"]
+    """The full-screen quad's frames against the floors of its size: the fill limit, the Gouraud plane floor and
+    the Phong floor (bench_llvmpipe; a floor missing from the run shows as -)."""
+    lines = ["| size | fill limit ms | Gouraud floor ms | quad Gouraud ms | x fill limit | x Gouraud floor | "
+             "Phong floor ms | quad Phong ms | x Phong floor | quad llvmpipe Gouraud ms |", "|---|---|---|---|---|---|---|---|---|---|"]
+
+    def ms(r, digits=3):
+        return f"{r['frame_ms']:.{digits}f}" if r else "-"
+
+    def ratio(a, b):
+        return f"**{a['frame_ms'] / b['frame_ms']:.2f}**" if a and b else "-"
+
     for f in sorted([r for r in rows if r["peer"] == "fill_limit"], key=lambda r: int(r["size"].split("x")[0])):
-        q = find(rows, peer="parashade", scene="fullscreen_quad", size=f["size"], method="gouraud")
-        l = find(rows, peer="llvmpipe", scene="fullscreen_quad", size=f["size"], method="gouraud")
-        lines.append(f"| {f['size']} | {f['frame_ms']:.3f} | {q['frame_ms']:.3f} | **{q['frame_ms'] / f['frame_ms']:.2f}** | "
-                     f"{l['frame_ms']:.3f} |" if q and l else f"| {f['size']} | {f['frame_ms']:.3f} | - | - | - |")
+        size = f["size"]
+        plane = find(rows, peer="plane_fill_limit", size=size)
+        phong_floor = find(rows, peer="phong_plane_fill_limit", size=size)
+        qg = find(rows, peer="parashade", scene="fullscreen_quad", size=size, method="gouraud")
+        qp = find(rows, peer="parashade", scene="fullscreen_quad", size=size, method="phong")
+        lg = find(rows, peer="llvmpipe", scene="fullscreen_quad", size=size, method="gouraud")
+        lines.append(f"| {size} | {ms(f)} | {ms(plane)} | {ms(qg)} | {ratio(qg, f)} | {ratio(qg, plane)} | "
+                     f"{ms(phong_floor, 2)} | {ms(qp, 2)} | {ratio(qp, phong_floor)} | {ms(lg)} |")
     return "\n".join(lines)
 
 
