@@ -1,7 +1,8 @@
 /* Shades one frame. A work-item renders TILE x TILE screen tiles one after another (tiles
  * g, g + G, g + 2G, ... for work-item g of G: few work-items, because PoCL pays a fixed cost per
  * work-group, and interleaved tiles, so every work-item gets a share of the busy screen areas).
- * A tile (render_tile) is cleared (tile_state.h), its triangle list walked in primitive order (tile_walk.h: the
+ * A tile (render_tile) is cleared (tile_state.h) or filled by a first triangle that covers it (tile_fill.h), its
+ * triangle list walked in primitive order (tile_walk.h: the
  * unit path, the stamps or the rows, each finding the spans of all a triangle's rows in the tile at once, rows as
  * vector lanes, then shading VEC pixels at a time as vector lanes), a deferred tile shaded after its walk
  * (deferred_shade.h), and the tile written once (tile_write.h). The method (method_*.h, chosen by the host)
@@ -21,6 +22,9 @@
 #include "deferred_shade.h"
 #endif
 #include "tile_write.h"
+#if TILE_FILL
+#include "tile_fill.h"
+#endif
 
 /* One tile: cleared, its triangles walked in primitive order, a deferred tile shaded after its walk, then
  * written; in the units' depth pass (PLAN_PASS 1) a virtual tile, whose walk only offers depth keys. */
@@ -38,9 +42,16 @@ INLINE void render_tile(const FrameArgs* f, int tile, uint begin, uint end) {
   intV winner[TILE_ARRAY];
   const int deferred = (int)(end - begin) >= DEFER_MIN_TRIANGLES;
 #endif
+#if TILE_FILL
+  int done;
+  const uint first = fill_or_clear(f, begin, end, tile_x, tile_y, depth, cr, cg, cb, &done DEFER_ARGS);
+  if (done) return;
+#else
+  const uint first = begin;
   clear_tile(depth, cr, cg, cb, f->background DEFER_ARGS);
+#endif
   TileCounts counts = {0, 0, 0};
-  for (uint k = begin; k < end; ++k) {
+  for (uint k = first; k < end; ++k) {
     const uint ti = f->tile_tris[k];
     if (k + PREFETCH_AHEAD < end) prefetch_triangle(f, f->tile_tris[k + PREFETCH_AHEAD]);
     walk_triangle(f, ti, tile_x, tile_y, depth, cr, cg, cb, &counts DEFER_ARGS);

@@ -36,6 +36,14 @@
 #if STAMPS && !PLAIN_FRAME
 #error "STAMPS: the plain frame only"
 #endif
+/* A tile's first triangles are checked against the whole tile before its walk (tile_fill.h): the stamps' layout,
+ * not the combined method's segment walk. */
+#ifndef TILE_FILL /* -D TILE_FILL=0: the clear and the walk for every tile (bench_kernel_ab's B) */
+#define TILE_FILL (STAMPS && !COMBINED)
+#endif
+#if TILE_FILL && (!STAMPS || COMBINED)
+#error "TILE_FILL: the stamps of the plain frame, not the combined method"
+#endif
 /* A deferred tile is shaded a stamp at a time after its walk. */
 #if DEFER_STAMPS && !STAMPS
 #error "DEFER_STAMPS: the stamps only"
