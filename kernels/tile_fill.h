@@ -1,9 +1,10 @@
 /* A tile's first triangles before its walk (TILE_FILL: the stamps of the plain frame, not the combined method):
  * those that miss the tile wholly are skipped, and when the next covers all of it, its depth and shading are
  * written to every stamp without the clear, the depth test or the spans; otherwise the tile is cleared and walked
- * as before; a covered tile that no later triangle meets is written straight to the frame. The same operations per pixel as shade_stamp's on a cleared tile, where every lane passes (a covered
- * pixel's z is finite, below the clear's INFINITY), so the same values: only the clear and the coverage work are
- * saved, which is most of a large triangle's cost (the full-screen quad). */
+ * as before. A covered tile that no later triangle meets is written straight to the frame (flat, Gouraud; Phong
+ * fills a deferred tile's depth and winners only). The same operations per pixel as shade_stamp's on a cleared
+ * tile, where every lane passes (a covered pixel's z is finite, below the clear's INFINITY), so the same values:
+ * only the clear and the coverage work are saved, which is most of a large triangle's cost (the full-screen quad). */
 #ifndef PARASHADE_TILE_FILL_H
 #define PARASHADE_TILE_FILL_H
 
@@ -32,8 +33,9 @@ INLINE int tile_cover(__global const TriangleGeometry* t, int tile_x, int tile_y
   return boxed && rect_covered(t, lo, hi, dy_lo, dy_hi) ? TILE_COVERED : TILE_PARTLY;
 }
 
-/* Triangle ti's depth and shading at every pixel of the tile (a deferred tile: its depth and ti as every pixel's
- * winner, shaded after the walk). */
+/* Triangle ti's depth and shading at every pixel of the tile; with DEFER_STAMPS (Phong, a deferred tile only) its
+ * depth and ti as every pixel's winner, shaded after the walk: Phong's shading is not compiled here again, which
+ * would cost its build time (24 lights: 18 -> 25 s cold on PoCL). */
 INLINE void fill_tile(const FrameArgs* f, uint ti, int tile_x, int tile_y, floatV* depth, colourV* cr, colourV* cg,
                       colourV* cb DEFER_DECL) {
   __global const TriangleGeometry* t = &f->tris[ti];
@@ -45,12 +47,10 @@ INLINE void fill_tile(const FrameArgs* f, uint ti, int tile_x, int tile_y, float
       const int slot = sy * STAMPS_X + sx;
       depth[slot] = (t->z_ref + t->z_ddy * fdy) + t->z_ddx * frel;
 #if DEFER_STAMPS
-      if (deferred) {
-        winner[slot] = (intV)(int)ti;
-        continue;
-      }
-#endif
+      winner[slot] = (intV)(int)ti;
+#else
       SHADE_STAMP_PIXELS(attr, fdy, frel, &cr[slot], &cg[slot], &cb[slot], f->lights, f->materials, f->viewer);
+#endif
     }
   }
 }
@@ -62,7 +62,8 @@ INLINE int rest_missed(const FrameArgs* f, uint k, uint end, int tile_x, int til
   return 1;
 }
 
-/* A tile that triangle ti alone covers: shaded and written straight to the frame a row segment at a time, without
+#if !DEFER_STAMPS
+/* A tile that triangle ti alone covers (flat, Gouraud): shaded and written straight to the frame a row segment at a time, without
  * the tile's arrays; each pixel's depth and colour as fill_tile's (the same planes at the same offsets), packed as
  * write_tile packs them. The tile lies inside the triangle's box, so inside the screen. */
 INLINE void write_covered_tile(const FrameArgs* f, uint ti, int tile_x, int tile_y) {
@@ -80,10 +81,12 @@ INLINE void write_covered_tile(const FrameArgs* f, uint ti, int tile_x, int tile
     }
   }
 }
+#endif
 
 /* The tile's list from `begin`: the triangles that miss it skipped; then the next, when it covers the tile, written
- * straight to the frame if no later one meets the tile, else filled in; else the tile cleared. Returns where the
- * walk goes on; *done when the tile is written already (every triangle missed it: the background). */
+ * straight to the frame if no later one meets the tile (flat, Gouraud), else filled in (Phong: in a deferred tile);
+ * else the tile cleared. Returns where the walk goes on; *done when the tile is written already (every triangle
+ * missed it: the background). */
 INLINE uint fill_or_clear(const FrameArgs* f, uint begin, uint end, int tile_x, int tile_y, floatV* depth,
                           colourV* cr, colourV* cg, colourV* cb, int* done DEFER_DECL) {
   uint k = begin;
@@ -94,12 +97,17 @@ INLINE uint fill_or_clear(const FrameArgs* f, uint begin, uint end, int tile_x, 
     write_background_tile(f, tile_x, tile_y);
     return end;
   }
+#if DEFER_STAMPS
+  const int fills = cover == TILE_COVERED && deferred;
+#else
   if (cover == TILE_COVERED && rest_missed(f, k + 1, end, tile_x, tile_y)) {
     write_covered_tile(f, f->tile_tris[k], tile_x, tile_y);
     return end;
   }
+  const int fills = cover == TILE_COVERED;
+#endif
   *done = 0;
-  if (cover == TILE_COVERED) {
+  if (fills) {
     fill_tile(f, f->tile_tris[k], tile_x, tile_y, depth, cr, cg, cb DEFER_ARGS);
     return k + 1;
   }
