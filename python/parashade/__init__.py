@@ -72,6 +72,15 @@ def render(scene, **options):
     return RenderResult(_parashade.render(words, kept))
 
 
+def render_command(words):
+    """render's words as the command line takes them, the scene first (["scenes/sphere.json", "--method", "phong",
+    "-o", "x.png"]): for scripts that hold command lines (scripts/render_report.py). render() is the same with
+    keyword arguments."""
+    words = [os.fspath(w) for w in words]
+    kept = [_scene_key(words[0])] + words[1:] if words else []
+    return RenderResult(_parashade.render(words, kept))
+
+
 def _report_of(command, words):
     """Runs `command` in this process with --report into a temporary file; returns (exit code, report)."""
     with tempfile.TemporaryDirectory(prefix="parashade-") as tmp:
