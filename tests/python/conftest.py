@@ -19,6 +19,14 @@ def run_cli(words, cwd=None):
     return subprocess.run([BINARY] + list(words), capture_output=True, text=True, cwd=cwd)
 
 
+def cli_words(options):
+    """Keyword options as the command's words, for the command-line side of a comparison (--name value)."""
+    words = []
+    for k, v in options.items():
+        words += ["--" + k.replace("_", "-"), str(v)]
+    return words
+
+
 # The report's keys that depend on the run (its time, the machine's load, the date, the command line that made
 # it) or on where the image went, by name; everything else must be equal.
 UNTIMED_SKIP = {"created_utc", "host", "command_line", "image", "timing", "mpixel_per_s", "mtriangle_per_s"}

@@ -2,7 +2,7 @@
 (issue 49; the CLI's trust cases, docs/robustness.md)."""
 import pytest
 
-from conftest import run_cli, scene
+from conftest import cli_words, run_cli, scene
 
 # (options of render, the exception's class name)
 CASES = [
@@ -14,13 +14,6 @@ CASES = [
     ({"units": "sierpinski:1", "coverage": "dda"}, "ConfigError"),     # a combination the table refuses
     ({"device": "no-such-device"}, "DeviceError"),
 ]
-
-
-def cli_words(options):
-    words = []
-    for k, v in options.items():
-        words += ["--" + k.replace("_", "-"), str(v)]
-    return words
 
 
 @pytest.mark.parametrize("options,kind", CASES, ids=[str(c[0]) for c in CASES])

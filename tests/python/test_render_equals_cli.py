@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from conftest import run_cli, scene, untimed
+from conftest import cli_words, run_cli, scene, untimed
 
 CASES = {
     "gouraud": {"method": "gouraud"},
@@ -17,18 +17,11 @@ CASES = {
 }
 
 
-def words_of(options):
-    words = []
-    for k, v in options.items():
-        words += ["--" + k.replace("_", "-"), str(v)]
-    return words
-
-
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_image_and_report_equal_the_commands(parashade, tmp_path, case):
     options = dict(CASES[case], size="320x180", frames=2, no_tuned=True)
     cli_png, cli_json = tmp_path / "cli.png", tmp_path / "cli.json"
-    words = words_of({k: v for k, v in options.items() if k != "no_tuned"}) + ["--no-tuned", "-q"]
+    words = cli_words({k: v for k, v in options.items() if k != "no_tuned"}) + ["--no-tuned", "-q"]
     proc = run_cli(["render", scene("teapot.json"), "-o", str(cli_png), "--report", str(cli_json)] + words)
     assert proc.returncode == 0, proc.stderr
 
