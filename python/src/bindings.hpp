@@ -2,6 +2,7 @@
 // The C++ side of the Python module parashade (docs/python.md): what python/parashade/__init__.py calls.
 // Each function takes the command's arguments as words ("--method", "phong"), which the command's own
 // CLI11 definition parses, so every option name, default and message is the command line's.
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -24,8 +25,9 @@ int run_command(const std::vector<std::string>& words);
 
 // The kept devices, programs and last renderer dropped (the module's parashade.clear_cache()).
 void clear_cache();
-// The last renderer alone dropped: a command run in between (tune) may have changed what it resolved to.
-void forget_kept_render();
+// The module's lock (one call at a time: the devices, the kept render and the report's command line are
+// shared), with the last renderer dropped: a command run in between (tune) may change what it resolved to.
+std::unique_lock<std::mutex> hold_without_kept_render();
 
 // The library's errors as the exceptions of parashade.errors, each carrying the command's message and exit code.
 void register_error_translation();

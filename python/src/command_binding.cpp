@@ -14,7 +14,7 @@ namespace parashade::python {
 
 int run_command(const std::vector<std::string>& words) {
   pybind11::gil_scoped_release unlocked;
-  forget_kept_render();  // tune writes the tune cache the kept render's tuned entry came from
+  const std::unique_lock<std::mutex> lock = hold_without_kept_render();  // tune writes the tune cache
   CLI::App app;
   app.require_subcommand(1, 1);
   const std::vector<cli::Command> commands = cli::add_commands(app);

@@ -107,10 +107,11 @@ pybind11::dict render(const std::vector<std::string>& words, const std::vector<s
   return out;
 }
 
-void forget_kept_render() {
+std::unique_lock<std::mutex> hold_without_kept_render() {
   Kept& k = kept();
-  const std::lock_guard<std::mutex> lock(k.mutex);
+  std::unique_lock<std::mutex> lock(k.mutex);
   k.session.reset(), k.resolved.reset(), k.key.clear();
+  return lock;
 }
 
 void clear_cache() {
