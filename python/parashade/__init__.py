@@ -9,6 +9,8 @@ import json
 import os
 import tempfile
 
+import numpy as np
+
 from . import _parashade
 from .errors import ConfigError, DeviceError, Error, InputError, UsageError  # noqa: F401
 from .options import option_words
@@ -32,14 +34,14 @@ class Scene:
 
 
 class RenderResult:
-    """image: H x W x 4 uint8 (RGBA, alpha 255 where covered), or with float=True H x W x 3 float32 of the
-    unclamped values in 8-bit levels; rgba: the 8-bit image always. report: the render report's dict
+    """image: H x W x 4 uint8 (RGBA, alpha 255 where covered), or with float=True H x W x 4 float32: the unclamped
+    colour in 8-bit levels and the same alpha; rgba: the 8-bit image always. report: the render report's dict
     (docs/reports.md); frame_ms, stages_ms, error: its median frame, its stage medians and its error figures."""
 
     def __init__(self, raw):
         self.rgba = raw["rgba"]
-        self.float_rgb = raw["rgb_float"]
-        self.image = self.rgba if self.float_rgb is None else self.float_rgb
+        rgb = raw["rgb_float"]
+        self.image = self.rgba if rgb is None else np.dstack((rgb, self.rgba[..., 3].astype(np.float32)))
         self.report = json.loads(raw["report"])
         self.frame_ms = self.report["frame_ms"]
         self.stages_ms = self.report.get("stages_ms")

@@ -40,9 +40,9 @@ def test_image_and_report_equal_the_commands(parashade, tmp_path, case):
 
 def test_float_image_is_the_unclamped_read_back(parashade):
     r = parashade.render(scene("sphere.json"), size=(96, 64), frames=1, float=True, q=True)
-    assert r.image.dtype == np.float32 and r.image.shape == (64, 96, 3)
+    assert r.image.dtype == np.float32 and r.image.shape == (64, 96, 4)
     covered = r.rgba[..., 3] == 255
-    assert covered.any()
+    assert covered.any() and np.array_equal(r.image[..., 3], r.rgba[..., 3].astype(np.float32))
     # The 8-bit image is the float values rounded and clamped: within one level where covered.
-    diff = np.abs(np.clip(r.image, 0, 255) - r.rgba[..., :3].astype(np.float32))[covered]
+    diff = np.abs(np.clip(r.image[..., :3], 0, 255) - r.rgba[..., :3].astype(np.float32))[covered]
     assert diff.max() <= 1.0
