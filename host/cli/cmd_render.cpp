@@ -438,10 +438,7 @@ std::shared_ptr<RenderArgs> parsed_render_args(const std::vector<std::string>& w
   try {
     app.parse(args);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) throw UsageError("--help and --version are the command's: parashade render --help");
-    std::string message;
-    for (const std::string& l : parse_error_lines(app, e)) message += (message.empty() ? "" : "\n") + l;
-    throw UsageError(message);
+    throw UsageError(parse_error_message(app, e));
   }
   note_options_given(*a, *cmd);
   return a;

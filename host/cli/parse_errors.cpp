@@ -58,6 +58,13 @@ std::vector<std::string> parse_error_lines(CLI::App& app, const CLI::ParseError&
   return lines;
 }
 
+std::string parse_error_message(CLI::App& app, const CLI::ParseError& e) {
+  if (e.get_exit_code() == 0) return "--help and --version are the command line's: parashade [COMMAND] --help";
+  std::string message;
+  for (const std::string& l : parse_error_lines(app, e)) message += (message.empty() ? "" : "\n") + l;
+  return message;
+}
+
 int report_parse_error(CLI::App& app, const CLI::ParseError& e) {
   if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
   for (const std::string& l : parse_error_lines(app, e)) std::cerr << "parashade: error: " << l << "\n";

@@ -25,10 +25,7 @@ int run_command(const std::vector<std::string>& words) {
   try {
     app.parse(reversed);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) throw UsageError("--help and --version are the command's: parashade COMMAND --help");
-    std::string message;
-    for (const std::string& l : cli::parse_error_lines(app, e)) message += (message.empty() ? "" : "\n") + l;
-    throw UsageError(message);
+    throw UsageError(cli::parse_error_message(app, e));
   }
   check_environment();
   for (const cli::Command& c : commands)
