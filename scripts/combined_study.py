@@ -86,7 +86,9 @@ def ceiling(r, phong, gouraud):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--binary", default=os.path.join(os.path.dirname(__file__), "..", "build", "parashade"))
+    ap.add_argument("--binary", default=None,
+                    help="a parashade command to run each render in a process of its own (default: the Python module "
+                         "parashade in this process, docs/python.md; a build without -DPARASHADE_PYTHON=ON has only the command)")
     ap.add_argument("--scenes", nargs="+", default=["scenes/teapot.json", "scenes/bunny.json"])
     ap.add_argument("--methods", nargs="+", default=DEFAULT_METHODS,
                     help="method[@max-error][ extra render options], e.g. 'combined:auto@2 --highlight-test'")

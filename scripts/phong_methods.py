@@ -35,7 +35,9 @@ def render(args, tmp, scene, normalize, specular):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--binary", default=os.path.join(os.path.dirname(__file__), "..", "build", "parashade"))
+    ap.add_argument("--binary", default=None,
+                    help="a parashade command to run each render in a process of its own (default: the Python module "
+                         "parashade in this process, docs/python.md; a build without -DPARASHADE_PYTHON=ON has only the command)")
     ap.add_argument("--scenes", nargs="+", default=["scenes/sphere.json", "scenes/teapot.json"])
     ap.add_argument("--frames", type=int, default=11)
     ap.add_argument("--device", default="")

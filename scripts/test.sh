@@ -11,7 +11,7 @@
 set -eu
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh --test
-./scripts/build.sh
+./scripts/build.sh -DPARASHADE_PYTHON=ON  # the Python module and its tests too (docs/python.md)
 export POCL_CACHE_DIR="${POCL_CACHE_DIR:-$PWD/build/pocl-cache}"
 ctest --test-dir build --output-on-failure --parallel "$(nproc)" --timeout 600
 if [ "${PARASHADE_QUICK:-0}" = 1 ]; then

@@ -80,17 +80,18 @@ void with_option_names(const FrameConfig& config, DeviceMode devices, const std:
   }
 }
 
-ResolvedRender resolve_with_option_names(const RenderRequest& request, CommandFiles& files) {
+ResolvedRender resolve_with_option_names(const RenderRequest& request, CommandFiles& files, DeviceCache* devices) {
   try {
-    return resolve_render(request, files);
+    return resolve_render(request, files, devices);
   } catch (const DeviceSelectorError& e) {
     throw UsageError(std::string("--device: ") + e.what());
   } catch (const ConfigError& e) {
     const DeviceMode mode = request.options.plan && is_sub_device_selector(request.device) ? DeviceMode::unit_sub_devices
                             : is_device_list(request.device)                             ? DeviceMode::bands
                                                                                          : DeviceMode::one;
-    throw UsageError(option_names(e, request.options, mode) + ": " + e.what() +
-                     " (parashade combinations lists what combines)");
+    throw ConfigError(option_names(e, request.options, mode) + ": " + e.what() +
+                          " (parashade combinations lists what combines)",
+                      e.axes);  // still a usage error (exit 2), named by the options
   }
 }
 

@@ -60,8 +60,10 @@ Scene load_scene_at(const std::string& file, const std::optional<std::pair<int, 
 // the values at fault.
 void with_option_names(const FrameConfig& config, DeviceMode devices, const std::function<void()>& call);
 
-// resolve_render, its refusals named by the command line's options.
-ResolvedRender resolve_with_option_names(const RenderRequest& request, CommandFiles& files);
+// resolve_render (with `devices` kept between requests, when given), its refusals named by the command
+// line's options.
+ResolvedRender resolve_with_option_names(const RenderRequest& request, CommandFiles& files,
+                                         DeviceCache* devices = nullptr);
 
 // What resolving decided that the user should hear before the work, on stderr: the warnings (the scene's, a
 // tune cache's), then the notes (the default device taken, the tuned entry, ...; none with -q). Every

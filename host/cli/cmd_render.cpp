@@ -1,6 +1,7 @@
 // `parashade render SCENE -o IMAGE`: parse the command line into a render request, resolve it, render it
 // (render_step.hpp), write the outputs and print the summary. --distribute runs the frame across MPI ranks
 // (distributed.hpp) from the same request.
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 
@@ -8,8 +9,10 @@
 #include "common_options.hpp"
 #include "commands.hpp"
 #include "device_option.hpp"
+#include "parse_errors.hpp"
 #include "plan_cli.hpp"
 #include "progress.hpp"
+#include "render_call.hpp"
 #include "../render/error_pictures.hpp"
 #include "parashade/combined.hpp"
 #include "parashade/device_layout.hpp"
@@ -402,10 +405,8 @@ void add_output_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
   add_error_picture_options(*cmd, a->error_scale, a->error_legend, a->flip, a->flip_map);
 }
 
-}  // namespace
-
-Command add_render_command(CLI::App& app) {
-  auto a = std::make_shared<RenderArgs>();
+// render's subcommand and every option of it, bound to `a`.
+CLI::App* add_render_options(CLI::App& app, const std::shared_ptr<RenderArgs>& a) {
   auto* cmd = app.add_subcommand("render", "Render a scene (JSON) or a bare mesh file; print frame time and error");
   cmd->add_option("scene", a->scene, "Scene file (.json) or mesh (.obj .off .ply .stl)")->required();
   cmd->add_option("-o,--output", a->output, "Image to write; format from the extension (png, jpg, tif, ppm, exr ...)")
@@ -415,11 +416,58 @@ Command add_render_command(CLI::App& app) {
   add_layout_options(cmd, a);
   add_output_options(cmd, a);
   add_quiet_flag(*cmd, a->quiet);
+  return cmd;
+}
+
+// What only the count of options given says: an explicit configuration, an explicit kernel shape.
+void note_options_given(RenderArgs& a, const CLI::App& cmd) {
+  a.explicit_config = cmd.count("--tile") + cmd.count("--work-items") + cmd.count("--cu") + cmd.count("--partition") +
+                          cmd.count("--kernel-shape") + cmd.count("--work-group-size") > 0;
+  a.shape_given = cmd.count("--kernel-shape") > 0;
+}
+
+// render's arguments through its own definition, -o optional; a parse error as render's message.
+std::shared_ptr<RenderArgs> parsed_render_args(const std::vector<std::string>& words) {
+  CLI::App app;
+  auto a = std::make_shared<RenderArgs>();
+  CLI::App* cmd = add_render_options(app, a);
+  cmd->get_option("--output")->required(false);
+  std::vector<std::string> args = {"render"};
+  args.insert(args.end(), words.begin(), words.end());
+  std::reverse(args.begin(), args.end());  // CLI11 takes a vector last word first
+  try {
+    app.parse(args);
+  } catch (const CLI::ParseError& e) {
+    throw UsageError(parse_error_message(app, e));
+  }
+  note_options_given(*a, *cmd);
+  return a;
+}
+
+}  // namespace
+
+RenderCall parse_render_call(const std::vector<std::string>& words) {
+  const std::shared_ptr<RenderArgs> a = parsed_render_args(words);
+  if (!a->distribute.empty() || !a->rank_partition.empty() || !a->read_scene.empty())
+    throw UsageError("--distribute, --rank-partition and --read-scene run a frame across MPI ranks: parashade render "
+                     "under mpirun (docs/distributed.md), not in one process");
+  RenderCall c;
+  c.outputs = render_outputs(*a);
+  if (c.outputs.image.empty() && (!c.outputs.report.empty() || c.outputs.pictures() || !c.outputs.error_legend.empty()))
+    throw UsageError("--report and the pictures are written with the image: give -o IMAGE too");
+  c.request = render_request(*a, c.outputs);
+  c.check_resolved = [a, outputs = c.outputs](const ResolvedRender& r) {
+    check_device_use(*a, r, outputs);
+    print_notes(*a, r);
+  };
+  return c;
+}
+
+Command add_render_command(CLI::App& app) {
+  auto a = std::make_shared<RenderArgs>();
+  CLI::App* cmd = add_render_options(app, a);
   return {cmd, [a, cmd]() {
-            a->explicit_config = cmd->count("--tile") + cmd->count("--work-items") + cmd->count("--cu") +
-                                     cmd->count("--partition") + cmd->count("--kernel-shape") +
-                                     cmd->count("--work-group-size") > 0;
-            a->shape_given = cmd->count("--kernel-shape") > 0;
+            note_options_given(*a, *cmd);
             return run_render(*a);
           }};
 }

@@ -1,6 +1,7 @@
 #pragma once
 // The parashade subcommands: each registers its options on the CLI11 app and runs when chosen.
 #include <functional>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -21,5 +22,7 @@ Command add_tune_command(CLI::App& app);
 Command add_scaling_command(CLI::App& app);
 Command add_unit_error_command(CLI::App& app);
 Command add_vectors_command(CLI::App& app);
+// Every command, registered on `app` in the order --help lists them (main, the Python module).
+std::vector<Command> add_commands(CLI::App& app);
 
 }  // namespace parashade::cli

@@ -31,14 +31,7 @@ int run(int argc, char** argv) {
       "(the command line or a PARASHADE_* variable), 3 bad input (a file: scene, mesh, image, an output's folder),\n"
       "4 OpenCL or device failure, 128 + N ended by signal N.\n"
       "Run 'parashade COMMAND --help' for a command's options.");
-  const std::vector<cli::Command> commands = {cli::add_devices_command(app), cli::add_phong_study_command(app),
-                                              cli::add_render_command(app), cli::add_plan_command(app),
-                                              cli::add_tune_command(app),
-                                              cli::add_scaling_command(app),
-                                              cli::add_unit_error_command(app),
-                                              cli::add_combinations_command(app),
-                                              cli::add_vectors_command(app),
-                                              cli::add_compare_command(app)};
+  const std::vector<cli::Command> commands = cli::add_commands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

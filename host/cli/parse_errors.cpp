@@ -45,8 +45,7 @@ std::vector<std::string> command_names(const CLI::App& app) {
   return names;
 }
 
-int report_parse_error(CLI::App& app, const CLI::ParseError& e) {
-  if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+std::vector<std::string> parse_error_lines(CLI::App& app, const CLI::ParseError& e) {
   const std::vector<CLI::App*> chosen = app.get_subcommands();
   const CLI::App* command = chosen.empty() ? nullptr : chosen.front();
   // Words no one took come first, whatever CLI11 threw: CLI11 checks the required options before it
@@ -56,9 +55,22 @@ int report_parse_error(CLI::App& app, const CLI::ParseError& e) {
   if (command)
     for (const std::string& l : unknown_words(app, *command, command->remaining())) lines.push_back(l);
   if (lines.empty() || !dynamic_cast<const CLI::ExtrasError*>(&e)) lines.push_back(e.what());
-  for (const std::string& l : lines) std::cerr << "parashade: error: " << l << "\n";
-  std::cerr << (command ? "Run 'parashade " + command->get_name() + " --help' for its options.\n"
-                        : std::string("Run 'parashade --help' for the commands.\n"));
+  return lines;
+}
+
+std::string parse_error_message(CLI::App& app, const CLI::ParseError& e) {
+  if (e.get_exit_code() == 0) return "--help and --version are the command line's: parashade [COMMAND] --help";
+  std::string message;
+  for (const std::string& l : parse_error_lines(app, e)) message += (message.empty() ? "" : "\n") + l;
+  return message;
+}
+
+int report_parse_error(CLI::App& app, const CLI::ParseError& e) {
+  if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+  for (const std::string& l : parse_error_lines(app, e)) std::cerr << "parashade: error: " << l << "\n";
+  const std::vector<CLI::App*> chosen = app.get_subcommands();
+  std::cerr << (chosen.empty() ? std::string("Run 'parashade --help' for the commands.\n")
+                               : "Run 'parashade " + chosen.front()->get_name() + " --help' for its options.\n");
   return int(ExitCode::usage);
 }
 

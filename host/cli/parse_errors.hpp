@@ -14,6 +14,13 @@ namespace parashade::cli {
 // Returns the exit code.
 int report_parse_error(CLI::App& app, const CLI::ParseError& e);
 
+// The lines report_parse_error prints for a parse error other than --help and --version, without the
+// "parashade: error: " prefix (front ends that raise them: the Python module).
+std::vector<std::string> parse_error_lines(CLI::App& app, const CLI::ParseError& e);
+// The same as one message (lines joined by newlines), --help and --version included as a usage error: what
+// such a front end throws (UsageError).
+std::string parse_error_message(CLI::App& app, const CLI::ParseError& e);
+
 // The commands' names, in the order --help lists them.
 std::vector<std::string> command_names(const CLI::App& app);
 

@@ -49,24 +49,38 @@ DeviceMode mode_of(const std::string& selector, const RenderOptions& o) {
   return is_device_list(selector) ? DeviceMode::bands : DeviceMode::one;
 }
 
-void open_devices_for(ResolvedRender& r, const Selector& s) {
-  if (r.mode == DeviceMode::bands) {
-    std::vector<std::string> left_out;
-    for (auto& d : opened(s, [&] { return open_devices(s.text, &left_out); })) r.devices.push_back(std::move(d));
-    std::string names;
-    for (const std::string& n : left_out) names += (names.empty() ? "" : ", ") + n;
-    if (!names.empty() && !r.request.quiet)
-      r.notes.push_back("parashade: note: device list 'all' leaves out " + names +
-                        "; name the devices to split across them (A,B)");
-  } else if (r.mode == DeviceMode::unit_sub_devices) {
+// The devices `s` names for `mode`, opened; `left_out`: what "all" leaves out.
+std::vector<std::shared_ptr<Device>> open_selected(DeviceMode mode, const Selector& s, std::vector<std::string>& left_out) {
+  std::vector<std::shared_ptr<Device>> devices;
+  if (mode == DeviceMode::bands) {
+    for (auto& d : opened(s, [&] { return open_devices(s.text, &left_out); })) devices.push_back(std::move(d));
+  } else if (mode == DeviceMode::unit_sub_devices) {
     SubDevices sub = opened(s, [&] { return open_sub_devices(s.text, SubDeviceContext::shared); });
-    r.devices.push_back(std::move(sub.parent));
-    for (auto& d : sub.subs) r.devices.push_back(std::move(d));
+    devices.push_back(std::move(sub.parent));
+    for (auto& d : sub.subs) devices.push_back(std::move(d));
   } else {
-    r.devices.push_back(opened(s, [&] { return open_device(s.text); }));
-    if (takes_default_device(s.text) && !r.request.quiet)
-      r.notes.push_back(default_device_note(r.devices.front()->info()));
+    devices.push_back(opened(s, [&] { return open_device(s.text); }));
   }
+  return devices;
+}
+
+void open_devices_for(ResolvedRender& r, const Selector& s, DeviceCache* cache) {
+  std::vector<std::string> left_out;
+  const DeviceCache::Entry* kept = cache ? cache->find(r.mode, s.text) : nullptr;
+  if (kept) {
+    r.devices = kept->devices;
+    left_out = kept->left_out;
+  } else {
+    r.devices = open_selected(r.mode, s, left_out);
+    if (cache) cache->keep(r.mode, s.text, {r.devices, left_out});
+  }
+  std::string names;
+  for (const std::string& n : left_out) names += (names.empty() ? "" : ", ") + n;
+  if (!names.empty() && !r.request.quiet)
+    r.notes.push_back("parashade: note: device list 'all' leaves out " + names +
+                      "; name the devices to split across them (A,B)");
+  if (r.mode == DeviceMode::one && takes_default_device(s.text) && !r.request.quiet)
+    r.notes.push_back(default_device_note(r.devices.front()->info()));
 }
 
 // The tune cache's best entry for this device, build and problem, applied to r.options; a refused or
@@ -188,6 +202,15 @@ void check_frame_memory(const Scene& scene, const RenderRequest& request) {
 
 }  // namespace
 
+const DeviceCache::Entry* DeviceCache::find(DeviceMode mode, const std::string& selector) const {
+  const auto it = entries_.find({int(mode), selector});
+  return it == entries_.end() ? nullptr : &it->second;
+}
+
+void DeviceCache::keep(DeviceMode mode, const std::string& selector, Entry entry) {
+  entries_[{int(mode), selector}] = std::move(entry);
+}
+
 void check_render_options(const RenderOptions& options, DeviceMode mode) {
   check_work_group_size(options);
   if (options.kernel_shape == KernelShape::lanes && options.defer_min_triangles > 0)
@@ -216,7 +239,7 @@ KernelShape device_shape_for(const DeviceInfo& device, const RenderOptions& opti
   }
 }
 
-ResolvedRender resolve_render(RenderRequest request, CommandFiles& files) {
+ResolvedRender resolve_render(RenderRequest request, CommandFiles& files, DeviceCache* devices) {
   ResolvedRender r;
   const Selector selector = selector_of(request.device);
   r.mode = mode_of(selector.text, request.options);
@@ -233,7 +256,7 @@ ResolvedRender resolve_render(RenderRequest request, CommandFiles& files) {
   r.warnings = r.scene.warnings;
   r.options = request.options;
   r.request = std::move(request);
-  open_devices_for(r, selector);
+  open_devices_for(r, selector, devices);
   if (r.mode == DeviceMode::one || r.mode == DeviceMode::unit_sub_devices) apply_tuned(r);
   take_device_shape(r);
   resolve_layout(r);

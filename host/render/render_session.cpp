@@ -94,8 +94,12 @@ std::string RenderSession::kernel_build() const { return renderer_ ? renderer_->
 std::vector<DeviceShare> RenderSession::shares() const { return split_ ? split_->shares() : std::vector<DeviceShare>{}; }
 
 RenderResult render(const ResolvedRender& r, const std::function<void(int, int)>& progress) {
-  RenderResult out = describe(r);
   RenderSession session(r);
+  return render(r, session, progress);
+}
+
+RenderResult render(const ResolvedRender& r, RenderSession& session, const std::function<void(int, int)>& progress) {
+  RenderResult out = describe(r);
   run_frames(r, session, out, progress);
   out.work_items = session.work_items(out.stats.tiles);
   out.deferral = session.deferral_threshold();

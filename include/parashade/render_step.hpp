@@ -8,6 +8,7 @@
 // figures and every count the report and the summary print (render_report.hpp).
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -88,10 +89,27 @@ struct ResolvedRender {
   std::vector<std::string> warnings;  // the scene's warnings and a tune cache that could not be read
 };
 
+// Devices kept open between requests, by device mode and selector, for a caller that resolves many requests
+// in one process (the Python module, docs/python.md): a later request with the same selector takes the same
+// devices, and with them the programs they built (device.hpp's program cache, keyed by the kernel variant).
+class DeviceCache {
+ public:
+  struct Entry {
+    std::vector<std::shared_ptr<Device>> devices;
+    std::vector<std::string> left_out;  // what "all" left out, for its note
+  };
+  const Entry* find(DeviceMode mode, const std::string& selector) const;
+  void keep(DeviceMode mode, const std::string& selector, Entry entry);
+
+ private:
+  std::map<std::pair<int, std::string>, Entry> entries_;
+};
+
 // Resolves `request`. The scene's files are declared to `files` as inputs (with request.tune_cache) and
 // files.check() runs before any device is opened. Throws UsageError, InputError, DeviceError, and
-// ConfigError (combinations.hpp) for a refused combination, which names the axes at fault.
-ResolvedRender resolve_render(RenderRequest request, CommandFiles& files);
+// ConfigError (combinations.hpp) for a refused combination, which names the axes at fault. `devices`, when
+// given, supplies devices opened before for the same selector and keeps those opened now.
+ResolvedRender resolve_render(RenderRequest request, CommandFiles& files, DeviceCache* devices = nullptr);
 
 // The same scene on the same devices with other options (tune's candidates, scaling's configurations):
 // `options` checked against the table and resolved as resolve_render resolves them (tile 0: the scene's
@@ -169,9 +187,6 @@ struct RenderResult {
   std::vector<std::string> warnings;  // a split frame's dropped devices
 };
 
-// Renders a resolved request: warm-up, the timed frames (`progress(done, total)` after each, when given),
-// then the error figures and the register events.
-RenderResult render(const ResolvedRender& r, const std::function<void(int, int)>& progress = {});
 
 // The renderer(s) of a resolved render kept between frames, for callers that interleave frames of
 // several configurations (scaling, tune's confirmation, --against).
@@ -194,5 +209,12 @@ class RenderSession {
   std::unique_ptr<Renderer> renderer_;
   std::unique_ptr<SplitRenderer> split_;
 };
+
+// Renders a resolved request: warm-up, the timed frames (`progress(done, total)` after each, when given),
+// then the error figures and the register events.
+RenderResult render(const ResolvedRender& r, const std::function<void(int, int)>& progress = {});
+// The same with a session kept by the caller (made from `r`, which it reads at each frame): a caller that
+// renders the same resolved request again (the Python module) keeps its renderer, buffers and kernels.
+RenderResult render(const ResolvedRender& r, RenderSession& session, const std::function<void(int, int)>& progress = {});
 
 }  // namespace parashade

@@ -2,7 +2,10 @@
 """scripts/combined_study.py's ceiling: worked by hand on made-up runs, and present, with both methods' pixels
 and --size passed on, in a real study of the sphere with Phong, Gouraud and one per-triangle choice.
 
-    combined_study_test.py SOURCE_DIR PARASHADE_BINARY
+    combined_study_test.py SOURCE_DIR PARASHADE_BINARY|module
+
+`module`: the study renders through the Python module (its default; PYTHONPATH names build/python), else
+through the command at PARASHADE_BINARY (--binary).
 """
 import json
 import os
@@ -16,6 +19,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from schema_store import errors, validator  # noqa: E402  (tests/schema: the schemas as validators)
 
 SOURCE, BINARY = sys.argv[1], sys.argv[2]
+BINARY_ARGS = [] if BINARY == "module" else ["--binary", BINARY]
 study = load_script(SOURCE, "combined_study")
 
 
@@ -51,7 +55,7 @@ check(study.pair_ratio(same, phong, "kernel") == 3.0, "ratio of two runs' kernel
 
 with tempfile.TemporaryDirectory() as tmp:
     out = os.path.join(tmp, "paired.json")
-    proc = subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "combined_study.py"), "--binary", BINARY,
+    proc = subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "combined_study.py")] + BINARY_ARGS + [
                            "--scenes", os.path.join(SOURCE, "scenes", "sphere.json"), "--size", "480x270", "--frames", "3",
                            "--pairing", "in-process", "--methods", "phong", "gouraud",
                            "combined:0@16 --triangle-choice bound", "--json", out],
@@ -71,7 +75,7 @@ with tempfile.TemporaryDirectory() as tmp:
 
 with tempfile.TemporaryDirectory() as tmp:
     out = os.path.join(tmp, "study.json")
-    proc = subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "combined_study.py"), "--binary", BINARY,
+    proc = subprocess.run([sys.executable, os.path.join(SOURCE, "scripts", "combined_study.py")] + BINARY_ARGS + [
                            "--scenes", os.path.join(SOURCE, "scenes", "sphere.json"), "--size", "960x540", "--frames", "1", "--methods",
                            "phong", "gouraud", "combined:0@16 --triangle-choice bound", "--json", out],
                           capture_output=True, text=True)

@@ -1,0 +1,13 @@
+// Every parashade command on one app (commands.hpp): the command line's and the Python module's.
+#include "commands.hpp"
+
+namespace parashade::cli {
+
+std::vector<Command> add_commands(CLI::App& app) {
+  return {add_devices_command(app),     add_phong_study_command(app), add_render_command(app),
+          add_plan_command(app),        add_tune_command(app),        add_scaling_command(app),
+          add_unit_error_command(app),  add_combinations_command(app), add_vectors_command(app),
+          add_compare_command(app)};
+}
+
+}  // namespace parashade::cli
