@@ -289,7 +289,22 @@ class Band {
   std::vector<float> v_;  // 14 rows: per image 7 (Y, Cx, Cz, edge, point, 2 scratch)
 };
 
+// Rows of one band of ldr_flip's: about four bands a host thread, 32 to 256 rows each.
+std::size_t band_rows(int height) { return balanced_chunk(std::size_t(height), 32, 256); }
+
 }  // namespace
+
+std::uint64_t ldr_flip_working_bytes(int width, int height, double ppd) {
+  if (width < 1 || height < 1 || !(ppd > 0 && ppd < 1e4)) return 0;
+  const Filters f(ppd);
+  const std::uint64_t rows = band_rows(height), bands = (std::uint64_t(height) + rows - 1) / rows;
+  const std::uint64_t in_flight = std::min<std::uint64_t>(bands, host_threads());
+  const std::uint64_t reach = 2 * std::uint64_t(std::max(f.spatial_radius, f.feature_radius));
+  // Band's planes: YCxCz 6, the spatial passes 8, the feature passes 6; and its 14 rows (v_).
+  const std::uint64_t per_band = (20 * (std::min<std::uint64_t>(rows, std::uint64_t(height)) + reach) + 14) *
+                                 std::uint64_t(width) * sizeof(float);
+  return in_flight * per_band;
+}
 
 std::vector<float> ldr_flip(const std::vector<float>& reference, const std::vector<float>& test, int width, int height,
                             double ppd) {
@@ -301,8 +316,7 @@ std::vector<float> ldr_flip(const std::vector<float>& reference, const std::vect
   const Filters filters(ppd);
   std::vector<float> map(n);
   const FlipJob job{{&reference, &test}, width, height, &filters, map.data()};
-  const std::size_t band = balanced_chunk(std::size_t(height), 32, 256);
-  parallel_for_ranges(std::size_t(height), band, [&](std::size_t y0, std::size_t y1) {
+  parallel_for_ranges(std::size_t(height), band_rows(height), [&](std::size_t y0, std::size_t y1) {
     Band b(job, int(y0), int(y1));
     for (std::size_t y = y0; y < y1; ++y) b.row(int(y));
   });

@@ -7,12 +7,12 @@
 #include "parashade/combined.hpp"
 #include "parashade/device_layout.hpp"
 #include "parashade/errors.hpp"
-#include "parashade/memory_budget.hpp"
 #include "parashade/render_step.hpp"
 #include "parashade/scene_files.hpp"
 #include "parashade/split_renderer.hpp"
 #include "parashade/sub_devices.hpp"
 #include "parashade/tile_choice.hpp"
+#include "frame_memory.hpp"
 #include "tune_cache.hpp"
 
 namespace parashade {
@@ -150,40 +150,6 @@ void note_error_floor(ResolvedRender& r) {
                 "more, as --method phong's is",
                 c.max_error, floor, phong);
   r.notes.push_back(text);
-}
-
-// Host bytes a pixel of what a render keeps beyond the frame it shades, rounded up from the peak resident
-// memory of 4096x4096 Phong frames with and without each option (+35, +7, +3.3 and +0.5; docs/robustness.md).
-// FLIP: its two float RGB inputs and its map (24 + 4; its bands of rows are a few MB whatever the frame).
-constexpr std::uint64_t kFloatBytesPerPixel = 40, kReferenceImageBytesPerPixel = 8, kErrorMapBytesPerPixel = 8,
-                        kTriangleMapBytesPerPixel = 4, kFlipBytesPerPixel = 28, kFlipMapBytesPerPixel = 4;
-
-FrameExtras frame_extras(const RenderRequest& request) {
-  FrameExtras x;
-  const auto add = [&x](const std::string& option, std::uint64_t bytes) {
-    x.bytes_per_pixel += bytes;
-    x.options += (x.options.empty() ? "" : ", ") + option;
-  };
-  if (request.options.float_output) add("--float", kFloatBytesPerPixel);
-  if (request.flip.enabled) add("--flip", kFlipBytesPerPixel);
-  for (const std::string& p : request.pictures)
-    add(p, p == "--reference-image" ? kReferenceImageBytesPerPixel
-           : p == "--error-map"     ? kErrorMapBytesPerPixel
-           : p == "--flip-map"      ? kFlipMapBytesPerPixel
-                                    : kTriangleMapBytesPerPixel);
-  return x;
-}
-
-// The loaded scene's objects and frame with the extras, before any frame is allocated (the scene's own
-// budget, judged while it loaded, leaves the extras out: it knows no render options).
-void check_frame_memory(const Scene& scene, const RenderRequest& request) {
-  const FrameExtras extras = frame_extras(request);
-  if (extras.bytes_per_pixel == 0) return;
-  std::vector<MemoryItem> objects;
-  for (const Object& o : scene.objects)
-    if (o.mesh) objects.push_back({"'" + o.name + "'", o.mesh->triangles.size(), o.mesh->positions.size()});
-  check_host_memory(request.scene_file.string() + " at " + std::to_string(scene.width) + "x" + std::to_string(scene.height),
-                    objects, scene.width, scene.height, extras);
 }
 
 }  // namespace
