@@ -143,7 +143,7 @@ RenderRequest render_request(const RenderArgs& a, const RenderOutputs& outputs) 
   r.frames = a.frames;
   r.warmup = a.warmup;
   r.error_figures = !a.no_error;
-  r.keep_reference = outputs.pictures();
+  r.keep_reference = outputs.needs_reference();
   r.pictures = outputs.picture_options();
   r.flip = {a.flip || !outputs.flip_map.empty(), outputs.against_exact, !outputs.flip_map.empty()};
   r.use_tuned = !a.no_tuned && !a.explicit_config;

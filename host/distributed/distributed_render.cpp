@@ -519,7 +519,7 @@ class RankRun {
     r.warnings = warnings_;
     r.distributed = std::move(figures);
     if (job_.request.error_figures)
-      r.errors = error_figures(sort_last_ ? *full_ : scene_, options_, r.image, job_.outputs.pictures(), job_.request.flip);
+      r.errors = error_figures(sort_last_ ? *full_ : scene_, options_, r.image, job_.outputs.needs_reference(), job_.request.flip);
     *lines = job_.outputs.write(r);
     *result = std::move(r);
   }
