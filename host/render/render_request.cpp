@@ -108,16 +108,20 @@ void resolve_layout(ResolvedRender& r) {
 }
 
 // The shape from the device where the request leaves it to the device, no tuned entry gave one and the frame
-// is on one device (device_shape_for); a shape the frame cannot take is said in a note.
+// is on one device (device_shape_for), and where it came from; a shape the frame cannot take is said in a note.
 void take_device_shape(ResolvedRender& r) {
-  if (!r.request.device_kernel_shape || !r.tuned.is_null() || r.mode != DeviceMode::one) return;
-  std::string refused;
-  r.options.kernel_shape = device_shape_for(r.devices.front()->info(), r.options, r.mode, &refused);
-  if (!refused.empty() && !r.request.quiet) r.notes.push_back("parashade: note: " + refused);
+  const bool tuned = !r.tuned.is_null();
+  r.sources.kernel_shape = tuned ? kFromTuneCache : kFromOption;
+  if (!r.request.device_kernel_shape || tuned || r.mode != DeviceMode::one) return;
+  const DeviceShape taken = device_shape_for(r.devices.front()->info(), r.options, r.mode);
+  r.options.kernel_shape = taken.shape;
+  r.sources.kernel_shape = taken.source;
+  if (!taken.refused.empty() && !r.request.quiet) r.notes.push_back("parashade: note: " + taken.refused);
 }
 
 // The work-group the device allows where neither the request nor a tuned entry gave one (after the tile is
-// known: the lanes shape's work-group is within its pixels), and where each layout setting came from.
+// known: the lanes shape's work-group is within its pixels), and where the other layout settings came from
+// (the shape's: take_device_shape).
 // `asked`: the request's options, before the tuned entry.
 void take_device_layout(ResolvedRender& r, const RenderOptions& asked) {
   const bool tuned = !r.tuned.is_null();
@@ -126,8 +130,6 @@ void take_device_layout(ResolvedRender& r, const RenderOptions& asked) {
   s.tile = asked.tile_size ? kFromOption : tuned ? kFromTuneCache : kFromFrame;
   s.work_items = asked.work_items ? kFromOption : chosen;
   s.work_group_size = asked.work_group_size ? kFromOption : chosen;
-  const bool device_shape = r.request.device_kernel_shape && r.mode == DeviceMode::one;
-  s.kernel_shape = tuned ? kFromTuneCache : device_shape ? kFromDevice : kFromOption;
   // An entry tuned at the default work-group (0) gets the device's, as an untuned run does: the lanes
   // default (256) may be over the device's largest work-group.
   if (r.options.work_group_size != 0) return;
@@ -165,20 +167,18 @@ void check_render_options(const RenderOptions& options, DeviceMode mode) {
   check_frame_config(o, mode);
 }
 
-KernelShape device_shape_for(const DeviceInfo& device, const RenderOptions& options, DeviceMode mode,
-                             std::string* refused) {
+DeviceShape device_shape_for(const DeviceInfo& device, const RenderOptions& options, DeviceMode mode) {
   RenderOptions o = options;
   o.kernel_shape = device_kernel_shape(device);
-  if (o.kernel_shape == options.kernel_shape) return o.kernel_shape;
+  if (o.kernel_shape == options.kernel_shape) return {o.kernel_shape, kFromDevice, ""};
   try {
     check_render_options(o, mode);
-    return o.kernel_shape;
+    return {o.kernel_shape, kFromDevice, ""};
   } catch (const Error& e) {  // ConfigError or UsageError: what the device's shape does not run
-    if (refused)
-      *refused = std::string("the ") + kernel_shape_name(options.kernel_shape) + " kernel shape on " + device.name +
-                 ", whose own is " + kernel_shape_name(o.kernel_shape) +
-                 " (docs/pipeline.md), which this frame cannot take: " + e.what();
-    return options.kernel_shape;
+    const std::string own = kernel_shape_name(o.kernel_shape);
+    return {options.kernel_shape, std::string(kFromOption) + " (the device's " + own + " refused: " + e.what() + ")",
+            std::string("the ") + kernel_shape_name(options.kernel_shape) + " kernel shape on " + device.name +
+                ", whose own is " + own + " (docs/pipeline.md), which this frame cannot take: " + e.what()};
   }
 }
 

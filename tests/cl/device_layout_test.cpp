@@ -73,19 +73,29 @@ TEST(DeviceLayout, AGpuTakesTheLanesShape) {
 }
 
 // What resolve_render takes without --kernel-shape (device_shape_for): the device's own shape where the table
-// of combinations allows it; a frame the lanes shape cannot take keeps the vector shape, and says why.
+// of combinations allows it; a frame the lanes shape cannot take keeps the vector shape, and says why, in the
+// note and in the shape's source (the layout line and the report's layout.sources), which then is not the
+// device's properties.
 TEST(DeviceLayout, AGpuKeepsTheVectorShapeForAFrameTheLanesShapeRefuses) {
   RenderOptions plain;
-  std::string refused;
-  EXPECT_EQ(device_shape_for(kGpu, plain, DeviceMode::one, &refused), KernelShape::lanes);
-  EXPECT_EQ(refused, "");
-  EXPECT_EQ(device_shape_for(kPthread, plain, DeviceMode::one, &refused), KernelShape::vector);
-  EXPECT_EQ(refused, "");
+  DeviceShape taken = device_shape_for(kGpu, plain, DeviceMode::one);
+  EXPECT_EQ(taken.shape, KernelShape::lanes);
+  EXPECT_EQ(taken.refused, "");
+  EXPECT_EQ(taken.source, "device properties");
+  taken = device_shape_for(kPthread, plain, DeviceMode::one);
+  EXPECT_EQ(taken.shape, KernelShape::vector);
+  EXPECT_EQ(taken.refused, "");
+  EXPECT_EQ(taken.source, "device properties");
   RenderOptions fixed;
   fixed.units = parse_units("counter");
   fixed.arith = parse_arith("fixed:12.12");
-  EXPECT_EQ(device_shape_for(kGpu, fixed, DeviceMode::one, &refused), KernelShape::vector);
-  EXPECT_NE(refused.find("the vector kernel shape on Some GPU, whose own is lanes"), std::string::npos) << refused;
+  taken = device_shape_for(kGpu, fixed, DeviceMode::one);
+  EXPECT_EQ(taken.shape, KernelShape::vector);
+  EXPECT_NE(taken.refused.find("the vector kernel shape on Some GPU, whose own is lanes"), std::string::npos)
+      << taken.refused;
+  EXPECT_EQ(taken.source.rfind("option (the device's lanes refused: ", 0), 0u) << taken.source;
+  EXPECT_NE(taken.source.find("units"), std::string::npos) << taken.source;  // the table's reason
+  EXPECT_EQ(taken.source.back(), ')') << taken.source;
 }
 
 }  // namespace
