@@ -98,5 +98,24 @@ TEST(DeviceLayout, AGpuKeepsTheVectorShapeForAFrameTheLanesShapeRefuses) {
   EXPECT_EQ(taken.source.back(), ')') << taken.source;
 }
 
+// The lanes shape's default work-group, one rule (frame_config.hpp's shape_work_group_size): what the options
+// resolve it to is what a device without a limit gets, at every tile size, before a tile is chosen (0) too.
+TEST(DeviceLayout, TheOptionsAndTheDeviceTakeOneDefaultWorkGroup) {
+  DeviceInfo unlimited = kGpu;
+  unlimited.max_work_group = 0;  // not reported: no limit
+  for (KernelShape shape : {KernelShape::vector, KernelShape::lanes})
+    for (int tile : {0, 8, 16, 32, 64}) {
+      RenderOptions o;
+      o.kernel_shape = shape;
+      o.tile_size = tile;
+      o.work_group_size = 0;
+      EXPECT_EQ(o.group_size(), device_work_group_size(unlimited, shape, tile))
+          << kernel_shape_name(shape) << " tile " << tile;
+      EXPECT_GE(o.group_size(), 1) << kernel_shape_name(shape) << " tile " << tile;
+    }
+  EXPECT_EQ(shape_work_group_size(KernelShape::lanes, 64), 256);
+  EXPECT_EQ(shape_work_group_size(KernelShape::lanes, 8), 64);  // within the tile's pixels
+}
+
 }  // namespace
 }  // namespace parashade
