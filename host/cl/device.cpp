@@ -224,7 +224,7 @@ cl::Program& Device::program(const std::vector<std::string>& files, const std::s
     rethrow_cl_error("creating program on '" + info_.name + "'");
   }
   const bool strict = kernel_warnings_are_errors();
-  SlowBuildNotice notice(info_.name, info_.platform);  // said while a build that is not cached compiles
+  SlowBuildNotice notice(info_.name, is_pocl(info_));  // said while a build that is not cached compiles
   CapturedStderr compiler_output;  // PoCL's compiler writes to stderr directly
   try {
     // -w: PoCL 3.1's compiler prints a bare "N warnings generated." to stderr on every fresh build

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "parashade/errors.hpp"
+#include "parashade/error_map.hpp"
 #include "parashade/parallel.hpp"
 
 namespace parashade {
@@ -354,22 +355,10 @@ std::vector<float> flip_input(const std::vector<glm::dvec3>& levels) {
 }
 
 RenderedImage flip_map_image(const std::vector<float>& map, int width, int height) {
-  if (width < 1 || height < 1 || map.size() != std::size_t(width) * std::size_t(height))
-    throw InputError("FLIP map: " + std::to_string(map.size()) + " values for a " + std::to_string(width) + "x" +
-                     std::to_string(height) + " image");
-  RenderedImage im;
-  im.width = width;
-  im.height = height;
-  im.rgba.resize(4 * map.size());
-  for (std::size_t p = 0; p < map.size(); ++p) {
+  return value_picture("FLIP map", map.size(), width, height, [&](std::size_t p) {
     const float e = std::isnan(map[p]) ? 0.0f : std::clamp(map[p], 0.0f, 1.0f);
-    const std::uint8_t* c = kMagma[std::lround(255.0f * e)];
-    im.rgba[4 * p] = c[0];
-    im.rgba[4 * p + 1] = c[1];
-    im.rgba[4 * p + 2] = c[2];
-    im.rgba[4 * p + 3] = 255;
-  }
-  return im;
+    return kMagma[std::lround(255.0f * e)];
+  });
 }
 
 }  // namespace parashade
