@@ -528,6 +528,20 @@ TEST_F(CliTune, BadRestrictionsAreUsageErrorsNamingTheExpression) {
   EXPECT_TRUE(nothing_written());
 }
 
+// --export-kt writes the restrictions as Python for Kernel Tuner: what has no Python reading there (muParser's
+// ?:, a function other than min, max and abs, a constant) is refused before the search, naming the expression.
+// Before: the search ran and the export held invalid Python ("tile>16 ? work_items<8 : 1").
+TEST_F(CliTune, RestrictionsWithoutAPythonReadingAreRefusedWithTheExport) {
+  const std::string kt = (out_dir() / "kt.json").string();
+  EXPECT_TRUE(fails_with(tune({"--restrict", "tile>16 ? work_items<8 : 1", "--export-kt", kt}), kUsage,
+                         {"--restrict 'tile>16 ? work_items<8 : 1'", "--export-kt", "the conditional a ? b : c"}));
+  EXPECT_TRUE(fails_with(tune({"--restrict", "sqrt(tile)<=8", "--export-kt", kt}), kUsage,
+                         {"--restrict 'sqrt(tile)<=8'", "the function 'sqrt'"}));
+  EXPECT_TRUE(fails_with(tune({"--restrict", "tile<_pi*20", "--export-kt", kt}), kUsage,
+                         {"--restrict 'tile<_pi*20'", "the constant '_pi'"}));
+  EXPECT_TRUE(nothing_written());
+}
+
 TEST_F(CliTune, TheParetoObjectivePrintsAndReportsTheSpeedErrorFront) {
   const RunResult r = tune({"--param", "tile=16,32", "--param", "work_items=0", "--param", "partition=none",
                             "--param", "method=gouraud,combined:2,phong", "--objective", "pareto"});
