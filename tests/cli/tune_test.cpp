@@ -173,6 +173,8 @@ TEST_F(CliTune, RenderWithGivesTheBestsParameters) {
   std::istringstream line(r.out.substr(at + 13, r.out.find('\n', at) - at - 13));
   std::vector<std::string> flags{std::istream_iterator<std::string>(line), std::istream_iterator<std::string>()};
   flags.push_back("--no-tuned");
+  // The work-group left to the device (the space's 0) is left out, as render's default: not --work-group-size 0.
+  EXPECT_EQ(std::find(flags.begin(), flags.end(), "--work-group-size"), flags.end()) << r.out;
   ASSERT_TRUE(succeeds(render(scene_, flags))) << r.out;
   const nlohmann::json rep = read_report();
   EXPECT_EQ(rep["tile"], best["tile"]);
