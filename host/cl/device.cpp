@@ -168,7 +168,7 @@ std::string left_out_of_all(const DeviceInfo& d, const std::vector<DeviceInfo>& 
 }
 
 std::string default_device_note(const DeviceInfo& d) {
-  return "parashade: device: " + d.name + " (" + d.platform + ", " + std::to_string(d.compute_units) +
+  return "device: " + d.name + " (" + d.platform + ", " + std::to_string(d.compute_units) +
          " compute unit" + (d.compute_units == 1 ? "" : "s") + "; the default: --device to choose)";
 }
 

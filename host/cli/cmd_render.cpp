@@ -15,6 +15,7 @@
 #include "parashade/device_layout.hpp"
 #include "parashade/distributed.hpp"
 #include "parashade/errors.hpp"
+#include "parashade/notes.hpp"
 #include "parashade/render_outputs.hpp"
 #include "parashade/render_report.hpp"
 #include "parashade/render_step.hpp"
@@ -173,8 +174,8 @@ std::vector<std::string> written_files(const RenderOutputs& o) {
 void print_notes(const RenderArgs& a, const ResolvedRender& r) {
   print_resolved(r);
   if (!r.options.units && r.options.unit_path() && !a.quiet)
-    std::cerr << "parashade: note: " << (r.options.arith.fixed ? "--arith " + a.arith : std::string("--coverage dda"))
-              << " runs on the classic unit (--units chooses another)\n";
+    print_note((r.options.arith.fixed ? "--arith " + a.arith : std::string("--coverage dda")) +
+               " runs on the classic unit (--units chooses another)");
 }
 
 // What the devices the request resolved to allow (after resolve: the selector may come from the environment).

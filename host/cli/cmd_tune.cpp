@@ -28,6 +28,7 @@
 #include "parashade/errors.hpp"
 #include "parashade/json_number.hpp"
 #include "parashade/metrics.hpp"
+#include "parashade/notes.hpp"
 #include "parashade/reference.hpp"
 #include "parashade/command_files.hpp"
 #include "parashade/render_step.hpp"
@@ -259,9 +260,9 @@ class TuneRun {
                 a_.strategy.c_str(), (unsigned long long)a_.seed);
     print_resolved(*base_);
     if (!points_.refusal_example.empty() && !a_.quiet)
-      std::cerr << "parashade: note: refused, e.g. " << points_.refusal_example << "\n";
+      print_note("refused, e.g. " + points_.refusal_example);
     if (const std::string stale = cache_->stale_entries(dev); !stale.empty() && !a_.quiet)
-      std::cerr << "parashade: note: " << stale << "\n";
+      print_note(stale);
     if (const std::string aside = cache_->set_aside(); !aside.empty()) std::cerr << "parashade: warning: " << aside << "\n";
   }
 

@@ -56,7 +56,7 @@ void open_devices_for(ResolvedRender& r, const Selector& s) {
     std::string names;
     for (const std::string& n : left_out) names += (names.empty() ? "" : ", ") + n;
     if (!names.empty() && !r.request.quiet)
-      r.notes.push_back("parashade: note: device list 'all' leaves out " + names +
+      r.notes.push_back("device list 'all' leaves out " + names +
                         "; name the devices to split across them (A,B)");
   } else if (r.mode == DeviceMode::unit_sub_devices) {
     SubDevices sub = opened(s, [&] { return open_sub_devices(s.text, SubDeviceContext::shared); });
@@ -116,7 +116,7 @@ void take_device_shape(ResolvedRender& r) {
   const DeviceShape taken = device_shape_for(r.devices.front()->info(), r.options, r.mode);
   r.options.kernel_shape = taken.shape;
   r.sources.kernel_shape = taken.source;
-  if (!taken.refused.empty() && !r.request.quiet) r.notes.push_back("parashade: note: " + taken.refused);
+  if (!taken.refused.empty() && !r.request.quiet) r.notes.push_back(taken.refused);
 }
 
 // The work-group the device allows where neither the request nor a tuned entry gave one (after the tile is
@@ -146,7 +146,7 @@ void note_error_floor(ResolvedRender& r) {
   if (!(c.max_error < floor)) return;
   char text[480];
   std::snprintf(text, sizeof text,
-                "parashade: note: --max-error %.3g is below its floor on this scene, %.3g levels: the 8-bit rounding "
+                "--max-error %.3g is below its floor on this scene, %.3g levels: the 8-bit rounding "
                 "(0.5) plus float Phong's own error (at most %.3g levels here, docs/error-bounds.md). The budget "
                 "bounds the distance to Phong's float image; against ideal Phong the image may be off by that much "
                 "more, as --method phong's is",

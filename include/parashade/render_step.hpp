@@ -84,7 +84,7 @@ struct ResolvedRender {
   std::vector<std::shared_ptr<Device>> devices;
   nlohmann::json tuned;                          // {cache, params, objective_ms}, or null
   LayoutSources sources;                         // where the shape, work-group, work-items and tile came from
-  std::vector<std::string> notes;     // for stderr before the work: the tuned entry taken, stale entries
+  std::vector<std::string> notes;     // notes for stderr before the work (print_note): the tuned entry taken, stale entries
   std::vector<std::string> warnings;  // the scene's warnings and a tune cache that could not be read
 };
 
