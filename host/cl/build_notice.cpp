@@ -21,8 +21,7 @@ bool first_notice(const std::string& device) {
   return shown.insert(device).second;
 }
 
-std::string notice_text(const std::string& device, const std::string& platform) {
-  const bool pocl = platform.find("Portable Computing Language") != std::string::npos;
+std::string notice_text(const std::string& device, bool pocl) {
   return "compiling kernels for " + device + (pocl ? " (" + pocl_kernel_cache_place() + ")" : "") + "...\n";
 }
 
@@ -30,14 +29,14 @@ std::string notice_text(const std::string& device, const std::string& platform) 
 
 void set_kernel_build_notices(bool on) { notices_on = on; }
 
-SlowBuildNotice::SlowBuildNotice(const std::string& device, const std::string& platform) {
+SlowBuildNotice::SlowBuildNotice(const std::string& device, bool pocl) {
   if (!notices_on) return;
   fd_ = ::fcntl(2, F_DUPFD_CLOEXEC, 3);
   if (fd_ < 0) return;
-  timer_ = std::thread([this, device, platform] {
+  timer_ = std::thread([this, device, pocl] {
     std::unique_lock<std::mutex> lock(mutex_);
     if (done_.wait_for(lock, kSlowBuild, [this] { return stopped_; }) || !first_notice(device)) return;
-    const std::string text = notice_text(device, platform);
+    const std::string text = notice_text(device, pocl);
     [[maybe_unused]] const ssize_t n = ::write(fd_, text.data(), text.size());  // a notice: nothing to do if lost
   });
 }

@@ -20,9 +20,10 @@ constexpr std::chrono::milliseconds kSlowBuild{500};
 
 class SlowBuildNotice {
  public:
-  // Starts the timer for a build on `device` of platform `platform`. Create it before CapturedStderr: the
-  // notice is written to the standard error this constructor found (the capture takes descriptor 2).
-  SlowBuildNotice(const std::string& device, const std::string& platform);
+  // Starts the timer for a build on `device`, `pocl` when PoCL runs it (the notice then names its kernel
+  // cache). Create it before CapturedStderr: the notice is written to the standard error this constructor
+  // found (the capture takes descriptor 2).
+  SlowBuildNotice(const std::string& device, bool pocl);
   ~SlowBuildNotice();  // stop()
   void stop();         // the build ended: nothing more is printed
   SlowBuildNotice(const SlowBuildNotice&) = delete;

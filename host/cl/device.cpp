@@ -170,7 +170,7 @@ std::string left_out_of_all(const DeviceInfo& d, const std::vector<DeviceInfo>& 
 }
 
 std::string default_device_note(const DeviceInfo& d) {
-  return "parashade: device: " + d.name + " (" + d.platform + ", " + std::to_string(d.compute_units) +
+  return "device: " + d.name + " (" + d.platform + ", " + std::to_string(d.compute_units) +
          " compute unit" + (d.compute_units == 1 ? "" : "s") + "; the default: --device to choose)";
 }
 
@@ -226,7 +226,7 @@ cl::Program& Device::program(const std::vector<std::string>& files, const std::s
     rethrow_cl_error("creating program on '" + info_.name + "'");
   }
   const bool strict = kernel_warnings_are_errors();
-  SlowBuildNotice notice(info_.name, info_.platform);  // said while a build that is not cached compiles
+  SlowBuildNotice notice(info_.name, is_pocl(info_));  // said while a build that is not cached compiles
   CapturedStderr compiler_output;  // PoCL's compiler writes to stderr directly
   try {
     // -w: PoCL 3.1's compiler prints a bare "N warnings generated." to stderr on every fresh build

@@ -16,8 +16,7 @@ KernelShape device_kernel_shape(const DeviceInfo& d) {
 }
 
 int device_work_group_size(const DeviceInfo& d, KernelShape shape, int tile) {
-  if (shape == KernelShape::vector) return 1;
-  int n = std::min(LANES_WORK_GROUP_DEFAULT, std::max(1, tile * tile));
+  int n = shape_work_group_size(shape, tile);
   // The largest power of two within the device's work-group (0: not reported, no limit).
   while (d.max_work_group > 0 && std::size_t(n) > d.max_work_group && n > 1) n /= 2;
   return n;

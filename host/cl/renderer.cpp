@@ -225,7 +225,7 @@ int Renderer::Impl::work_items(int tiles) const {
 }
 
 void check_work_group_size(const RenderOptions& o, const DeviceInfo* device) {
-  const int n = o.work_group_size == 0 && o.tile_size == 0 ? 1 : o.group_size();  // a default fits any tile
+  const int n = o.group_size();  // a default fits any tile
   const std::string what = "work-group size " + std::to_string(o.work_group_size ? o.work_group_size : n) +
                            " (--work-group-size)";
   if (o.work_group_size < 0 || n < 1 || (n & (n - 1)) != 0 || n > MAX_WORK_GROUP_SIZE)

@@ -5,6 +5,7 @@
 
 #include "parashade/errors.hpp"
 #include "parashade/memory_budget.hpp"
+#include "parashade/notes.hpp"
 #include "parashade/scene_files.hpp"
 #include "parashade/split_renderer.hpp"
 #include "parashade/sub_devices.hpp"
@@ -97,7 +98,7 @@ ResolvedRender resolve_with_option_names(const RenderRequest& request, CommandFi
 
 void print_resolved(const ResolvedRender& r) {
   for (const std::string& w : r.warnings) std::cerr << "parashade: warning: " << w << "\n";
-  for (const std::string& n : r.notes) std::cerr << n << "\n";
+  for (const std::string& n : r.notes) print_note(n);
 }
 
 }  // namespace parashade::cli

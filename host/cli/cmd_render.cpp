@@ -18,6 +18,7 @@
 #include "parashade/device_layout.hpp"
 #include "parashade/distributed.hpp"
 #include "parashade/errors.hpp"
+#include "parashade/notes.hpp"
 #include "parashade/render_outputs.hpp"
 #include "parashade/render_report.hpp"
 #include "parashade/render_step.hpp"
@@ -146,7 +147,7 @@ RenderRequest render_request(const RenderArgs& a, const RenderOutputs& outputs) 
   r.frames = a.frames;
   r.warmup = a.warmup;
   r.error_figures = !a.no_error;
-  r.keep_reference = outputs.pictures();
+  r.keep_reference = outputs.needs_reference();
   r.pictures = outputs.picture_options();
   r.flip = {a.flip || !outputs.flip_map.empty(), outputs.against_exact, !outputs.flip_map.empty()};
   r.use_tuned = !a.no_tuned && !a.explicit_config;
@@ -176,8 +177,8 @@ std::vector<std::string> written_files(const RenderOutputs& o) {
 void print_notes(const RenderArgs& a, const ResolvedRender& r) {
   print_resolved(r);
   if (!r.options.units && r.options.unit_path() && !a.quiet)
-    std::cerr << "parashade: note: " << (r.options.arith.fixed ? "--arith " + a.arith : std::string("--coverage dda"))
-              << " runs on the classic unit (--units chooses another)\n";
+    print_note((r.options.arith.fixed ? "--arith " + a.arith : std::string("--coverage dda")) +
+               " runs on the classic unit (--units chooses another)");
 }
 
 // What the devices the request resolved to allow (after resolve: the selector may come from the environment).

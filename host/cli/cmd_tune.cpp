@@ -28,6 +28,7 @@
 #include "parashade/errors.hpp"
 #include "parashade/json_number.hpp"
 #include "parashade/metrics.hpp"
+#include "parashade/notes.hpp"
 #include "parashade/reference.hpp"
 #include "parashade/command_files.hpp"
 #include "parashade/render_step.hpp"
@@ -151,7 +152,8 @@ void write_tune_report(const std::string& path, const nlohmann::json& report) {
 }
 
 // The command line's values (usage errors, before any file is read).
-void check_tune_args(const TuneArgs& a, TuneStrategy strategy) {
+// Returns the --restrict expressions, parsed (once: the run evaluates these).
+std::vector<TuneRestriction> check_tune_args(const TuneArgs& a, TuneStrategy strategy) {
   if (a.budget_runs < 1) throw UsageError("--budget-runs must be at least 1");
   if (a.budget_seconds < 0) throw UsageError("--budget-seconds must not be negative");
   if (a.frames < 1 || a.frames > kMaxFrames) throw UsageError("--frames must be 1.." + std::to_string(kMaxFrames));
@@ -167,14 +169,19 @@ void check_tune_args(const TuneArgs& a, TuneStrategy strategy) {
   // The space needs the device's compute units for its defaults; the explicit values are checked now.
   TuneSpace probe = default_tune_space(a.method, 1);
   for (const std::string& p : a.params) set_tune_param(probe, p);
-  parse_restrictions(a.restrict_exprs);
+  std::vector<TuneRestriction> restrictions = parse_restrictions(a.restrict_exprs);
+  // Kernel Tuner reads them as Python: one that does not translate stops the run now, not after the search.
+  if (!a.export_kt.empty())
+    for (const TuneRestriction& r : restrictions) r.python();
+  return restrictions;
 }
 
 // One tuning run: the scene on the device (the render step's base), the space, the cache, and what the
 // candidates measured.
 class TuneRun {
  public:
-  explicit TuneRun(const TuneArgs& a) : a_(a), strategy_(parse_tune_strategy(a.strategy)) {
+  TuneRun(const TuneArgs& a, std::vector<TuneRestriction> restrictions)
+      : a_(a), strategy_(parse_tune_strategy(a.strategy)), restrictions_(std::move(restrictions)) {
     request_.scene_file = a.scene;
     request_.size = checked_size(a.size);
     request_.device = a.device;
@@ -228,7 +235,6 @@ class TuneRun {
 
   // --restrict: the points an expression excludes leave the search (the export still names them).
   void restrict_points() {
-    restrictions_ = parse_restrictions(a_.restrict_exprs);
     std::vector<TunePoint> kept;
     for (const TunePoint& p : points_.valid) (allowed(restrictions_, space_, p) ? kept : restricted_).push_back(p);
     if (kept.empty())
@@ -254,9 +260,9 @@ class TuneRun {
                 a_.strategy.c_str(), (unsigned long long)a_.seed);
     print_resolved(*base_);
     if (!points_.refusal_example.empty() && !a_.quiet)
-      std::cerr << "parashade: note: refused, e.g. " << points_.refusal_example << "\n";
+      print_note("refused, e.g. " + points_.refusal_example);
     if (const std::string stale = cache_->stale_entries(dev); !stale.empty() && !a_.quiet)
-      std::cerr << "parashade: note: " << stale << "\n";
+      print_note(stale);
     if (const std::string aside = cache_->set_aside(); !aside.empty()) std::cerr << "parashade: warning: " << aside << "\n";
   }
 
@@ -602,8 +608,7 @@ class TuneRun {
 
 int run_tune(const TuneArgs& a) {
   // The command line first (usage errors), then the scene, then the device.
-  check_tune_args(a, parse_tune_strategy(a.strategy));
-  TuneRun tune(a);
+  TuneRun tune(a, check_tune_args(a, parse_tune_strategy(a.strategy)));
   std::unique_ptr<RankGroup> group;
   if (a.mpi) group = RankGroup::join(a.rank_timeout);
   return tune.run(group.get());

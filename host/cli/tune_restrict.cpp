@@ -1,6 +1,7 @@
 #include "tune_restrict.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 
@@ -68,7 +69,43 @@ TuneRestriction::~TuneRestriction() = default;
 TuneRestriction::TuneRestriction(TuneRestriction&&) noexcept = default;
 TuneRestriction& TuneRestriction::operator=(TuneRestriction&&) noexcept = default;
 
+namespace {
+
+// Throws when `e` holds what python() does not translate: ?:, a function other than min, max and abs (Python's
+// builtins of the same meaning), a name other than the numeric parameters (muParser's constants).
+void check_translatable(const std::string& e) {
+  const auto refuse = [&e](const std::string& what) {
+    throw UsageError("--restrict '" + e + "': --export-kt writes the restrictions as Python for Kernel Tuner, and " +
+                     what + " is not translated (what is: the numeric parameters, numbers, + - * / % ^, comparisons, "
+                     "&& ||, min, max, abs); write it without, or leave out --export-kt");
+  };
+  if (e.find('?') != std::string::npos) refuse("the conditional a ? b : c");
+  const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.'; };
+  for (std::size_t i = 0; i < e.size();) {
+    if (!word(e[i])) {
+      ++i;
+      continue;
+    }
+    std::size_t end = i;
+    while (end < e.size() && word(e[end])) ++end;
+    if (std::isdigit(static_cast<unsigned char>(e[i])) || e[i] == '.') {  // a number, 1e3 and 1e-3 included
+      if (end < e.size() && (e[end] == '+' || e[end] == '-') && (e[end - 1] == 'e' || e[end - 1] == 'E')) ++end;
+      while (end < e.size() && word(e[end])) ++end;
+    } else {
+      const std::string name = e.substr(i, end - i);
+      const std::size_t next = e.find_first_not_of(" \t", end);
+      const bool call = next != std::string::npos && e[next] == '(';
+      if (call && name != "min" && name != "max" && name != "abs") refuse("the function '" + name + "'");
+      if (!call && !is_number_param(name)) refuse("the constant '" + name + "'");
+    }
+    i = end;
+  }
+}
+
+}  // namespace
+
 std::string TuneRestriction::python() const {
+  check_translatable(expression_);
   std::string s;
   for (std::size_t i = 0; i < expression_.size(); ++i) {
     const std::string two = expression_.substr(i, 2);

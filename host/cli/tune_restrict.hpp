@@ -23,7 +23,9 @@ class TuneRestriction {
 
   const std::string& expression() const { return expression_; }
   // The expression as Python, the language of Kernel Tuner's restriction strings: muParser's && || ^ as
-  // Python's and, or, ** (the rest of muParser's comparisons and arithmetic reads alike).
+  // Python's and, or, ** (the rest of muParser's comparisons and arithmetic, and min, max and abs, read
+  // alike). Throws UsageError naming the expression for what has no such reading: the conditional a ? b : c,
+  // another function (sqrt, ...), a constant (_pi, _e).
   std::string python() const;
   // True when the expression is non-zero at the point. A division by zero gives inf or NaN and the comparison
   // decides (Kernel Tuner keeps a point whose restriction raises ZeroDivisionError: docs/tuning.md).

@@ -299,8 +299,9 @@ std::string render_flags(const nlohmann::json& params) {
   for (const std::string& name : names) {
     const nlohmann::json& v = params.at(name);
     const std::string text = v.is_string() ? v.get<std::string>() : v.dump();
-    // "-": nothing reads it at this point; "none": the option's absence (no plan, no unit).
-    if (text == "-" || text == "none") continue;
+    // "-": nothing reads it at this point; "none": the option's absence (no plan, no unit); a work-group or
+    // work-items of 0, the device's: the option's absence too, which render resolves alike (device_layout.hpp).
+    if (text == "-" || text == "none" || (text == "0" && (name == "work_group_size" || name == "work_items"))) continue;
     std::string option = name;
     std::replace(option.begin(), option.end(), '_', '-');
     flags += (flags.empty() ? "--" : " --") + option + " " + text;

@@ -67,7 +67,8 @@ TunePoint default_point(const TuneSpace& space, const RenderOptions& base);
 std::size_t space_size(const TuneSpace& space);
 
 // A point's parameters (point_params) as the render options that give it: each parameter is the render
-// option of its name (work_items: --work-items), so this is the same text for every parameter.
+// option of its name (work_items: --work-items), so this is the same text for every parameter; a parameter
+// at its "the device's" value (work_items or work_group_size 0) is left out, as render's default.
 std::string render_flags(const nlohmann::json& params);
 
 }  // namespace parashade::cli

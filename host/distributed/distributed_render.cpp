@@ -16,6 +16,7 @@
 #include "parashade/distributed.hpp"
 #include "parashade/errors.hpp"
 #include "parashade/frame_pipeline.hpp"
+#include "parashade/notes.hpp"
 #include "parashade/report.hpp"
 #include "parashade/render_outputs.hpp"
 #include "parashade/render_step.hpp"
@@ -197,7 +198,7 @@ class RankRun {
     read_scene();
     mpi_.step([&] { device_ = open_device(job_.request.device); });
     if (rank_ == 0 && !job_.quiet && takes_default_device(job_.request.device))
-      std::cerr << default_device_note(device_->info()) << "\n";  // rank 0's: each rank takes its host's own
+      print_note(default_device_note(device_->info()));  // rank 0's: each rank takes its host's own
     if (n_ > 65535 && sort_last_) throw UsageError("sort-last takes at most 65535 ranks");
     share_scene();
     start_composite();
@@ -519,7 +520,7 @@ class RankRun {
     r.warnings = warnings_;
     r.distributed = std::move(figures);
     if (job_.request.error_figures)
-      r.errors = error_figures(sort_last_ ? *full_ : scene_, options_, r.image, job_.outputs.pictures(), job_.request.flip);
+      r.errors = error_figures(sort_last_ ? *full_ : scene_, options_, r.image, job_.outputs.needs_reference(), job_.request.flip);
     *lines = job_.outputs.write(r);
     *result = std::move(r);
   }

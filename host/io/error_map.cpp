@@ -115,21 +115,18 @@ int error_colour_index(double error, double top, const ErrorScale& scale) {
   return int(std::clamp(std::lround(255.0 * error_scale_position(error, top, scale)), 0L, 255L));
 }
 
-RenderedImage error_map_image(const std::vector<double>& errors, int width, int height, const ErrorScale& scale) {
-  if (width < 1 || height < 1 || errors.size() != std::size_t(width) * std::size_t(height))
-    throw InputError("error map: " + std::to_string(errors.size()) + " errors for a " + std::to_string(width) + "x" +
+void check_picture_size(const char* what, std::size_t values, int width, int height) {
+  if (width < 1 || height < 1 || values != std::size_t(width) * std::size_t(height))
+    throw InputError(std::string(what) + ": " + std::to_string(values) + " values for a " + std::to_string(width) + "x" +
                      std::to_string(height) + " image");
+}
+
+RenderedImage error_map_image(const std::vector<double>& errors, int width, int height, const ErrorScale& scale) {
   const double top = error_scale_top(errors);
-  RenderedImage picture;
-  picture.width = width;
-  picture.height = height;
-  picture.rgba.assign(4 * errors.size(), 255);
-  for (std::size_t p = 0; p < errors.size(); ++p) {
+  return value_picture("error map", errors.size(), width, height, [&](std::size_t p) {
     const double e = errors[p];
-    const std::uint8_t* c = std::isnan(e) ? kWhite : kViridis[std::size_t(error_colour_index(e, top, scale))].data();
-    std::copy(c, c + 3, &picture.rgba[4 * p]);
-  }
-  return picture;
+    return std::isnan(e) ? kWhite : kViridis[std::size_t(error_colour_index(e, top, scale))].data();
+  });
 }
 
 RenderedImage error_legend_image(double top, bool top_is_max, const ErrorScale& scale, int height) {

@@ -183,6 +183,16 @@ RenderedImage read_pixels(OIIO::ImageInput& in, const std::string& name) {
   return image;
 }
 
+// `px` staged at `path` (a destination checked before: check_image_destination); an InputError naming the file
+// when it cannot be written. stage_image's and stage_values' writing.
+StagedFile stage_pixels(const fs::path& path, int width, int height, const Pixels& px) {
+  StagedFile file(path);
+  write_file(file, width, height, px);
+  take_global_oiio_error();
+  if (!file.error().empty()) throw InputError("cannot write " + path.string() + ": " + file.error());
+  return file;
+}
+
 }  // namespace
 
 void check_image_destination(const fs::path& path) {
@@ -209,11 +219,7 @@ StagedFile stage_image(const fs::path& path, const RenderedImage& image) {
   if (image.width < 1 || image.height < 1 || image.rgba.size() != 4 * n)
     throw InputError("cannot write " + path.string() + ": the image is empty or inconsistent");
   check_image_destination(path);  // before touching the file system
-  StagedFile file(path);
-  write_file(file, image.width, image.height, pixels_for(image, lower_extension(path) == ".exr"));
-  take_global_oiio_error();
-  if (!file.error().empty()) throw InputError("cannot write " + path.string() + ": " + file.error());
-  return file;
+  return stage_pixels(path, image.width, image.height, pixels_for(image, lower_extension(path) == ".exr"));
 }
 
 StagedFile stage_values(const fs::path& path, const std::vector<float>& values, int width, int height) {
@@ -222,15 +228,11 @@ StagedFile stage_values(const fs::path& path, const std::vector<float>& values, 
   check_image_destination(path);
   if (lower_extension(path) != ".exr")
     throw InputError("cannot write " + path.string() + ": values are written as OpenEXR only (.exr)");
-  StagedFile file(path);
   Pixels px;
   px.type = OIIO::TypeDesc::FLOAT;
   px.channels = 1;
   px.f32 = values;
-  write_file(file, width, height, px);
-  take_global_oiio_error();
-  if (!file.error().empty()) throw InputError("cannot write " + path.string() + ": " + file.error());
-  return file;
+  return stage_pixels(path, width, height, px);
 }
 
 bool is_exr(const fs::path& path) { return lower_extension(path) == ".exr"; }

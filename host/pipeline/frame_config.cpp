@@ -8,6 +8,10 @@ namespace parashade {
 
 const char* kernel_shape_name(KernelShape s) { return s == KernelShape::lanes ? "lanes" : "vector"; }
 
+int shape_work_group_size(KernelShape shape, int tile) {
+  return shape == KernelShape::lanes ? std::min(LANES_WORK_GROUP_DEFAULT, std::max(1, tile * tile)) : 1;
+}
+
 KernelShape parse_kernel_shape(const std::string& text) {
   if (text == "vector") return KernelShape::vector;
   if (text == "lanes") return KernelShape::lanes;

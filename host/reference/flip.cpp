@@ -11,6 +11,7 @@
 #include <string>
 
 #include "parashade/errors.hpp"
+#include "parashade/error_map.hpp"
 #include "parashade/parallel.hpp"
 
 namespace parashade {
@@ -289,7 +290,22 @@ class Band {
   std::vector<float> v_;  // 14 rows: per image 7 (Y, Cx, Cz, edge, point, 2 scratch)
 };
 
+// Rows of one band of ldr_flip's: about four bands a host thread, 32 to 256 rows each.
+std::size_t band_rows(int height) { return balanced_chunk(std::size_t(height), 32, 256); }
+
 }  // namespace
+
+std::uint64_t ldr_flip_working_bytes(int width, int height, double ppd) {
+  if (width < 1 || height < 1 || !(ppd > 0 && ppd < 1e4)) return 0;
+  const Filters f(ppd);
+  const std::uint64_t rows = band_rows(height), bands = (std::uint64_t(height) + rows - 1) / rows;
+  const std::uint64_t in_flight = std::min<std::uint64_t>(bands, host_threads());
+  const std::uint64_t reach = 2 * std::uint64_t(std::max(f.spatial_radius, f.feature_radius));
+  // Band's planes: YCxCz 6, the spatial passes 8, the feature passes 6; and its 14 rows (v_).
+  const std::uint64_t per_band = (20 * (std::min<std::uint64_t>(rows, std::uint64_t(height)) + reach) + 14) *
+                                 std::uint64_t(width) * sizeof(float);
+  return in_flight * per_band;
+}
 
 std::vector<float> ldr_flip(const std::vector<float>& reference, const std::vector<float>& test, int width, int height,
                             double ppd) {
@@ -301,8 +317,7 @@ std::vector<float> ldr_flip(const std::vector<float>& reference, const std::vect
   const Filters filters(ppd);
   std::vector<float> map(n);
   const FlipJob job{{&reference, &test}, width, height, &filters, map.data()};
-  const std::size_t band = balanced_chunk(std::size_t(height), 32, 256);
-  parallel_for_ranges(std::size_t(height), band, [&](std::size_t y0, std::size_t y1) {
+  parallel_for_ranges(std::size_t(height), band_rows(height), [&](std::size_t y0, std::size_t y1) {
     Band b(job, int(y0), int(y1));
     for (std::size_t y = y0; y < y1; ++y) b.row(int(y));
   });
@@ -340,22 +355,10 @@ std::vector<float> flip_input(const std::vector<glm::dvec3>& levels) {
 }
 
 RenderedImage flip_map_image(const std::vector<float>& map, int width, int height) {
-  if (width < 1 || height < 1 || map.size() != std::size_t(width) * std::size_t(height))
-    throw InputError("FLIP map: " + std::to_string(map.size()) + " values for a " + std::to_string(width) + "x" +
-                     std::to_string(height) + " image");
-  RenderedImage im;
-  im.width = width;
-  im.height = height;
-  im.rgba.resize(4 * map.size());
-  for (std::size_t p = 0; p < map.size(); ++p) {
+  return value_picture("FLIP map", map.size(), width, height, [&](std::size_t p) {
     const float e = std::isnan(map[p]) ? 0.0f : std::clamp(map[p], 0.0f, 1.0f);
-    const std::uint8_t* c = kMagma[std::lround(255.0f * e)];
-    im.rgba[4 * p] = c[0];
-    im.rgba[4 * p + 1] = c[1];
-    im.rgba[4 * p + 2] = c[2];
-    im.rgba[4 * p + 3] = 255;
-  }
-  return im;
+    return kMagma[std::lround(255.0f * e)];
+  });
 }
 
 }  // namespace parashade

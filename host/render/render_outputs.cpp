@@ -13,33 +13,34 @@
 namespace parashade {
 namespace {
 
-// --reference-image and --error-map against the chosen reference, and --triangle-map, staged.
+// --reference-image, --error-map and --flip-map against the chosen reference, and --triangle-map, staged. The
+// result holds the reference only when a picture drawn from it is asked for (RenderOutputs::needs_reference).
 std::vector<StagedFile> stage_pictures(const RenderOutputs& o, const RenderResult& r, std::vector<std::string>& lines) {
   std::vector<StagedFile> files;
   if (!o.pictures()) return files;
-  if (!r.errors || !r.errors->reference)
+  if (!r.errors || (o.needs_reference() && !r.errors->reference))
     throw std::logic_error("render outputs: pictures asked for without the reference (RenderRequest::keep_reference)");
-  const ReferenceImage& ref = *r.errors->reference;
-  const std::vector<glm::dvec3>& values = o.against_exact ? ref.exact : ref.ideal;
+  const ReferenceImage* ref = r.errors->reference ? &*r.errors->reference : nullptr;
+  const std::vector<glm::dvec3>* values = ref ? (o.against_exact ? &ref->exact : &ref->ideal) : nullptr;
   const std::string name = o.against_exact ? "exact phong" : ideal_name(r.options.method);
   if (!o.reference_image.empty()) {
-    files.push_back(stage_image(o.reference_image, levels_image(values, ref.width, ref.height)));
+    files.push_back(stage_image(o.reference_image, levels_image(*values, ref->width, ref->height)));
     lines.push_back("reference image " + o.reference_image.string() + ": " + name);
   }
   if (!o.error_map.empty()) {
-    const std::vector<double> errors = pixel_errors(r.image, ref.covered, values, front_surface_flips(r.image, ref));
+    const std::vector<double> errors = pixel_errors(r.image, ref->covered, *values, front_surface_flips(r.image, *ref));
     const std::size_t first = lines.size();
-    for (StagedFile& f : stage_error_pictures({o.error_map, o.error_legend, o.error_scale}, errors, ref.width, ref.height,
-                                              lines))
+    for (StagedFile& f : stage_error_pictures({o.error_map, o.error_legend, o.error_scale}, errors, ref->width,
+                                              ref->height, lines))
       files.push_back(std::move(f));
     for (std::size_t i = first; i < lines.size(); ++i) lines[i] += ", against " + name;
   }
   if (!o.flip_map.empty()) {
-    files.push_back(stage_flip_map(o.flip_map, r.errors->flip_map, ref.width, ref.height, lines));
+    files.push_back(stage_flip_map(o.flip_map, r.errors->flip_map, r.image.width, r.image.height, lines));
     lines.back() += ", against " + name;
   }
   if (!o.triangle_map.empty()) {
-    files.push_back(stage_image(o.triangle_map, triangle_map_image(ref.triangle, ref.width, ref.height)));
+    files.push_back(stage_image(o.triangle_map, triangle_map_image(ref->triangle, ref->width, ref->height)));
     lines.push_back("triangle map " + o.triangle_map.string() +
                     ": the reference's visible triangle + 1 per pixel (R high byte)");
   }

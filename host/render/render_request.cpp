@@ -7,12 +7,12 @@
 #include "parashade/combined.hpp"
 #include "parashade/device_layout.hpp"
 #include "parashade/errors.hpp"
-#include "parashade/memory_budget.hpp"
 #include "parashade/render_step.hpp"
 #include "parashade/scene_files.hpp"
 #include "parashade/split_renderer.hpp"
 #include "parashade/sub_devices.hpp"
 #include "parashade/tile_choice.hpp"
+#include "frame_memory.hpp"
 #include "tune_cache.hpp"
 
 namespace parashade {
@@ -77,7 +77,7 @@ void open_devices_for(ResolvedRender& r, const Selector& s, DeviceCache* cache) 
   std::string names;
   for (const std::string& n : left_out) names += (names.empty() ? "" : ", ") + n;
   if (!names.empty() && !r.request.quiet)
-    r.notes.push_back("parashade: note: device list 'all' leaves out " + names +
+    r.notes.push_back("device list 'all' leaves out " + names +
                       "; name the devices to split across them (A,B)");
   if (r.mode == DeviceMode::one && takes_default_device(s.text) && !r.request.quiet)
     r.notes.push_back(default_device_note(r.devices.front()->info()));
@@ -122,16 +122,20 @@ void resolve_layout(ResolvedRender& r) {
 }
 
 // The shape from the device where the request leaves it to the device, no tuned entry gave one and the frame
-// is on one device (device_shape_for); a shape the frame cannot take is said in a note.
+// is on one device (device_shape_for), and where it came from; a shape the frame cannot take is said in a note.
 void take_device_shape(ResolvedRender& r) {
-  if (!r.request.device_kernel_shape || !r.tuned.is_null() || r.mode != DeviceMode::one) return;
-  std::string refused;
-  r.options.kernel_shape = device_shape_for(r.devices.front()->info(), r.options, r.mode, &refused);
-  if (!refused.empty() && !r.request.quiet) r.notes.push_back("parashade: note: " + refused);
+  const bool tuned = !r.tuned.is_null();
+  r.sources.kernel_shape = tuned ? kFromTuneCache : kFromOption;
+  if (!r.request.device_kernel_shape || tuned || r.mode != DeviceMode::one) return;
+  const DeviceShape taken = device_shape_for(r.devices.front()->info(), r.options, r.mode);
+  r.options.kernel_shape = taken.shape;
+  r.sources.kernel_shape = taken.source;
+  if (!taken.refused.empty() && !r.request.quiet) r.notes.push_back(taken.refused);
 }
 
 // The work-group the device allows where neither the request nor a tuned entry gave one (after the tile is
-// known: the lanes shape's work-group is within its pixels), and where each layout setting came from.
+// known: the lanes shape's work-group is within its pixels), and where the other layout settings came from
+// (the shape's: take_device_shape).
 // `asked`: the request's options, before the tuned entry.
 void take_device_layout(ResolvedRender& r, const RenderOptions& asked) {
   const bool tuned = !r.tuned.is_null();
@@ -140,8 +144,6 @@ void take_device_layout(ResolvedRender& r, const RenderOptions& asked) {
   s.tile = asked.tile_size ? kFromOption : tuned ? kFromTuneCache : kFromFrame;
   s.work_items = asked.work_items ? kFromOption : chosen;
   s.work_group_size = asked.work_group_size ? kFromOption : chosen;
-  const bool device_shape = r.request.device_kernel_shape && r.mode == DeviceMode::one;
-  s.kernel_shape = tuned ? kFromTuneCache : device_shape ? kFromDevice : kFromOption;
   // An entry tuned at the default work-group (0) gets the device's, as an untuned run does: the lanes
   // default (256) may be over the device's largest work-group.
   if (r.options.work_group_size != 0) return;
@@ -158,46 +160,12 @@ void note_error_floor(ResolvedRender& r) {
   if (!(c.max_error < floor)) return;
   char text[480];
   std::snprintf(text, sizeof text,
-                "parashade: note: --max-error %.3g is below its floor on this scene, %.3g levels: the 8-bit rounding "
+                "--max-error %.3g is below its floor on this scene, %.3g levels: the 8-bit rounding "
                 "(0.5) plus float Phong's own error (at most %.3g levels here, docs/error-bounds.md). The budget "
                 "bounds the distance to Phong's float image; against ideal Phong the image may be off by that much "
                 "more, as --method phong's is",
                 c.max_error, floor, phong);
   r.notes.push_back(text);
-}
-
-// Host bytes a pixel of what a render keeps beyond the frame it shades, rounded up from the peak resident
-// memory of 4096x4096 Phong frames with and without each option (+35, +7, +3.3 and +0.5; docs/robustness.md).
-// FLIP: its two float RGB inputs and its map (24 + 4; its bands of rows are a few MB whatever the frame).
-constexpr std::uint64_t kFloatBytesPerPixel = 40, kReferenceImageBytesPerPixel = 8, kErrorMapBytesPerPixel = 8,
-                        kTriangleMapBytesPerPixel = 4, kFlipBytesPerPixel = 28, kFlipMapBytesPerPixel = 4;
-
-FrameExtras frame_extras(const RenderRequest& request) {
-  FrameExtras x;
-  const auto add = [&x](const std::string& option, std::uint64_t bytes) {
-    x.bytes_per_pixel += bytes;
-    x.options += (x.options.empty() ? "" : ", ") + option;
-  };
-  if (request.options.float_output) add("--float", kFloatBytesPerPixel);
-  if (request.flip.enabled) add("--flip", kFlipBytesPerPixel);
-  for (const std::string& p : request.pictures)
-    add(p, p == "--reference-image" ? kReferenceImageBytesPerPixel
-           : p == "--error-map"     ? kErrorMapBytesPerPixel
-           : p == "--flip-map"      ? kFlipMapBytesPerPixel
-                                    : kTriangleMapBytesPerPixel);
-  return x;
-}
-
-// The loaded scene's objects and frame with the extras, before any frame is allocated (the scene's own
-// budget, judged while it loaded, leaves the extras out: it knows no render options).
-void check_frame_memory(const Scene& scene, const RenderRequest& request) {
-  const FrameExtras extras = frame_extras(request);
-  if (extras.bytes_per_pixel == 0) return;
-  std::vector<MemoryItem> objects;
-  for (const Object& o : scene.objects)
-    if (o.mesh) objects.push_back({"'" + o.name + "'", o.mesh->triangles.size(), o.mesh->positions.size()});
-  check_host_memory(request.scene_file.string() + " at " + std::to_string(scene.width) + "x" + std::to_string(scene.height),
-                    objects, scene.width, scene.height, extras);
 }
 
 }  // namespace
@@ -222,20 +190,18 @@ void check_render_options(const RenderOptions& options, DeviceMode mode) {
   check_frame_config(o, mode);
 }
 
-KernelShape device_shape_for(const DeviceInfo& device, const RenderOptions& options, DeviceMode mode,
-                             std::string* refused) {
+DeviceShape device_shape_for(const DeviceInfo& device, const RenderOptions& options, DeviceMode mode) {
   RenderOptions o = options;
   o.kernel_shape = device_kernel_shape(device);
-  if (o.kernel_shape == options.kernel_shape) return o.kernel_shape;
+  if (o.kernel_shape == options.kernel_shape) return {o.kernel_shape, kFromDevice, ""};
   try {
     check_render_options(o, mode);
-    return o.kernel_shape;
+    return {o.kernel_shape, kFromDevice, ""};
   } catch (const Error& e) {  // ConfigError or UsageError: what the device's shape does not run
-    if (refused)
-      *refused = std::string("the ") + kernel_shape_name(options.kernel_shape) + " kernel shape on " + device.name +
-                 ", whose own is " + kernel_shape_name(o.kernel_shape) +
-                 " (docs/pipeline.md), which this frame cannot take: " + e.what();
-    return options.kernel_shape;
+    const std::string own = kernel_shape_name(o.kernel_shape);
+    return {options.kernel_shape, std::string(kFromOption) + " (the device's " + own + " refused: " + e.what() + ")",
+            std::string("the ") + kernel_shape_name(options.kernel_shape) + " kernel shape on " + device.name +
+                ", whose own is " + own + " (docs/pipeline.md), which this frame cannot take: " + e.what()};
   }
 }
 

@@ -80,7 +80,7 @@ void check_host_bytes(const std::string& what, std::uint64_t bytes, const std::s
 
 void check_host_memory(const std::string& what, const std::vector<MemoryItem>& objects, int width, int height,
                        const FrameExtras& extras) {
-  const std::uint64_t need = estimate_host_bytes(objects, width, height, extras.bytes_per_pixel);
+  const std::uint64_t need = estimate_host_bytes(objects, width, height, extras.bytes_per_pixel) + extras.bytes;
   const std::uint64_t limit = host_memory_limit();
   if (need <= limit) return;
   std::uint64_t triangles = 0;
@@ -97,7 +97,9 @@ void check_host_memory(const std::string& what, const std::vector<MemoryItem>& o
   throw InputError(what + ": rendering needs about " + bytes_text(need) + " of host memory (" +
                    std::to_string(objects.size()) + (objects.size() == 1 ? " object, " : " objects, ") + std::to_string(triangles) + " triangles, a " +
                    std::to_string(width) + "x" + std::to_string(height) + " frame" +
-                   (extras.options.empty() ? "" : " with " + extras.options) + "), more than the limit of " +
+                   (extras.options.empty() ? "" : " with " + extras.options) +
+                   (extras.records ? ", its triangle records " + bytes_text(extras.records) + " at once (--band-mib)" : "") +
+                   "), more than the limit of " +
                    bytes_text(limit) + " (" + host_memory_limit_source() + "); largest objects: " + list);
 }
 

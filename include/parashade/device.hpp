@@ -90,8 +90,8 @@ int default_device(const std::vector<DeviceInfo>& devices);
 // threaded device's for the same cores). The devices default_device never takes while others exist.
 std::string left_out_of_all(const DeviceInfo& d, const std::vector<DeviceInfo>& devices);
 
-// "parashade: device: NAME (PLATFORM, N compute units; the default: --device to choose)": what every command
-// that opens a device (render, tune, scaling, render --distribute's rank 0) says on stderr when it took the
+// "device: NAME (PLATFORM, N compute units; the default: --device to choose)": the note (notes.hpp) every
+// command that opens a device (render, tune, scaling, render --distribute's rank 0) prints when it took the
 // default device, that is when takes_default_device(its selector).
 std::string default_device_note(const DeviceInfo& d);
 // Whether open_device(selector) takes the default device: no selector and no PARASHADE_DEVICE.

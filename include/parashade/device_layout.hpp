@@ -29,7 +29,8 @@ bool fills_lanes_with_work_items(const DeviceInfo& d);
 KernelShape device_kernel_shape(const DeviceInfo& d);
 
 // The work-group size for `shape` on `d` with tiles of `tile` pixels: vector 1 (a work-item walks tiles of
-// its own); lanes LANES_WORK_GROUP_DEFAULT within the tile's pixels and the device's largest work-group.
+// its own); lanes LANES_WORK_GROUP_DEFAULT within the tile's pixels (shape_work_group_size) and the device's
+// largest work-group.
 int device_work_group_size(const DeviceInfo& d, KernelShape shape, int tile);
 
 // The vector shape's work-items for a frame of `tiles` tiles on `d` (before rounding up to whole

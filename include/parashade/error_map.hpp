@@ -12,6 +12,24 @@
 
 namespace parashade {
 
+// A picture of `values` per-pixel values of a width x height image (alpha 255), pixel p in the 3 bytes
+// colour(p) points to: the error map's and the FLIP map's. Throws InputError "<what>: N values for a WxH
+// image" when the counts differ (check_picture_size).
+void check_picture_size(const char* what, std::size_t values, int width, int height);
+template <typename Colour>
+RenderedImage value_picture(const char* what, std::size_t values, int width, int height, Colour&& colour) {
+  check_picture_size(what, values, width, height);
+  RenderedImage picture;
+  picture.width = width;
+  picture.height = height;
+  picture.rgba.assign(4 * values, 255);
+  for (std::size_t p = 0; p < values; ++p) {
+    const std::uint8_t* c = colour(p);
+    for (int k = 0; k < 3; ++k) picture.rgba[4 * p + std::size_t(k)] = c[k];
+  }
+  return picture;
+}
+
 // Viridis (viridis.cpp names its origin): entry 0 is the colour of no error, entry 255 of the scale's top.
 extern const std::array<std::array<std::uint8_t, 3>, 256> kViridis;
 

@@ -26,6 +26,12 @@ constexpr double kFlipDefaultPpd = 0.7 * (3840.0 / 0.7) * (3.1415926535897932384
 std::vector<float> ldr_flip(const std::vector<float>& reference, const std::vector<float>& test, int width, int height,
                             double ppd = kFlipDefaultPpd);
 
+// Bytes ldr_flip allocates beyond its inputs and its map for a width x height image: its bands of rows in
+// flight at once (one per host thread, parallel.hpp, each of 20 float planes over the band and its filters'
+// reach, and 14 float rows), from the same band height and filter radius ldr_flip takes. For the host memory
+// budget (memory_budget.hpp): 4096 wide on 2 threads about 180 MB, on 16 threads about 1.3 GB.
+std::uint64_t ldr_flip_working_bytes(int width, int height, double ppd = kFlipDefaultPpd);
+
 // The figures a report gives of a FLIP map: its mean (summed in double) and largest value.
 struct FlipFigures {
   double mean = 0.0;

@@ -25,6 +25,10 @@ namespace parashade {
 // of combinations, since the lanes shape has the plain frame's passes only.
 enum class KernelShape { vector, lanes };
 const char* kernel_shape_name(KernelShape s);
+// The work-group `shape` takes when none is given, for tiles of `tile` pixels (0: not chosen yet): vector 1 (a
+// work-item walks tiles of its own); lanes LANES_WORK_GROUP_DEFAULT within the tile's pixels. The one rule:
+// RenderOptions::group_size and device_work_group_size (which also keeps it within the device's) read it.
+int shape_work_group_size(KernelShape shape, int tile);
 KernelShape parse_kernel_shape(const std::string& text);  // UsageError naming the valid values
 
 struct FrameConfig {

@@ -17,10 +17,12 @@ struct MemoryItem {
 // scene through the mesh, the vertex stage, setup, binning and the reference, and per pixel of the frame.
 constexpr std::uint64_t kHostBytesPerTriangle = 400, kHostBytesPerVertex = 48, kHostBytesPerPixel = 96;
 
-// What a render keeps per pixel beyond the frame it shades (--float's values, the pictures of the error):
-// bytes a pixel, and the options that ask for them ("--float, --error-map") for messages.
+// What a render keeps beyond the frame it shades: per pixel (--float's values, FLIP's, the pictures of the
+// error), and whatever the frame's size (`bytes`: FLIP's bands of rows, and the triangle records it holds at
+// once, `records`, of them); the options that ask for them ("--float, --error-map") for messages.
 struct FrameExtras {
   std::uint64_t bytes_per_pixel = 0;
+  std::uint64_t bytes = 0, records = 0;
   std::string options;
 };
 

@@ -14,17 +14,20 @@ namespace parashade {
 struct RenderOutputs {
   std::filesystem::path image, report;  // report: empty for none
   // The exact reference as an image, the per-pixel error as a colour map, the reference's visible triangle
-  // per pixel; each empty for none. They need the result's reference (RenderRequest::keep_reference).
+  // per pixel; each empty for none. They need the result's reference (RenderRequest::keep_reference:
+  // needs_reference()).
   std::filesystem::path reference_image, error_map, triangle_map;
   bool against_exact = false;  // reference_image, error_map and FLIP against exact Phong, not the method's ideal
   // The error map's colour scale and its legend as a picture of its own (empty: none); the FLIP map (empty:
-  // none), which needs the result's ErrorFigures::flip_map (RenderRequest::flip.keep_map).
+  // none), which needs the result's ErrorFigures::flip_map (RenderRequest::flip.keep_map) and not the
+  // reference: a frame's worth of doubles and more that --flip-map alone does not keep.
   ErrorScale error_scale;
   std::filesystem::path error_legend, flip_map;
 
-  bool pictures() const {
-    return !reference_image.empty() || !error_map.empty() || !triangle_map.empty() || !flip_map.empty();
-  }
+  // Whether any picture is asked for (each needs the error figures).
+  bool pictures() const { return needs_reference() || !flip_map.empty(); }
+  // Whether a picture drawn from the reference is (--reference-image, --error-map, --triangle-map).
+  bool needs_reference() const { return !reference_image.empty() || !error_map.empty() || !triangle_map.empty(); }
   // The picture options given ("--reference-image", "--error-map", "--triangle-map", "--flip-map"), in that order.
   std::vector<std::string> picture_options() const;
   // Declares them to `files` by render's option names (-o, --report, --reference-image, --error-map,

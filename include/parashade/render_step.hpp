@@ -85,7 +85,7 @@ struct ResolvedRender {
   std::vector<std::shared_ptr<Device>> devices;
   nlohmann::json tuned;                          // {cache, params, objective_ms}, or null
   LayoutSources sources;                         // where the shape, work-group, work-items and tile came from
-  std::vector<std::string> notes;     // for stderr before the work: the tuned entry taken, stale entries
+  std::vector<std::string> notes;     // notes for stderr before the work (print_note): the tuned entry taken, stale entries
   std::vector<std::string> warnings;  // the scene's warnings and a tune cache that could not be read
 };
 
@@ -118,10 +118,15 @@ ResolvedRender resolve_render(RenderRequest request, CommandFiles& files, Device
 ResolvedRender with_options(const ResolvedRender& base, const RenderOptions& options);
 
 // The kernel shape `device` takes for `options` on `mode` when the request leaves it to the device: its own
-// (device_layout.hpp's device_kernel_shape) where the table of combinations allows it, else options'; then
-// `refused` (when given) receives one sentence saying why the device's own was not taken.
-KernelShape device_shape_for(const DeviceInfo& device, const RenderOptions& options, DeviceMode mode,
-                             std::string* refused = nullptr);
+// (device_layout.hpp's device_kernel_shape) where the table of combinations allows it, else options'.
+struct DeviceShape {
+  KernelShape shape = KernelShape::vector;
+  // Where it came from (LayoutSources::kernel_shape): kFromDevice, or "option (the device's lanes refused:
+  // WHY)" when the device's own was not taken.
+  std::string source;
+  std::string refused;  // empty, or one sentence saying why the device's own was not taken (a note)
+};
+DeviceShape device_shape_for(const DeviceInfo& device, const RenderOptions& options, DeviceMode mode);
 
 // Options checked against the table of combinations on `mode` (check_frame_config; tile 0 counts as valid,
 // it is chosen later): the one check of a configuration, made by resolve_render and with_options, and by

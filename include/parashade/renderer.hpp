@@ -33,10 +33,7 @@ struct RenderOptions : FrameConfig {
   // tile's pixels). A power of two, at most the device's largest work-group. The image is the same.
   int work_group_size = 0;
   // work_group_size with its default resolved for the shape and tile.
-  int group_size() const {
-    if (work_group_size > 0) return work_group_size;
-    return kernel_shape == KernelShape::lanes ? std::min(LANES_WORK_GROUP_DEFAULT, tile_size * tile_size) : 1;
-  }
+  int group_size() const { return work_group_size > 0 ? work_group_size : shape_work_group_size(kernel_shape, tile_size); }
   // The kernel's pixel layout where the frame allows a choice (docs/pipeline.md): 4x4 stamps (true) or
   // 1x16 row segments. The image is the same either way.
   bool stamps = true;

@@ -93,7 +93,7 @@ TEST(DefaultDevice, NoneOfAnEmptyList) { EXPECT_EQ(default_device({}), -1); }
 
 TEST(DefaultDevice, NoteNamesTheDeviceAndHowToChoose) {
   EXPECT_EQ(default_device_note(kPthread),
-            "parashade: device: pthread-skylake-avx512-Intel(R) Xeon(R) Processor (Portable Computing Language, 2 "
+            "device: pthread-skylake-avx512-Intel(R) Xeon(R) Processor (Portable Computing Language, 2 "
             "compute units; the default: --device to choose)");
   EXPECT_NE(default_device_note(kBasic).find("1 compute unit;"), std::string::npos);
 }

@@ -80,19 +80,48 @@ TEST(DeviceLayout, AGpuTakesTheLanesShape) {
 }
 
 // What resolve_render takes without --kernel-shape (device_shape_for): the device's own shape where the table
-// of combinations allows it; a frame the lanes shape cannot take keeps the vector shape, and says why.
+// of combinations allows it; a frame the lanes shape cannot take keeps the vector shape, and says why, in the
+// note and in the shape's source (the layout line and the report's layout.sources), which then is not the
+// device's properties.
 TEST(DeviceLayout, AGpuKeepsTheVectorShapeForAFrameTheLanesShapeRefuses) {
   RenderOptions plain;
-  std::string refused;
-  EXPECT_EQ(device_shape_for(kGpu, plain, DeviceMode::one, &refused), KernelShape::lanes);
-  EXPECT_EQ(refused, "");
-  EXPECT_EQ(device_shape_for(kPthread, plain, DeviceMode::one, &refused), KernelShape::vector);
-  EXPECT_EQ(refused, "");
+  DeviceShape taken = device_shape_for(kGpu, plain, DeviceMode::one);
+  EXPECT_EQ(taken.shape, KernelShape::lanes);
+  EXPECT_EQ(taken.refused, "");
+  EXPECT_EQ(taken.source, "device properties");
+  taken = device_shape_for(kPthread, plain, DeviceMode::one);
+  EXPECT_EQ(taken.shape, KernelShape::vector);
+  EXPECT_EQ(taken.refused, "");
+  EXPECT_EQ(taken.source, "device properties");
   RenderOptions fixed;
   fixed.units = parse_units("counter");
   fixed.arith = parse_arith("fixed:12.12");
-  EXPECT_EQ(device_shape_for(kGpu, fixed, DeviceMode::one, &refused), KernelShape::vector);
-  EXPECT_NE(refused.find("the vector kernel shape on Some GPU, whose own is lanes"), std::string::npos) << refused;
+  taken = device_shape_for(kGpu, fixed, DeviceMode::one);
+  EXPECT_EQ(taken.shape, KernelShape::vector);
+  EXPECT_NE(taken.refused.find("the vector kernel shape on Some GPU, whose own is lanes"), std::string::npos)
+      << taken.refused;
+  EXPECT_EQ(taken.source.rfind("option (the device's lanes refused: ", 0), 0u) << taken.source;
+  EXPECT_NE(taken.source.find("units"), std::string::npos) << taken.source;  // the table's reason
+  EXPECT_EQ(taken.source.back(), ')') << taken.source;
+}
+
+// The lanes shape's default work-group, one rule (frame_config.hpp's shape_work_group_size): what the options
+// resolve it to is what a device without a limit gets, at every tile size, before a tile is chosen (0) too.
+TEST(DeviceLayout, TheOptionsAndTheDeviceTakeOneDefaultWorkGroup) {
+  DeviceInfo unlimited = kGpu;
+  unlimited.max_work_group = 0;  // not reported: no limit
+  for (KernelShape shape : {KernelShape::vector, KernelShape::lanes})
+    for (int tile : {0, 8, 16, 32, 64}) {
+      RenderOptions o;
+      o.kernel_shape = shape;
+      o.tile_size = tile;
+      o.work_group_size = 0;
+      EXPECT_EQ(o.group_size(), device_work_group_size(unlimited, shape, tile))
+          << kernel_shape_name(shape) << " tile " << tile;
+      EXPECT_GE(o.group_size(), 1) << kernel_shape_name(shape) << " tile " << tile;
+    }
+  EXPECT_EQ(shape_work_group_size(KernelShape::lanes, 64), 256);
+  EXPECT_EQ(shape_work_group_size(KernelShape::lanes, 8), 64);  // within the tile's pixels
 }
 
 }  // namespace

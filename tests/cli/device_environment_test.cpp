@@ -70,7 +70,7 @@ TEST_F(CliDeviceEnvironment, TheDefaultIsPthreadNotTheFirstDevice) {
   const RunResult r = run_parashade(args);
   ASSERT_TRUE(succeeds(r));
   EXPECT_EQ(field(read_report(), "/device/name"), pthread) << r;
-  EXPECT_NE(r.err.find("parashade: device: " + pthread + " (Portable Computing Language, " +
+  EXPECT_NE(r.err.find("parashade: note: device: " + pthread + " (Portable Computing Language, " +
                        std::to_string(list[1].value("compute_units", 0)) + " compute unit"),
             std::string::npos)
       << r;
@@ -79,13 +79,13 @@ TEST_F(CliDeviceEnvironment, TheDefaultIsPthreadNotTheFirstDevice) {
   quiet.push_back("-q");
   const RunResult q = run_parashade(quiet);
   ASSERT_TRUE(succeeds(q));
-  EXPECT_EQ(q.err.find("parashade: device:"), std::string::npos) << q;
+  EXPECT_EQ(q.err.find("parashade: note: device:"), std::string::npos) << q;
   // A device named (by --device or the variable) is not the default: no such line.
   std::vector<std::string> named = args;
   named.insert(named.end(), {"--device", "basic"});
   const RunResult n = run_parashade(named);
   ASSERT_TRUE(succeeds(n));
-  EXPECT_EQ(n.err.find("parashade: device:"), std::string::npos) << n;
+  EXPECT_EQ(n.err.find("parashade: note: device:"), std::string::npos) << n;
 }
 
 // A value that names no device: exit 4 as for --device, and the message says where the value came from,

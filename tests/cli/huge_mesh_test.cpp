@@ -116,5 +116,37 @@ TEST_F(CliHugeMesh, TheFrameEstimateCountsTheExtraPictures) {
   EXPECT_TRUE(nothing_written());
 }
 
+// FLIP's bands of rows were left out of the estimate: with 64 host threads a 4096x1024 frame has 32 bands of
+// 32 rows in flight at once, 553 MB beside FLIP's 28 bytes a pixel (compare --flip of two such images: 632 MiB
+// over the plain compare's peak, 639 MiB estimated; one thread: 198 and 199). A limit that the frame with
+// FLIP's per-pixel values fits (520 MB) refuses the frame with its bands (1.07 GB). Before: rendered.
+TEST_F(CliHugeMesh, TheFrameEstimateCountsFlipsBands) {
+  const fs::path scene = input("ball.json", sphere_scene());
+  const ScopedEnv limit("PARASHADE_MEMORY_LIMIT", "800M");
+  const ScopedEnv threads("PARASHADE_HOST_THREADS", "64");
+  const RunResult r = run_parashade(render_args(scene, {"--size", "4096x1024", "--flip"}, ErrorFigures::compute), {},
+                                    std::chrono::seconds(120));
+  EXPECT_TRUE(fails_with(r, kBadInput, {"ball.json at 4096x1024", "limit", "with --flip"}));
+  EXPECT_TRUE(nothing_written());
+}
+
+// A frame that does not stream (--band-mib 0) holds every triangle's record at once; the per-triangle
+// estimate was measured on frames streamed in 16 MiB bands (2 M unculled Phong triangles at 1920x1080: 294
+// MiB more with --band-mib 0, 54 MiB over the estimate). 524 288 Phong records (84 MB) take a 640x480 frame
+// past a limit of 300 MiB (estimated 336 MB; streamed in the default bands, 269 MB). Before: rendered.
+TEST_F(CliHugeMesh, TheFrameEstimateCountsTheRecordsOfAFrameThatDoesNotStream) {
+  const fs::path scene = input("ball.json", R"({
+  "name": "ball", "resolution": [640, 480],
+  "camera": {"position": [0, 0, 4], "target": [0, 0, 0], "fov": 40, "near": 1, "far": 10},
+  "lights": [{"type": "directional", "direction": [0, 0, -1]}],
+  "objects": [{"shape": {"type": "sphere", "slices": 512, "stacks": 513}}]
+})");
+  const ScopedEnv limit("PARASHADE_MEMORY_LIMIT", "300M");
+  const RunResult r = render_mesh(scene, {"--method", "phong", "--band-mib", "0"});
+  EXPECT_TRUE(fails_with(r, kBadInput, {"ball.json at 640x480", "limit", "triangle records", "--band-mib"}));
+  EXPECT_LT(seconds_, 10.0);
+  EXPECT_TRUE(nothing_written());
+}
+
 }  // namespace
 }  // namespace parashade

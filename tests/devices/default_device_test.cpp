@@ -123,7 +123,7 @@ TEST_F(DefaultDeviceOfTheTestFolder, PthreadWhenOclgrindAndBasicComeFirst) {
   const auto [r, rendered_on] = render_by_default();
   ASSERT_TRUE(r.exited() && r.exit_code == 0) << r;
   EXPECT_EQ(rendered_on, pthread) << r;
-  EXPECT_NE(r.err.find("parashade: device: " + pthread + " (Portable Computing Language, "), std::string::npos) << r;
+  EXPECT_NE(r.err.find("parashade: note: device: " + pthread + " (Portable Computing Language, "), std::string::npos) << r;
 }
 
 // The tests' whole ICD folder: Oclgrind, PoCL and, when installed, Intel's CPU runtime, which has as many
@@ -200,7 +200,7 @@ TEST_F(DefaultDeviceOfTheTestFolder, EveryCommandThatTakesTheDefaultSaysIt) {
       {"tune", scene, "--size", "48x32", "--param", "tile=32", "--param", "work_items=0", "--param", "partition=none",
        "--frames", "1", "--cache", out + "/tune.json"},
       {"scaling", scene, "--size", "48x32", "--units", "classic", "--frames", "1"}};
-  const std::string said = "parashade: device: pthread-";
+  const std::string said = "parashade: note: device: pthread-";
   for (const std::vector<std::string>& command : commands) {
     SCOPED_TRACE(command[0]);
     const RunResult taken = run_parashade(command);
@@ -213,11 +213,11 @@ TEST_F(DefaultDeviceOfTheTestFolder, EveryCommandThatTakesTheDefaultSaysIt) {
     chosen.insert(chosen.end(), {"--device", "pthread"});
     const RunResult named = run_parashade(chosen);
     ASSERT_TRUE(named.exited() && named.exit_code == 0) << named;
-    EXPECT_EQ(named.err.find("parashade: device:"), std::string::npos) << named;
+    EXPECT_EQ(named.err.find("parashade: note: device:"), std::string::npos) << named;
     const ScopedEnv variable("PARASHADE_DEVICE", "pthread");
     const RunResult by_variable = run_parashade(command);
     ASSERT_TRUE(by_variable.exited() && by_variable.exit_code == 0) << by_variable;
-    EXPECT_EQ(by_variable.err.find("parashade: device:"), std::string::npos) << by_variable;
+    EXPECT_EQ(by_variable.err.find("parashade: note: device:"), std::string::npos) << by_variable;
   }
 }
 

@@ -282,7 +282,7 @@ def main():
             said = os.path.join(tmp, "said.png")
             rc, out, err = mpirun(2, ["render", SCENE, "-o", said, "--frames", "1", "--distribute", "sort-first"] +
                                   [a for a in COMMON if a != "-q"])
-            check(rc == 0 and err.count("parashade: device: ") == 1 and "the default: --device to choose)" in err,
+            check(rc == 0 and err.count("parashade: note: device: ") == 1 and "the default: --device to choose)" in err,
                   "the default device is not said once under --distribute (exit %d): %s" % (rc, err.strip()))
         elif GROUP == "faults":
             img = os.path.join(tmp, "f.png")
