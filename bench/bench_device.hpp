@@ -2,6 +2,7 @@
 // What bench_frame and bench_llvmpipe share: the device they time (PARASHADE_DEVICE, as `render --device`;
 // else the default device) and its fill limit, the ceiling of every frame benchmark.
 #include <cstdlib>
+#include <functional>
 #include <memory>
 
 #include <benchmark/benchmark.h>
@@ -20,6 +21,22 @@ inline Device& bench_device() {
     return open_device(sel ? sel : "");
   }();
   return *device;
+}
+
+// A floor kernel's benchmark: two untimed launches, then one a benchmark iteration, each timed by `launch`
+// (the kernel's milliseconds from its profiling events); frame_ms and mpixel_per_s of a width x height frame.
+inline void time_floor_launches(benchmark::State& state, const std::function<double()>& launch, int width,
+                                int height) {
+  for (int i = 0; i < 2; ++i) launch();
+  double sum_ms = 0.0;
+  for (auto _ : state) {
+    const double ms = launch();
+    state.SetIterationTime(ms * 1e-3);
+    sum_ms += ms;
+  }
+  const double frame_ms = sum_ms / double(state.iterations());
+  state.counters["frame_ms"] = frame_ms;
+  state.counters["mpixel_per_s"] = double(width) * height / (frame_ms * 1e3);
 }
 
 // A kernel that only writes every pixel of a width x height RGBA8 frame (kernels/fill_limit.cl), timed by
@@ -47,21 +64,14 @@ inline void run_fill_limit(benchmark::State& state, Device& device, int width, i
   }
   // plane: the frame kernel's default work-items on a CPU (device_layout.hpp), one a vector at most.
   const cl::NDRange global{plane ? std::size_t(device_work_items(device.info(), vectors)) : std::size_t(vectors)};
-  for (int i = 0; i < 2; ++i) device.queue().enqueueNDRangeKernel(kernel, cl::NullRange, global);
-  device.queue().finish();
-  double sum_ms = 0.0;
-  for (auto _ : state) {
+  const auto launch = [&] {
     cl::Event done;
     device.queue().enqueueNDRangeKernel(kernel, cl::NullRange, global, cl::NullRange, nullptr, &done);
     done.wait();
-    const double ms = double(done.getProfilingInfo<CL_PROFILING_COMMAND_END>() -
-                             done.getProfilingInfo<CL_PROFILING_COMMAND_START>()) * 1e-6;
-    state.SetIterationTime(ms * 1e-3);
-    sum_ms += ms;
-  }
-  const double frame_ms = sum_ms / double(state.iterations());
-  state.counters["frame_ms"] = frame_ms;
-  state.counters["mpixel_per_s"] = double(width) * height / (frame_ms * 1e3);
+    return double(done.getProfilingInfo<CL_PROFILING_COMMAND_END>() - done.getProfilingInfo<CL_PROFILING_COMMAND_START>()) *
+           1e-6;
+  };
+  time_floor_launches(state, launch, width, height);
 }
 
 }  // namespace parashade

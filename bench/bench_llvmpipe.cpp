@@ -220,16 +220,7 @@ void phong_fill_limit(benchmark::State& state, int w, int h) {
   const Scene* scene = scene_or_skip(state, "fullscreen_quad", w, h);
   if (!scene) return;
   PhongPlaneFill fill(bench_device(), *scene, w, h);
-  for (int i = 0; i < 2; ++i) fill.run_ms();
-  double sum_ms = 0.0;
-  for (auto _ : state) {
-    const double ms = fill.run_ms();
-    state.SetIterationTime(ms * 1e-3);
-    sum_ms += ms;
-  }
-  const double frame_ms = sum_ms / double(state.iterations());
-  state.counters["frame_ms"] = frame_ms;
-  state.counters["mpixel_per_s"] = double(w) * h / (frame_ms * 1e3);
+  time_floor_launches(state, [&] { return fill.run_ms(); }, w, h);
 }
 
 // The fastest repetition beside Google Benchmark's median: on a shared machine other processes only add

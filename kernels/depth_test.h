@@ -15,6 +15,12 @@
 #define PLAN_ARGS(px_)
 #endif
 
+/* The triangle's depth at lanes of rows fdy and columns frel (from its y0 and x0): the stamps' walk, the tile fill
+ * and a covered tile's straight write take it from here, so their values are the same bits. */
+INLINE floatV depth_lanes(__global const TriangleGeometry* t, floatV fdy, floatV frel) {
+  return (t->z_ref + t->z_ddy * fdy) + t->z_ddx * frel;
+}
+
 /* Columns rel from the triangle's x0, row dy from its y0; `inside` marks covered lanes: the lanes that pass,
  * their depth kept. */
 INLINE intV depth_test(__global const TriangleGeometry* t, int dy, floatV frel, intV inside, floatV* depth PLAN_DECL) {

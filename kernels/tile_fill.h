@@ -45,7 +45,7 @@ INLINE void fill_tile(const FrameArgs* f, uint ti, int tile_x, int tile_y, float
     for (int sx = 0; sx < STAMPS_X; ++sx) {
       const floatV frel = convert_floatV(STAMP_COLUMN + (tile_x + sx * STAMP - t->x0));
       const int slot = sy * STAMPS_X + sx;
-      depth[slot] = (t->z_ref + t->z_ddy * fdy) + t->z_ddx * frel;
+      depth[slot] = depth_lanes(t, fdy, frel);
 #if DEFER_STAMPS
       winner[slot] = (intV)(int)ti;
 #else
@@ -74,7 +74,7 @@ INLINE void write_covered_tile(const FrameArgs* f, uint ti, int tile_x, int tile
     for (int s = 0; s < SEGMENTS; ++s) {
       const int x = tile_x + s * VEC;
       const floatV frel = convert_floatV(LANE_INDEX + (x - t->x0));
-      const floatV z = (t->z_ref + t->z_ddy * fdy) + t->z_ddx * frel;
+      const floatV z = depth_lanes(t, fdy, frel);
       floatV r, g, b;
       SHADE_STAMP_PIXELS(attr, fdy, frel, &r, &g, &b, f->lights, f->materials, f->viewer);
       write_frame_segment(pixels_rgba(z, r, g, b), f->out_rgba, x, tile_y + row, f->width);

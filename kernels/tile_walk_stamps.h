@@ -31,7 +31,7 @@ INLINE void shade_stamp(const FrameArgs* f, uint ti, __global const TriangleGeom
                         intV dy, intV rel, intV outside, int slot, floatV* depth, floatV* cr, floatV* cg, floatV* cb
                         DEFER_DECL) {
   const floatV frel = convert_floatV(rel), fdy = convert_floatV(dy);
-  const floatV z = (t->z_ref + t->z_ddy * fdy) + t->z_ddx * frel;
+  const floatV z = depth_lanes(t, fdy, frel);
   const intV pass = ~outside & as_intV(z - depth[slot]);
 #if DEFER_STAMPS
   if (deferred && !shaded_in_walk(attr)) { /* two selects: cheaper than asking whether any lane passed */

@@ -7,18 +7,15 @@
 #include <vector>
 
 #include <CL/opencl.hpp>
-#include <glm/glm.hpp>
 
 #include "parashade/device_layout.hpp"
 #include "parashade/errors.hpp"
+#include "parashade/kernels/triangle_record.h"
 #include "kernel_variant.hpp"
 #include "shading_tables.hpp"
 
 namespace parashade {
 namespace {
-
-constexpr int kPhongAttrFloats = 22;     // kernels/triangle_record.h PHONG_ATTR_FLOATS
-constexpr int kPhongMaterialSlot = 18;   // PHONG_MATERIAL_SLOT
 
 // The record of a rectangle filling the orthographic view of height 2 at width x height: slot k's value at
 // the top-left pixel's centre, its step along a row (k + 3) and down a column (k + 6); normals (nx, ny, nz)
@@ -28,13 +25,13 @@ std::vector<float> screen_record(int width, int height) {
   const float s = 2.0f / float(height);  // world units per pixel
   const float x0 = (0.5f - 0.5f * float(width)) * s, y0 = (0.5f * float(height) - 0.5f) * s;
   const float k = 1.0f / std::sqrt(0.99f);
-  std::vector<float> a(kPhongAttrFloats, 0.0f);
+  std::vector<float> a(PHONG_ATTR_FLOATS, 0.0f);
   a[0] = k * 0.075f * x0, a[3] = k * 0.075f * s;  // nx = k 0.3 x / 4
   a[1] = k * 0.2f * y0, a[7] = -k * 0.2f * s;     // ny = k 0.3 y / 1.5, y falling down the screen
   a[2] = k * 0.9f;
   a[9] = x0, a[12] = s;    // world x
   a[10] = y0, a[16] = -s;  // world y; z = 0
-  a[kPhongMaterialSlot] = 0.0f;
+  a[PHONG_MATERIAL_SLOT] = 0.0f;
   return a;
 }
 
@@ -56,8 +53,6 @@ PhongPlaneFill::PhongPlaneFill(Device& device, const Scene& scene, int width, in
   KernelVariant variant = kernel_variant(scene, options);
   std::vector<cl_float4> light_values = light_table(scene), material_values = material_table(scene, options.specular);
   std::vector<float> record = screen_record(width, height);
-  const glm::vec3 v = variant.local_viewer ? scene.camera.position
-                                           : glm::normalize(scene.camera.position - scene.camera.target);
   const std::size_t pixels = std::size_t(width) * std::size_t(height);
   try {
     cl::Context& c = device.context();
@@ -80,7 +75,7 @@ PhongPlaneFill::PhongPlaneFill(Device& device, const Scene& scene, int width, in
     k.setArg(4, cl_int(height));
     k.setArg(5, impl_->lights);
     k.setArg(6, impl_->materials);
-    k.setArg(7, cl_float4{{v.x, v.y, v.z, 0.0f}});
+    k.setArg(7, viewer_value(scene, variant.local_viewer));
   } catch (const cl::Error&) {
     rethrow_cl_error("setting up phong_plane_fill_limit on '" + device.info().name + "'");
   }

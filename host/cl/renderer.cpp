@@ -417,10 +417,8 @@ const Frame& Renderer::Impl::render(const Scene& scene) {
     upload_tables(scene);
     prepare_outputs(scene, counter_bytes);
     cl::Kernel& kernel = frame_kernel(scene);
-    const glm::vec3 viewer = variant_->local_viewer ? scene.camera.position
-                                                   : glm::normalize(scene.camera.position - scene.camera.target);
     const glm::vec3 bg = 255.0f * scene.background;
-    const cl_float4 viewer4{{viewer.x, viewer.y, viewer.z, 0.0f}}, background{{bg.x, bg.y, bg.z, 0.0f}};
+    const cl_float4 viewer4 = viewer_value(scene, variant_->local_viewer), background{{bg.x, bg.y, bg.z, 0.0f}};
     const TileKernelArgs args = tile_args(tile_start_, tile_tris_, viewer4, background, scene, f);
     set_tile_kernel_args(kernel, args);
     UnitPassEvents unit_pass;

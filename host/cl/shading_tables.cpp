@@ -16,6 +16,11 @@ std::vector<cl_float4> light_table(const Scene& s) {
   return out;
 }
 
+cl_float4 viewer_value(const Scene& s, bool local_viewer) {
+  const glm::vec3 v = local_viewer ? s.camera.position : glm::normalize(s.camera.position - s.camera.target);
+  return {{v.x, v.y, v.z, 0.0f}};
+}
+
 std::vector<cl_float4> material_table(const Scene& s, const SpecularModel& spec) {
   std::vector<cl_float4> out;
   for (const Material& m : s.materials) {

@@ -16,6 +16,9 @@ std::vector<cl_float4> light_table(const Scene& s);
 // Per material: 255 * ambient * ambient light with the shininess in .w; the diffuse colour with the scale
 // a of a cos^k(a alpha) specular model in .w; the specular colour, its .w spare (set_combined_limits).
 std::vector<cl_float4> material_table(const Scene& s, const SpecularModel& spec);
+// The viewer as the kernels read it: the camera's position for a local viewer, else the unit direction
+// towards the camera.
+cl_float4 viewer_value(const Scene& s, bool local_viewer);
 // combined:auto without a triangle choice: the limit on the relative normal change per segment of each
 // material, from the error budget, into the spare .w of its specular entry. With a choice the limit is
 // per triangle (PHONG_PSI_SLOT).
