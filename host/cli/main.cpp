@@ -6,7 +6,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include "../cl/build_notice.hpp"
 #include "commands.hpp"
 #include "parse_errors.hpp"
 #include "standard_streams.hpp"
@@ -39,14 +38,9 @@ int run(int argc, char** argv) {
   }
   try {
     check_environment();  // a bad PARASHADE_* value stops every command alike, before any work
-    for (const cli::Command& c : commands)
-      if (c.app->parsed()) {
-        // "compiling kernels for ...": not with -q, and under mpirun from rank 0 alone (every rank builds).
-        const CLI::Option* quiet = c.app->get_option_no_throw("--quiet");
-        const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
-        set_kernel_build_notices(!(quiet && quiet->count() > 0) && !(rank && std::string(rank) != "0"));
-        return c.run();
-      }
+    // "compiling kernels for ...": not with -q, and under mpirun from rank 0 alone (every rank builds).
+    const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
+    if (const std::optional<int> status = cli::run_parsed(commands, !(rank && std::string(rank) != "0"))) return *status;
     std::string names;
     for (const std::string& n : cli::command_names(app)) names += (names.empty() ? "" : ", ") + n;
     std::cerr << "parashade: error: a command is required: " << names << "\nRun 'parashade --help' for the commands.\n";

@@ -4,10 +4,6 @@ option out, a list or tuple gives the option once per item, size=(W, H) is --siz
 gives NAME=V1,V2 per key. The command parses the words: its names, defaults and messages hold."""
 
 
-def _text(value):
-    return str(value)
-
-
 def option_words(options):
     words = []
     for name, value in options.items():
@@ -21,10 +17,10 @@ def option_words(options):
         elif isinstance(value, dict):
             for key, values in value.items():
                 items = values if isinstance(values, (list, tuple)) else [values]
-                words += [flag, "%s=%s" % (key, ",".join(_text(v) for v in items))]
+                words += [flag, "%s=%s" % (key, ",".join(str(v) for v in items))]
         elif isinstance(value, (list, tuple)):
             for item in value:
-                words += [flag, _text(item)]
+                words += [flag, str(item)]
         else:
-            words += [flag, _text(value)]
+            words += [flag, str(value)]
     return words

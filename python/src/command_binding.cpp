@@ -2,7 +2,6 @@
 // line's own definition (host/cli/commands.hpp), the GIL released; its report is what the module returns.
 #include <CLI/CLI.hpp>
 
-#include "../../host/cl/build_notice.hpp"
 #include "../../host/cli/commands.hpp"
 #include "../../host/cli/parse_errors.hpp"
 #include "bindings.hpp"
@@ -28,12 +27,7 @@ int run_command(const std::vector<std::string>& words) {
     throw UsageError(cli::parse_error_message(app, e));
   }
   check_environment();
-  for (const cli::Command& c : commands)
-    if (c.app->parsed()) {
-      const CLI::Option* quiet = c.app->get_option_no_throw("--quiet");
-      set_kernel_build_notices(!(quiet && quiet->count() > 0));
-      return c.run();
-    }
+  if (const std::optional<int> status = cli::run_parsed(commands, true)) return *status;
   throw UsageError("a command is required");
 }
 
