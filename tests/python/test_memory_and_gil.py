@@ -34,7 +34,7 @@ def test_the_gil_is_released_while_a_frame_renders(parashade):
     ticks, done = [0], threading.Event()
 
     def render():
-        parashade.render(teapot, size=(960, 540), frames=30, warmup=0, q=True, no_error=True)
+        parashade.render(teapot, size=(960, 540), frames=150, warmup=0, q=True, no_error=True)
         done.set()
 
     worker = threading.Thread(target=render)
