@@ -33,6 +33,7 @@ struct RenderArgs {
   std::string scene, output, method = "gouraud", device, size, report, units, arith = "float", division = "constant",
               coverage = "centre", specular = "exact", normalize = "exact", triangle_choice, kernel_shape = "vector";
   std::string against;  // --against: a plain method whose frames alternate with this one's
+  std::string against_device;  // --against-device: a device whose frames of this request alternate with these
   int frames = 5, warmup = 1;
   // The knobs that are plain values bind straight to the options the renderer and its kernel read (one
   // name from --NAME to the kernel's macro): --tile (0 here: chosen for the scene, tile_choice.hpp),
@@ -162,6 +163,10 @@ RenderRequest render_request(const RenderArgs& a, const RenderOutputs& outputs) 
       throw UsageError("--against pairs frames of two renderers on one device in one process; not with --distribute "
                        "or a device list ('" + (a.distribute.empty() ? a.device : "--distribute " + a.distribute) + "')");
   }
+  if (!a.against_device.empty() && !a.distribute.empty())
+    throw UsageError("--against-device pairs frames of two devices in one process; not with --distribute " +
+                     a.distribute);
+  r.against_device = a.against_device;
   r.quiet = a.quiet;
   return r;
 }
@@ -387,6 +392,11 @@ void add_output_options(CLI::App* cmd, const std::shared_ptr<RenderArgs>& a) {
                   "alternating with this method's, and report the median of the pairs' frame ratios: a comparison "
                   "that a host whose speed drifts between processes cannot bias (bench/README.md)")
       ->type_name("METHOD");
+  cmd->add_option("--against-device", a->against_device,
+                  "Also render this request on DEVICE (an index or a name, as --device; with its own tuned entry, "
+                  "kernel shape and layout) in the same process, its frames alternating with these, and report the "
+                  "median of the pairs' frame and kernel ratios: two devices compared on one host (docs/reports.md)")
+      ->type_name("DEVICE");
   cmd->add_flag("--float", a->options.float_output, "Also read back unclamped float colour (EXR output; error of the float values)");
   cmd->add_flag("--no-error", a->no_error, "Skip the exact reference and the error figures");
   cmd->add_option("--reference-image", a->reference_image,

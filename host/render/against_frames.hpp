@@ -1,7 +1,7 @@
 #pragma once
 // `render --against METHOD`: a second renderer of the same scene on the same device, whose frames alternate
 // with the rendered method's, one pair at a time (the against frame first in even pairs, second in odd
-// ones). On a shared host whose speed drifts, or changes from one process to the next, both sides of a pair
+// ones). `render --against-device D`: the same request on device D, resolved there (its own layout). On a shared host whose speed drifts, or changes from one process to the next, both sides of a pair
 // see the same host: the speed figure is the median of the pairs' ratios (bench/README.md, run AE).
 #include <vector>
 
@@ -17,6 +17,8 @@ class AgainstFrames {
  public:
   // `method` (flat, gouraud or phong) with render's defaults for it: the default tile, no tuned entry.
   AgainstFrames(Device& device, const Scene& scene, Method method, std::size_t band_record_bytes);
+  // The request as resolved on the other device (ResolvedRender::against_device).
+  explicit AgainstFrames(const ResolvedRender& other);
 
   static bool first_in_pair(int pair) { return pair % 2 == 0; }
   void warm_up(const Scene& scene) { renderer_.render(scene); }
@@ -27,7 +29,7 @@ class AgainstFrames {
   AgainstSummary summary(const std::vector<FrameTimings>& method) const;
 
  private:
-  Method method_;
+  std::string method_, device_;  // AgainstSummary's
   Renderer renderer_;
   std::vector<FrameTimings> timings_;
 };

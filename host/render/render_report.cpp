@@ -36,7 +36,7 @@ nlohmann::json ratios(const std::vector<double>& v) {
 }
 
 nlohmann::json against_json(const AgainstSummary& s) {
-  return {{"method", s.method},
+  nlohmann::json j = {{"method", s.method},
           {"pairs", s.frame_ratios.size()},
           {"frame_ms", s.medians.total_ms},
           {"samples_ms", s.samples_ms},
@@ -45,6 +45,12 @@ nlohmann::json against_json(const AgainstSummary& s) {
           {"kernel_ratio", ratios(s.kernel_ratios)},
           {"note", "each pair one frame of each renderer in one process, the against frame first in even pairs; "
                    "ratio = against ms / this method's ms (> 1: this method faster)"}};
+  if (!s.device.empty()) {
+    j["device"] = s.device;
+    j["note"] = "each pair one frame on each device in one process, the against device's first in even pairs; "
+                "ratio = against device's ms / this device's ms (> 1: this device faster)";
+  }
+  return j;
 }
 
 int band_mib(const RenderResult& r) {

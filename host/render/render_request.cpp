@@ -168,6 +168,39 @@ void note_error_floor(ResolvedRender& r) {
   r.notes.push_back(text);
 }
 
+// Every layout step after the devices are opened, in order: the tuned entry, the device's shape, the tile
+// and units, the device's work-group.
+void resolve_on_devices(ResolvedRender& r) {
+  if (r.mode == DeviceMode::one || r.mode == DeviceMode::unit_sub_devices) apply_tuned(r);
+  take_device_shape(r);
+  resolve_layout(r);
+  take_device_layout(r, r.request.options);
+}
+
+// render --against-device: this request on one other device, resolved there as it would be alone; its notes
+// and warnings are said with the option's name. Both sides are one device each: a pair compares two devices.
+void resolve_against_device(ResolvedRender& r, DeviceCache* cache) {
+  const std::string& selector = r.request.against_device;
+  if (selector.empty()) return;
+  if (r.request.against)
+    throw UsageError("--against and --against-device: one renderer to pair with at a time");
+  if (r.mode != DeviceMode::one || is_device_list(selector) || is_sub_device_selector(selector))
+    throw UsageError("--against-device pairs frames of one device with another's; not with a device list, "
+                     "sub-devices or a plan on them ('" + (r.mode == DeviceMode::one ? selector : r.request.device) + "')");
+  auto a = std::make_shared<ResolvedRender>();
+  a->request = r.request;
+  a->request.device = selector;
+  a->request.against_device.clear();
+  a->scene = r.scene;
+  a->options = a->request.options;
+  a->mode = DeviceMode::one;
+  open_devices_for(*a, {selector, "--against-device '" + selector + "'"}, cache);
+  resolve_on_devices(*a);
+  for (const std::string& n : a->notes) r.notes.push_back("--against-device: " + n);
+  for (const std::string& w : a->warnings) r.warnings.push_back("--against-device: " + w);
+  r.against_device = std::move(a);
+}
+
 }  // namespace
 
 const DeviceCache::Entry* DeviceCache::find(DeviceMode mode, const std::string& selector) const {
@@ -223,11 +256,9 @@ ResolvedRender resolve_render(RenderRequest request, CommandFiles& files, Device
   r.options = request.options;
   r.request = std::move(request);
   open_devices_for(r, selector, devices);
-  if (r.mode == DeviceMode::one || r.mode == DeviceMode::unit_sub_devices) apply_tuned(r);
-  take_device_shape(r);
-  resolve_layout(r);
-  take_device_layout(r, r.request.options);
+  resolve_on_devices(r);
   note_error_floor(r);
+  resolve_against_device(r, devices);
   return r;
 }
 

@@ -35,6 +35,7 @@ void run_frames(const ResolvedRender& r, RenderSession& session, RenderResult& o
                 const std::function<void(int, int)>& progress) {
   std::optional<AgainstFrames> against;
   if (r.request.against) against.emplace(*r.devices.front(), r.scene, *r.request.against, r.options.band_record_bytes);
+  if (r.against_device) against.emplace(*r.against_device);
   const int total = r.request.warmup + r.request.frames;
   std::string warning;
   const auto frame = [&]() -> const Frame& {

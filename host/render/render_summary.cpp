@@ -43,12 +43,15 @@ void print_frame(const RenderResult& r, std::FILE* out) {
                m.total_ms, r.frames, r.warmup, m.geometry_ms, m.setup_ms, m.binning_ms, m.launch_ms, m.kernel_ms,
                m.readback_ms, other, 1e3 / m.total_ms, pixels / (m.total_ms * 1e3), triangles / (m.total_ms * 1e3));
   if (m.choice_ms > 0.0) std::fprintf(out, "setup includes the per-triangle method choice: %.3f ms\n", m.choice_ms);
-  if (const auto& a = r.against)
+  if (const auto& a = r.against) {
+    const bool device = !a->device.empty();
     std::fprintf(out,
-                 "against %s: %.3f ms; this method %.3fx as fast (median of %zu pairs' ratios, p10 %.3f, p90 %.3f; "
+                 "against %s%s: %.3f ms; this %s %.3fx as fast (median of %zu pairs' ratios, p10 %.3f, p90 %.3f; "
                  "kernel %.3fx)\n",
-                 a->method.c_str(), a->medians.total_ms, median(a->frame_ratios), a->frame_ratios.size(),
+                 device ? "device " : "", (device ? a->device : a->method).c_str(), a->medians.total_ms,
+                 device ? "device" : "method", median(a->frame_ratios), a->frame_ratios.size(),
                  quantile(a->frame_ratios, 0.1), quantile(a->frame_ratios, 0.9), median(a->kernel_ratios));
+  }
 }
 
 void print_hardware(const RenderResult& r, bool per_unit, std::FILE* out) {

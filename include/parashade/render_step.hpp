@@ -70,6 +70,9 @@ struct RenderRequest {
   bool device_kernel_shape = false;
   std::filesystem::path tune_cache;  // empty: default_tune_cache()
   std::optional<Method> against;     // a plain method whose frames alternate with these (render --against)
+  // A device selector naming one device that renders this same request, resolved there as if alone (its
+  // tuned entry, kernel shape and layout), its frames alternating with these (render --against-device).
+  std::string against_device;
   bool quiet = false;                // no notes in ResolvedRender::notes
 };
 
@@ -87,6 +90,7 @@ struct ResolvedRender {
   LayoutSources sources;                         // where the shape, work-group, work-items and tile came from
   std::vector<std::string> notes;     // notes for stderr before the work (print_note): the tuned entry taken, stale entries
   std::vector<std::string> warnings;  // the scene's warnings and a tune cache that could not be read
+  std::shared_ptr<const ResolvedRender> against_device;  // request.against_device resolved on its device
 };
 
 // Devices kept open between requests, by device mode and selector, for a caller that resolves many requests
@@ -159,6 +163,7 @@ using DeviceShare = SplitRenderer::Share;
 // --against's frames: the other method's stage medians and the pairs' ratios (other / this).
 struct AgainstSummary {
   std::string method;
+  std::string device;  // --against-device: the other device's name (method is then this render's); else empty
   FrameTimings medians;
   std::vector<double> samples_ms, frame_ratios, kernel_ratios;
 };

@@ -39,6 +39,39 @@ TEST_F(CliAgainst, ReportsPairsOfBothRenderers) {
   EXPECT_EQ(r["method"], "gouraud") << "the rendered method is still the one reported";
 }
 
+// render --against-device: the same request on another device (here PoCL's pthread device twice: two
+// contexts of one device, whatever the test device), its frames alternating with these.
+TEST_F(CliAgainst, PairsFramesOfAnotherDevice) {
+  const auto scene = input("ball.json", sphere_scene());
+  std::vector<std::string> args = render_args(scene, {"--method", "phong", "--against-device", "pthread"});
+  *(std::find(args.begin(), args.end(), "--frames") + 1) = "5";
+  ASSERT_TRUE(succeeds(run_parashade(args)));
+  const nlohmann::json r = read_report();
+  const nlohmann::json& a = r["against"];
+  EXPECT_EQ(a["method"], "phong") << "the same request: this render's method";
+  EXPECT_NE(a["device"].get<std::string>().find("pthread"), std::string::npos) << a["device"];
+  EXPECT_EQ(a["pairs"], 5);
+  const std::vector<double> mine = r["timing"]["samples_ms"], theirs = a["samples_ms"];
+  ASSERT_EQ(mine.size(), theirs.size());
+  std::vector<double> ratios;
+  for (std::size_t i = 0; i < mine.size(); ++i) ratios.push_back(theirs[i] / mine[i]);
+  std::sort(ratios.begin(), ratios.end());
+  EXPECT_DOUBLE_EQ(a["frame_ratio"]["median"].get<double>(), ratios[ratios.size() / 2]);
+  EXPECT_GT(a["kernel_ratio"]["median"].get<double>(), 0.0);
+}
+
+TEST_F(CliAgainst, AgainstDeviceRefusesWhatItCannotPair) {
+  const auto scene = input("ball.json", sphere_scene());
+  EXPECT_TRUE(fails_with(render(scene, {"--against-device", "no-such-device"}), kDeviceFailure,
+                         {"--against-device 'no-such-device'"}));
+  EXPECT_TRUE(fails_with(render(scene, {"--against-device", "pthread", "--against", "flat"}), kUsage,
+                         {"--against and --against-device"}));
+  EXPECT_TRUE(fails_with(render(scene, {"--against-device", "all"}), kUsage, {"--against-device", "'all'"}));
+  EXPECT_TRUE(fails_with(render(scene, {"--against-device", "pthread", "--device", "all"}), kUsage,
+                         {"--against-device", "'all'"}));
+  EXPECT_TRUE(nothing_written());
+}
+
 TEST_F(CliAgainst, OnlyPlainMethods) {
   const auto scene = input("ball.json", sphere_scene());
   EXPECT_TRUE(fails_with(render(scene, {"--against", "combined:2"}), kUsage, {"--against", "combined:2"}));

@@ -209,6 +209,9 @@ def run_all(tmp):
     run(["render", scene, *small, "--frames", "2", "--warmup", "1", "-q", "--no-tuned", "-o", out("r.png"),
          "--report", out("render.json")])
     validate_report("render", out("render.json"))
+    run(["render", scene, *small, "--frames", "2", "--warmup", "1", "-q", "--no-tuned", "-o", out("d.png"),
+         "--against-device", "pthread", "--report", out("render-against-device.json")])
+    validate_report("render", out("render-against-device.json"))
     run(["render", scene, *small, "--frames", "2", "--warmup", "1", "-q", "--device", "all", "-o", out("s.png"),
          "--report", out("render-split.json")])
     validate_report("render-split", out("render-split.json"))
