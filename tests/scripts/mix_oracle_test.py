@@ -61,6 +61,9 @@ check(near(s3["phong_share_centroid_rule"], 1.0) and near(s3["phong_share_per_tr
                                                                      s3["phong_share_per_triangle"]))
 check(s["phong_share_centroid_rule"] is None, "a centroid share without positions")
 # Phong 4 ms (kernel 3), Gouraud 2 ms (kernel 1): a quarter of the pixels by Phong costs 0.5 ms more, 4 / 2.5.
+check(oracle.pixels_render_covers({"pixels_compared": 99, "front_surface_mismatch": 1}) == 100,
+      "a pixel whose front surface flipped is covered, though render does not compare it")
+check(oracle.pixels_render_covers({"pixels_compared": 99}) == 99, "reports without the count")
 check(near(oracle.bound(4.0, 2.0, 3.0, 1.0, 0.25), 1.6), "bound of the worked example")
 check(near(oracle.allowed_share(4.0, 2.0, 3.0, 1.0, 1.6), 0.25), "share the target allows")
 # Per pair: 4 / 2.5 = 1.6, 8 / 4.5, 2 / 1.5; the median is 1.6 (the medians' ratio would be 4 / 2.5 too, but the
