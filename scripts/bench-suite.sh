@@ -5,6 +5,8 @@
 # then the report (plots, image strip, claims table) when python3-matplotlib is present.
 #   scripts/bench-suite.sh [-q] [OUT_DIR]          whole suite (sizes 1920x1080, 512x512, 3840x2160; ~15 min on the quiet 2-core VM)
 #   scripts/bench-suite.sh [-q] --quick [OUT_DIR]  CI subset: sphere_8k and fullscreen_quad at 512x512 (< 1 min)
+#   scripts/bench-suite.sh [-q] --no-hw [OUT_DIR]  the whole suite but the RTL's synthesis and place and route
+#                                                  (~25 min of the run; they do not change with the kernels)
 #   scripts/bench-suite.sh [-q] --phong [OUT_DIR]  the Phong family ([Romanyuk & Romanyuk, combined shading]; [Dembitsky 2025, software/hardware rendering] ch. 2-3) and the claims table only (~5 min)
 #   scripts/bench-suite.sh [-q] [--phong] --shard K/N [OUT_DIR]   shard K of N: its share of the steps
 #   mpirun -np N scripts/bench-suite.sh [-q] [--phong] [OUT_DIR]  the same, shard = rank (docs/distributed.md)
@@ -20,6 +22,8 @@ PHONG_ONLY=0
 QUIET=0
 if [ "${1:-}" = "-q" ]; then QUIET=1; shift; fi
 if [ "${1:-}" = "--quick" ]; then QUICK=1; shift; fi
+NO_HW=0
+if [ "${1:-}" = "--no-hw" ]; then NO_HW=1; shift; fi
 if [ "${1:-}" = "--phong" ]; then PHONG_ONLY=1; shift; fi
 . scripts/bench_shard.sh  # sharding: shard_owns, after_all
 while :; do
@@ -217,14 +221,18 @@ suite() {
     step "unit-error" "$BUILD/parashade" unit-error -q --report "$OUT/unit-error.json"
     # The units' RTL synthesized (Yosys): adders, flip-flops, muxes, depth per M, P; throughput against area
     # (docs/hardware.md; ~10 min). Skipped without yosys.
-    if command -v yosys >/dev/null 2>&1; then
+    if [ "$NO_HW" = 1 ]; then
+      :  # --no-hw
+    elif command -v yosys >/dev/null 2>&1; then
       step "hw synthesis" hw_synthesis
     else
       warn "yosys is not installed: no synthesis of hw/ (scripts/install-deps.sh)"
     fi
     # The same units placed and routed on an iCE40HX8K (nextpnr-ice40, 3 seeds each, niced, one at a time):
     # Fmax, LUTs, carries, FFs, pixels per microsecond (docs/hardware.md, "Place and route"; ~15 min).
-    if command -v yosys >/dev/null 2>&1 && command -v nextpnr-ice40 >/dev/null 2>&1; then
+    if [ "$NO_HW" = 1 ]; then
+      :  # --no-hw
+    elif command -v yosys >/dev/null 2>&1 && command -v nextpnr-ice40 >/dev/null 2>&1; then
       step "hw place and route" hw_pnr
     else
       warn "yosys or nextpnr-ice40 is not installed: no place and route of hw/ (scripts/install-deps.sh --test)"
