@@ -58,20 +58,25 @@ def covered_fraction(pixels, scene):
     return float(np.mean(np.any(pixels != level, axis=2)))
 
 
+def floor_row(case, stages, covered, floors, size, target):
+    """One missed target's figures: `case` a bench_peer_pairs case, `stages` render's stages_ms, `covered` the
+    share of pixels the frame covers, `floors` bench_llvmpipe's results at `size`."""
+    kernel_floor = covered * bench_median(floors, FLOOR_OF[case["method"]], size) + \
+        (1 - covered) * bench_median(floors, "fill_limit", size)
+    frame, kernel = stages["total_ms"], stages["kernel_ms"]
+    floor_share = (frame - kernel + kernel_floor) / frame  # of the frame, with the kernel at its floor
+    now = case["ratio_median"]
+    return {"scene": case["scene"], "method": case["method"], "ratio": now, "target": target,
+            "host_ms": sum(stages[k] for k in HOST), "kernel_ms": kernel, "frame_ms": frame, "covered": covered,
+            "kernel_floor_ms": kernel_floor, "best_ratio": now / floor_share}
+
+
 def row(case, args, floors, tmp):
     name, method = case["scene"], case["method"]
     scene = scene_file(name if name in SPHERES else os.path.join(ROOT, "scenes", name + ".json"), tmp)
     report, pixels = render(args.binary, scene, method, args.size, args.frames, tmp)
-    stages = report["stages_ms"]
-    covered = covered_fraction(pixels, scene)
-    kernel_floor = covered * bench_median(floors, FLOOR_OF[method], args.size) + \
-        (1 - covered) * bench_median(floors, "fill_limit", args.size)
-    frame, kernel = stages["total_ms"], stages["kernel_ms"]
-    floor_share = (frame - kernel + kernel_floor) / frame  # of the frame, with the kernel at its floor
-    now = case["ratio_median"]
-    return {"scene": name, "method": method, "ratio": now, "target": args.targets[method],
-            "host_ms": sum(stages[k] for k in HOST), "kernel_ms": kernel, "frame_ms": frame, "covered": covered,
-            "kernel_floor_ms": kernel_floor, "best_ratio": now / floor_share}
+    return floor_row(case, report["stages_ms"], covered_fraction(pixels, scene), floors, args.size,
+                     args.targets[method])
 
 
 def main():
