@@ -1,8 +1,9 @@
 #pragma once
 // `render --against METHOD`: a second renderer of the same scene on the same device, whose frames alternate
 // with the rendered method's, one pair at a time (the against frame first in even pairs, second in odd
-// ones). `render --against-device D`: the same request on device D, resolved there (its own layout). On a shared host whose speed drifts, or changes from one process to the next, both sides of a pair
-// see the same host: the speed figure is the median of the pairs' ratios (bench/README.md, run AE).
+// ones). `render --against-device D`: the same request on device D, resolved there (its own layout). On a
+// shared host whose speed drifts, or changes from one process to the next, both sides of a pair see the same
+// host: the speed figure is the median of the pairs' ratios (bench/README.md, run AE).
 #include <vector>
 
 #include "parashade/device.hpp"

@@ -12,8 +12,11 @@ namespace {
 // Host bytes a pixel of what a render keeps beyond the frame it shades, rounded up from the peak resident
 // memory of 4096x4096 Phong frames with and without each option (+35, +7, +3.3 and +0.5; docs/robustness.md).
 // FLIP: its two float RGB inputs and its map (24 + 4); its bands of rows are counted apart (ldr_flip_working_bytes).
+// --against / --against-device: a second renderer's frame buffers (4096x4096 sphere, Gouraud and Phong: +70 and
+// +73 MiB, 4.4-4.6 bytes a pixel, with a second context on the same device), and its own records.
 constexpr std::uint64_t kFloatBytesPerPixel = 40, kReferenceImageBytesPerPixel = 8, kErrorMapBytesPerPixel = 8,
-                        kTriangleMapBytesPerPixel = 4, kFlipBytesPerPixel = 28, kFlipMapBytesPerPixel = 4;
+                        kTriangleMapBytesPerPixel = 4, kFlipBytesPerPixel = 28, kFlipMapBytesPerPixel = 4,
+                        kSecondRendererBytesPerPixel = 8;
 
 // The triangle records (setup's output, one buffer the kernels read) the frame holds at once: every
 // triangle's, unless the frame may stream (frame_can_stream) and they exceed its records budget, when a
@@ -47,6 +50,12 @@ FrameExtras frame_extras(const RenderRequest& request, int width, int height, st
                                     : kTriangleMapBytesPerPixel);
   x.records = held_record_bytes(request.options, width, height, triangles);
   x.bytes += x.records;
+  if (request.against || !request.against_device.empty()) {
+    add(request.against ? "--against" : "--against-device", kSecondRendererBytesPerPixel);
+    RenderOptions second = request.options;
+    if (request.against) second.method = *request.against;
+    x.bytes += held_record_bytes(second, width, height, triangles);
+  }
   return x;
 }
 

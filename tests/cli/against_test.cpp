@@ -72,6 +72,18 @@ TEST_F(CliAgainst, AgainstDeviceRefusesWhatItCannotPair) {
   EXPECT_TRUE(nothing_written());
 }
 
+// The second renderer's frame is in the host memory budget: at 4096x4096 the sphere needs about 1.5 GiB alone
+// and 128 MiB more with a second renderer (8 bytes a pixel), so a limit between the two refuses only the pair.
+TEST_F(CliAgainst, TheSecondRendererIsInTheMemoryBudget) {
+  const auto scene = input("ball.json", sphere_scene());
+  const ScopedEnv limit("PARASHADE_MEMORY_LIMIT", "1600M");
+  EXPECT_TRUE(succeeds(render(scene, {"--size", "4096x4096"})));
+  EXPECT_TRUE(fails_with(render(scene, {"--size", "4096x4096", "--against-device", "pthread"}), kBadInput,
+                         {"host memory", "--against-device"}));
+  EXPECT_TRUE(fails_with(render(scene, {"--size", "4096x4096", "--against", "phong"}), kBadInput,
+                         {"host memory", "--against"}));
+}
+
 TEST_F(CliAgainst, OnlyPlainMethods) {
   const auto scene = input("ball.json", sphere_scene());
   EXPECT_TRUE(fails_with(render(scene, {"--against", "combined:2"}), kUsage, {"--against", "combined:2"}));
