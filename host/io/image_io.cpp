@@ -40,7 +40,9 @@ std::string lower_extension(const fs::path& path) {
 std::string take_global_oiio_error() { return OIIO::geterror(); }
 
 // OIIO's plugins write through this proxy into the staged file: a failed write (ENOSPC, EFBIG, EIO) is
-// kept in the StagedFile even where a plugin ignores the short count (PNG, BMP and TGA did).
+// kept in the StagedFile even where a plugin ignores the short count (PNG, BMP and TGA did). Consecutive
+// writes are gathered before they reach the file: OIIO's PNM writer hands over one byte at a time (a
+// 1920x1080 PPM was 6.2 M pwrite calls, 2.3 s; PNG took 0.4 s). flush() before the file is closed.
 class StagedProxy : public OIIO::Filesystem::IOProxy {
  public:
   explicit StagedProxy(StagedFile& file) : IOProxy(file.temporary().string(), Write), file_(file) {}
@@ -52,8 +54,19 @@ class StagedProxy : public OIIO::Filesystem::IOProxy {
   }
   size_t pwrite(const void* buf, size_t size, int64_t offset) override {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (offset < 0 || !file_.pwrite_all(buf, size, std::size_t(offset))) return 0;
-    size_ = std::max(size_, std::size_t(offset) + size);
+    if (offset < 0) return 0;
+    const std::size_t at = std::size_t(offset);
+    if (at != gathered_at_ + gathered_.size() || gathered_.size() + size > kGather) {
+      if (!flush_locked()) return 0;
+      gathered_at_ = at;
+    }
+    if (size > kGather) {
+      if (!file_.pwrite_all(buf, size, at)) return 0;
+    } else {
+      const auto* bytes = static_cast<const std::uint8_t*>(buf);
+      gathered_.insert(gathered_.end(), bytes, bytes + size);
+    }
+    size_ = std::max(size_, at + size);
     return size;
   }
   size_t read(void* buf, size_t size) override {
@@ -63,16 +76,31 @@ class StagedProxy : public OIIO::Filesystem::IOProxy {
   }
   size_t pread(void* buf, size_t size, int64_t offset) override {  // TIFF reads back what it wrote
     std::lock_guard<std::mutex> lock(mutex_);
+    if (!flush_locked()) return 0;
     const ssize_t n = ::pread(fd_, buf, size, off_t(offset));
     return n < 0 ? 0 : size_t(n);
   }
   size_t size() const override { return size_; }
+  // The gathered bytes to the file; false (and the StagedFile's error set) when the write failed.
+  bool flush() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return flush_locked();
+  }
 
   int fd_ = -1;
 
  private:
+  static constexpr std::size_t kGather = std::size_t(1) << 20;
+  bool flush_locked() {
+    const bool ok = gathered_.empty() || file_.pwrite_all(gathered_.data(), gathered_.size(), gathered_at_);
+    gathered_at_ += gathered_.size();
+    gathered_.clear();
+    return ok;
+  }
   StagedFile& file_;
   std::size_t size_ = 0;
+  std::vector<std::uint8_t> gathered_;
+  std::size_t gathered_at_ = 0;
   std::mutex mutex_;
 };
 
@@ -136,6 +164,7 @@ void write_file(StagedFile& file, int width, int height, const Pixels& px) {
   if (!written) file.fail(out->geterror());
   if (!out->close()) file.fail(out->geterror());
   out.reset();
+  proxy.flush();  // a failed write is kept in `file`
   file.close_fd();
 }
 
