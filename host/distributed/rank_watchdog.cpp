@@ -1,6 +1,8 @@
 // The rank watchdog (rank_watchdog.hpp).
 #include "rank_watchdog.hpp"
 
+#include <pthread.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -21,6 +23,8 @@ void RankWatchdog::start(MPI_Comm comm, int rank, int size, double seconds) {
   if (!(seconds > 0) || thread_.joinable()) return;
   comm_ = comm, rank_ = rank, size_ = size, seconds_ = seconds;
   thread_ = std::thread([this] { watch(); });
+  // Named, so a test (tests/mpi/mpi_test.py) sees from /proc when the watching has begun.
+  pthread_setname_np(thread_.native_handle(), "rank-watchdog");
 }
 
 void RankWatchdog::stop() {
