@@ -1,5 +1,9 @@
 // parashade.compare, tune and devices (docs/python.md): the command run in this process by the command
 // line's own definition (host/cli/commands.hpp), the GIL released; its report is what the module returns.
+#include <cstdio>
+#include <iostream>
+#include <streambuf>
+
 #include <CLI/CLI.hpp>
 
 #include "../../host/cli/commands.hpp"
@@ -10,6 +14,40 @@
 #include "parashade/report_header.hpp"
 
 namespace parashade::python {
+namespace {
+
+// What the command prints on stdout (its results, "wrote ..." lines) is in the report the caller gets back:
+// a library call prints none of it. C stdio's stdout and std::cout go to a sink while the command runs;
+// stderr (notes, warnings, errors) stays. Python's own prints write to descriptor 1 and are not affected.
+class DiscardedStdout {
+ public:
+  DiscardedStdout() {
+    std::fflush(stdout);
+    cookie_io_functions_t io{};
+    io.write = [](void*, const char*, std::size_t size) -> ssize_t { return ssize_t(size); };
+    sink_ = ::fopencookie(nullptr, "w", io);
+    if (sink_) std::swap(stdout, sink_);
+    saved_buf_ = std::cout.rdbuf(&null_buf_);
+  }
+  ~DiscardedStdout() {
+    std::cout.rdbuf(saved_buf_);
+    if (!sink_) return;
+    std::swap(stdout, sink_);
+    std::fclose(sink_);
+  }
+  DiscardedStdout(const DiscardedStdout&) = delete;
+  DiscardedStdout& operator=(const DiscardedStdout&) = delete;
+
+ private:
+  struct NullBuffer : std::streambuf {
+    int overflow(int c) override { return traits_type::not_eof(c); }
+    std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
+  } null_buf_;
+  std::FILE* sink_ = nullptr;
+  std::streambuf* saved_buf_ = nullptr;
+};
+
+}  // namespace
 
 int run_command(const std::vector<std::string>& words) {
   pybind11::gil_scoped_release unlocked;
@@ -27,6 +65,7 @@ int run_command(const std::vector<std::string>& words) {
     throw UsageError(cli::parse_error_message(app, e));
   }
   check_environment();
+  const DiscardedStdout quiet;
   if (const std::optional<int> status = cli::run_parsed(commands, true)) return *status;
   throw UsageError("a command is required");
 }

@@ -32,6 +32,19 @@ def test_compare_is_the_commands(parashade, tmp_path):
     assert diff["error"] == cli["error"] and diff["max_at"] == cli["max_at"] and diff["pixels_over_fail"] > 0
 
 
+def test_commands_print_nothing_on_stdout(parashade, tmp_path, capfd):
+    """The command's results are the dict returned: compare and devices print none of them (the command
+    prints its figures and a `wrote` line; devices its list)."""
+    a = str(tmp_path / "a.png")
+    parashade.render(scene("sphere.json"), size=(32, 32), frames=1, output=a, q=True)
+    capfd.readouterr()
+    assert parashade.compare(a, a)["passed"]
+    assert parashade.devices()
+    print("python's own print")
+    out = capfd.readouterr().out
+    assert out == "python's own print\n", out
+
+
 def test_tune_searches_and_render_takes_its_best(parashade, tmp_path):
     cache = str(tmp_path / "tune.json")
     report = parashade.tune(scene("sphere.json"), params={"tile": [16, 32]}, max_error=10, size=(128, 72),
