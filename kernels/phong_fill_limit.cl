@@ -5,8 +5,9 @@
  * test, triangle loop, tile or depth buffer. `a` is the record of that triangle (PHONG_ATTR_FLOATS, planes about
  * the frame's top-left pixel); rows as plane_fill_limit's (fill_limit.cl); `width` a multiple of VEC. */
 
-__kernel void phong_plane_fill_limit(__global uint* restrict out, __global const float* restrict a, float4 depth, int width, int height,
-                                     __constant float4* lights, __constant float4* materials, float4 viewer) {
+__kernel void phong_plane_fill_limit(__global uint* restrict out, __global const float* restrict a, float4 depth,
+                                     int width, int height, __constant float4* lights, __constant float4* materials,
+                                     float4 viewer) {
   for (int y = get_global_id(0); y < height; y += get_global_size(0)) {
     const floatV fdy = (floatV)(float)y;
     for (int x = 0; x < width; x += VEC) {

@@ -26,8 +26,9 @@
 #include "tile_fill.h"
 #endif
 
-/* One tile: cleared (or filled by a first triangle that covers it, tile_fill.h), its triangles walked in primitive order, a deferred tile shaded after its walk, then
- * written; in the units' depth pass (PLAN_PASS 1) a virtual tile, whose walk only offers depth keys. */
+/* One tile: cleared (or filled by a first triangle that covers it, tile_fill.h), its triangles walked in
+ * primitive order, a deferred tile shaded after its walk, then written; in the units' depth pass (PLAN_PASS 1)
+ * a virtual tile, whose walk only offers depth keys. */
 INLINE void render_tile(const FrameArgs* f, int tile, uint begin, uint end) {
   const int tile_x = (tile % f->tiles_x) * TILE, tile_y = (tile / f->tiles_x) * TILE;
 #if PLAIN_FRAME

@@ -12,28 +12,20 @@ Each device takes the layout parashade chooses for it (its tuned entry unless --
 Prints a Markdown table: per scene and method, every run's kernel and frame ratio and their medians.
 """
 import argparse
-import json
 import os
 import shlex
 import statistics
-import subprocess
 import sys
 import tempfile
 
-from stage_table import scene_file
+from stage_table import render_report, scene_file
 
 
 def pair_ratios(binary, scene, method, main, other, frames, size, options, tmp):
     """(kernel, frame) medians of the pairs' ratios `other` ms / `main` ms from one render --against-device."""
-    report = os.path.join(tmp, "report.json")
-    cmd = [binary, "render", scene, "-o", os.path.join(tmp, "image.png"), "--method", method, "--frames", str(frames),
-           "--no-error", "-q", "--report", report, "--device", main, "--against-device", other]
-    cmd += (["--size", size] if size else []) + shlex.split(options)
-    run = subprocess.run(cmd, capture_output=True, text=True)
-    if run.returncode != 0:
-        sys.exit(f"device_pairs.py: {' '.join(cmd)} failed ({run.returncode}): {run.stderr.strip()}")
-    with open(report) as f:
-        against = json.load(f)["against"]
+    words = ["--method", method, "--frames", str(frames), "--device", main, "--against-device", other]
+    against = render_report(binary, scene, words + (["--size", size] if size else []) + shlex.split(options),
+                            tmp)["against"]
     return against["kernel_ratio"]["median"], against["frame_ratio"]["median"]
 
 

@@ -44,16 +44,23 @@ def scene_file(name, tmp):
     return path
 
 
-def stages(binary, scene, method, frames, tmp, size=None, options=""):
+def render_report(binary, scene, words, tmp):
+    """`parashade render SCENE WORDS` with its image at tmp/image.png and no error figures: its report's dict;
+    the script stops, naming the command, when the render fails. device_pairs.py and target_floor.py use it too."""
     report = os.path.join(tmp, "report.json")
-    words = shlex.split(method)  # the method, then its own render options
-    cmd = [binary, "render", scene, "-o", os.path.join(tmp, "image.png"), "--method", words[0], "--frames", str(frames),
-           "--no-error", "-q", "--report", report] + words[1:] + (["--size", size] if size else []) + shlex.split(options)
+    cmd = [binary, "render", scene, "-o", os.path.join(tmp, "image.png"), "--no-error", "-q", "--report", report]
+    cmd += words
     run = subprocess.run(cmd, capture_output=True, text=True)
     if run.returncode != 0:
-        sys.exit(f"stage_table.py: {' '.join(cmd)} failed ({run.returncode}): {run.stderr.strip()}")
+        sys.exit(f"{os.path.basename(sys.argv[0])}: {' '.join(cmd)} failed ({run.returncode}): {run.stderr.strip()}")
     with open(report) as f:
-        return json.load(f)["stages_ms"]
+        return json.load(f)
+
+
+def stages(binary, scene, method, frames, tmp, size=None, options=""):
+    words = shlex.split(method)  # the method, then its own render options
+    return render_report(binary, scene, ["--method", words[0], "--frames", str(frames)] + words[1:] +
+                         (["--size", size] if size else []) + shlex.split(options), tmp)["stages_ms"]
 
 
 def main():

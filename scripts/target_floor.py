@@ -18,14 +18,13 @@ or scenes/NAME.json).
 import argparse
 import json
 import os
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
 from PIL import Image
 
-from stage_table import SPHERES, scene_file
+from stage_table import SPHERES, render_report, scene_file
 
 HOST = ("geometry_ms", "setup_ms", "binning_ms")
 FLOOR_OF = {"gouraud": "plane_fill_limit", "phong": "phong_plane_fill_limit"}
@@ -41,14 +40,9 @@ def bench_median(floors, name, size):
 
 
 def render(binary, scene, method, size, frames, tmp):
-    image, report = os.path.join(tmp, "image.png"), os.path.join(tmp, "report.json")
-    cmd = [binary, "render", scene, "--method", method, "--size", size, "--frames", str(frames), "--no-error", "-q",
-           "-o", image, "--report", report]
-    run = subprocess.run(cmd, capture_output=True, text=True)
-    if run.returncode != 0:
-        sys.exit(f"target_floor.py: {' '.join(cmd)} failed ({run.returncode}): {run.stderr.strip()}")
-    with open(report) as f:
-        return json.load(f), np.asarray(Image.open(image).convert("RGB"))
+    """render's report and the image it wrote (RGB levels)."""
+    report = render_report(binary, scene, ["--method", method, "--size", size, "--frames", str(frames)], tmp)
+    return report, np.asarray(Image.open(os.path.join(tmp, "image.png")).convert("RGB"))
 
 
 def covered_fraction(pixels, scene):

@@ -22,6 +22,7 @@ namespace {
 class DiscardedStdout {
  public:
   DiscardedStdout() {
+    std::cout.flush();
     std::fflush(stdout);
     cookie_io_functions_t io{};
     io.write = [](void*, const char*, std::size_t size) -> ssize_t { return ssize_t(size); };

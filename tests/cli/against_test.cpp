@@ -14,14 +14,30 @@ namespace {
 
 using namespace testing_support;
 
-class CliAgainst : public CliTest {};
+class CliAgainst : public CliTest {
+ protected:
+  // render SCENE EXTRA with `frames` timed frames (the fixture times one); the report.
+  nlohmann::json render_frames(const std::filesystem::path& scene, std::vector<std::string> extra, int frames) {
+    std::vector<std::string> args = render_args(scene, std::move(extra));
+    *(std::find(args.begin(), args.end(), "--frames") + 1) = std::to_string(frames);
+    EXPECT_TRUE(succeeds(run_parashade(args)));
+    return read_report();
+  }
+};
+
+// The median of the pairs' ratios: the against frame over this render's frame of the same pair.
+double median_pair_ratio(const nlohmann::json& report) {
+  const std::vector<double> mine = report["timing"]["samples_ms"], theirs = report["against"]["samples_ms"];
+  EXPECT_EQ(mine.size(), theirs.size());
+  std::vector<double> ratios;
+  for (std::size_t i = 0; i < mine.size() && i < theirs.size(); ++i) ratios.push_back(theirs[i] / mine[i]);
+  std::sort(ratios.begin(), ratios.end());
+  return ratios.empty() ? 0.0 : ratios[ratios.size() / 2];
+}
 
 TEST_F(CliAgainst, ReportsPairsOfBothRenderers) {
   const auto scene = input("ball.json", sphere_scene());
-  std::vector<std::string> args = render_args(scene, {"--method", "gouraud", "--against", "phong"});
-  *(std::find(args.begin(), args.end(), "--frames") + 1) = "7";  // the fixture times one frame
-  ASSERT_TRUE(succeeds(run_parashade(args)));
-  const nlohmann::json r = read_report();
+  const nlohmann::json r = render_frames(scene, {"--method", "gouraud", "--against", "phong"}, 7);
   const nlohmann::json& a = r["against"];
   EXPECT_EQ(a["method"], "phong");
   EXPECT_EQ(a["pairs"], 7) << "one against frame per timed frame";
@@ -29,13 +45,7 @@ TEST_F(CliAgainst, ReportsPairsOfBothRenderers) {
   const double lo = a["frame_ratio"]["p10"], mid = a["frame_ratio"]["median"], hi = a["frame_ratio"]["p90"];
   EXPECT_LE(lo, mid);
   EXPECT_LE(mid, hi);
-  // The ratios are the against frame over this method's frame of the same pair.
-  const std::vector<double> mine = r["timing"]["samples_ms"], theirs = a["samples_ms"];
-  ASSERT_EQ(mine.size(), theirs.size());
-  std::vector<double> ratios;
-  for (std::size_t i = 0; i < mine.size(); ++i) ratios.push_back(theirs[i] / mine[i]);
-  std::sort(ratios.begin(), ratios.end());
-  EXPECT_DOUBLE_EQ(mid, ratios[ratios.size() / 2]);
+  EXPECT_DOUBLE_EQ(mid, median_pair_ratio(r));
   EXPECT_EQ(r["method"], "gouraud") << "the rendered method is still the one reported";
 }
 
@@ -43,20 +53,12 @@ TEST_F(CliAgainst, ReportsPairsOfBothRenderers) {
 // contexts of one device, whatever the test device), its frames alternating with these.
 TEST_F(CliAgainst, PairsFramesOfAnotherDevice) {
   const auto scene = input("ball.json", sphere_scene());
-  std::vector<std::string> args = render_args(scene, {"--method", "phong", "--against-device", "pthread"});
-  *(std::find(args.begin(), args.end(), "--frames") + 1) = "5";
-  ASSERT_TRUE(succeeds(run_parashade(args)));
-  const nlohmann::json r = read_report();
+  const nlohmann::json r = render_frames(scene, {"--method", "phong", "--against-device", "pthread"}, 5);
   const nlohmann::json& a = r["against"];
   EXPECT_EQ(a["method"], "phong") << "the same request: this render's method";
   EXPECT_NE(a["device"].get<std::string>().find("pthread"), std::string::npos) << a["device"];
   EXPECT_EQ(a["pairs"], 5);
-  const std::vector<double> mine = r["timing"]["samples_ms"], theirs = a["samples_ms"];
-  ASSERT_EQ(mine.size(), theirs.size());
-  std::vector<double> ratios;
-  for (std::size_t i = 0; i < mine.size(); ++i) ratios.push_back(theirs[i] / mine[i]);
-  std::sort(ratios.begin(), ratios.end());
-  EXPECT_DOUBLE_EQ(a["frame_ratio"]["median"].get<double>(), ratios[ratios.size() / 2]);
+  EXPECT_DOUBLE_EQ(a["frame_ratio"]["median"].get<double>(), median_pair_ratio(r));
   EXPECT_GT(a["kernel_ratio"]["median"].get<double>(), 0.0);
 }
 
