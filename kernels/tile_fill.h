@@ -71,14 +71,19 @@ INLINE void write_covered_tile(const FrameArgs* f, uint ti, int tile_x, int tile
   __global const float* attr = f->attrs + (size_t)ti * ATTR_FLOATS;
   for (int row = 0; row < TILE; ++row) {
     const floatV fdy = convert_floatV((intV)(tile_y + row - t->y0));
+    /* The row's segments are all shaded before any is stored: to the compiler a store to the frame might change
+     * the planes, which it would then read again for every segment (a quarter of the quad's kernel). */
+    uintV rgba[SEGMENTS];
+#pragma unroll
     for (int s = 0; s < SEGMENTS; ++s) {
-      const int x = tile_x + s * VEC;
-      const floatV frel = convert_floatV(LANE_INDEX + (x - t->x0));
+      const floatV frel = convert_floatV(LANE_INDEX + (tile_x + s * VEC - t->x0));
       const floatV z = depth_lanes(t, fdy, frel);
       floatV r, g, b;
       SHADE_STAMP_PIXELS(attr, fdy, frel, &r, &g, &b, f->lights, f->materials, f->viewer);
-      write_frame_segment(pixels_rgba(z, r, g, b), f->out_rgba, x, tile_y + row, f->width);
+      rgba[s] = pixels_rgba(z, r, g, b);
     }
+#pragma unroll
+    for (int s = 0; s < SEGMENTS; ++s) write_frame_segment(rgba[s], f->out_rgba, tile_x + s * VEC, tile_y + row, f->width);
   }
 }
 #endif
