@@ -11,7 +11,7 @@
 #
 # --test (scripts/test.sh, README's second command) adds what only the tests use: nextpnr-ice40 (Debian; the
 # place and route of hw/, scripts/hw_pnr.py, docs/hardware.md), doxygen (the API reference's test,
-# docs.api_reference), pybind11-dev, python3-dev and python3-pytest (the Python module, which test.sh builds
+# docs.api_reference), llvm (llvm-mca: scripts/kernel_loops.py and its test), pybind11-dev, python3-dev and python3-pytest (the Python module, which test.sh builds
 # with -DPARASHADE_PYTHON=ON, and its pytest tests; docs/python.md) and, not packaged by Debian, Intel's CPU OpenCL runtime, the third implementation of
 # the anydevice tests (docs/pipeline.md),
 # from PyPI (intel-opencl-rt, intel-cmplr-lib-rt) into a Python venv (Debian's python3-venv) at the fixed prefix
@@ -32,7 +32,7 @@ SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 TEST_PACKAGES=""
-if [ "$TEST" = 1 ]; then TEST_PACKAGES="python3-venv nextpnr-ice40 doxygen pybind11-dev python3-dev python3-pytest"; fi
+if [ "$TEST" = 1 ]; then TEST_PACKAGES="python3-venv nextpnr-ice40 doxygen pybind11-dev python3-dev python3-pytest llvm"; fi
 $SUDO apt-get update -q
 # shellcheck disable=SC2086  # TEST_PACKAGES is empty or words
 $SUDO apt-get install -y -q --no-install-recommends $TEST_PACKAGES \
