@@ -83,7 +83,8 @@ INLINE void write_covered_tile(const FrameArgs* f, uint ti, int tile_x, int tile
       rgba[s] = pixels_rgba(z, r, g, b);
     }
 #pragma unroll
-    for (int s = 0; s < SEGMENTS; ++s) write_frame_segment(rgba[s], f->out_rgba, tile_x + s * VEC, tile_y + row, f->width);
+    for (int s = 0; s < SEGMENTS; ++s)
+      write_frame_segment(rgba[s], f->out_rgba, tile_x + s * VEC, tile_y + row, f->width);
   }
 }
 #endif

@@ -152,8 +152,8 @@ def main():
     args = ap.parse_args()
     symbols = kernel_symbols(args.perf_data, args.kernel)
     if not symbols:
-        sys.exit(f"kernel_loops.py: no samples in a PoCL work-group function{' of ' + args.kernel if args.kernel else ''}"
-                 f" in {args.perf_data}")
+        which = f" of {args.kernel}" if args.kernel else ""
+        sys.exit(f"kernel_loops.py: no samples in a PoCL work-group function{which} in {args.perf_data}")
     result = []
     for symbol, share in symbols:
         rows = annotate(args.perf_data, symbol)

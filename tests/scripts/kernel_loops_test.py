@@ -35,11 +35,13 @@ check(loops.branch("vaddps %zmm1,%zmm2,%zmm3") is None, "not a branch")
 index = {address: i for i, (address, _, _) in enumerate(rows)}
 path = loops.hot_cycle(rows, 0x08)
 addresses = [rows[i][0] for i in path] if path else None
-check(addresses == [0x08, 0x0c, 0x20, 0x24, 0x28, 0x40, 0x44], "the hot side of 0x28, back through 0x08: %r" % addresses)
+check(addresses == [0x08, 0x0c, 0x20, 0x24, 0x28, 0x40, 0x44],
+      "the hot side of 0x28, back through 0x08: %r" % addresses)
 check(loops.hot_cycle(rows, 0x10) is None, "an outer loop's path settles in its inner loop: no cycle through 0x10")
 cold = [(a, {0x2c: 3.0, 0x40: 0.0, 0x44: 0.0}.get(a, s), t) for a, s, t in rows]
 cold_path = loops.hot_cycle(cold, 0x08)
-check(cold_path is not None and index[0x2c] in cold_path, "with 0x40 cold and the division hot, the path takes it: %r" % cold_path)
+check(cold_path is not None and index[0x2c] in cold_path,
+      "with 0x40 cold and the division hot, the path takes it: %r" % cold_path)
 
 check(loops.for_mca("vpbroadcastd 0xb6a(%rip),%zmm4{%k1}{z}        # 2010 <f+0xa00>") ==
       "vpbroadcastd 0xb6a(%rip),%zmm4{%k1}{z}", "the comment and symbol dropped for llvm-mca")
