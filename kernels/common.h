@@ -86,6 +86,18 @@ INLINE uintV to_level(floatV x) { return as_uintV(clamp(x, 0.0f, 255.0f) + 83886
 /* any() of a VEC-lane mask (lanes -1 or 0; the sign bits tested, as any()). PoCL 3.1 turns any() on 16
  * lanes into a chain of per-lane extracts and branches; OR-ing the halves down to one lane is a few vector
  * ORs and one test. */
+#if VEC == 16 && defined(__AVX512DQ__) && defined(__has_builtin) && !defined(NO_SIGN_BITS)
+#if __has_builtin(__builtin_ia32_cvtd2mask512)
+#define SIGN_BITS_INSTRUCTION 1
+#endif
+#endif
+#ifdef SIGN_BITS_INSTRUCTION
+/* AVX-512: the lanes' sign bits in one instruction (vpmovd2m). PoCL 3.1 does not find it in the halving below,
+ * whose chain of extracts every listed winner waited on; the same bits, so the same frames. -D NO_SIGN_BITS
+ * builds the halving instead (bench_kernel_ab's A/B, docs/pipeline.md). */
+INLINE int any_lanes(intV m) { return __builtin_ia32_cvtd2mask512(m) != 0; }
+INLINE uint lane_bits(intV m) { return __builtin_ia32_cvtd2mask512(m); }
+#else
 INLINE int any_lanes(intV m) {
   const int8 h8 = m.lo | m.hi;
   const int4 h4 = h8.lo | h8.hi;
@@ -101,6 +113,7 @@ INLINE uint lane_bits(intV m) {
   const uint2 h2 = h4.lo | h4.hi;
   return h2.x | h2.y;
 }
+#endif
 
 /* The largest of a VEC-lane vector's lanes, by halving as any_lanes. */
 INLINE int max_lane(intV v) {
