@@ -37,7 +37,19 @@ typedef struct { ulong span_setups, span_fallbacks, span_steps; } TileCounts;
 #define DEFER_ARGS
 #endif
 
-/* Every pixel uncovered (depth infinite), of the background colour and, in a deferred tile, without a winner. */
+/* The stamps' tiles (not the combined method's, nor the units' register colour) keep no background in their
+ * colour arrays: write_tile takes the background wherever the depth is still infinite, and every pixel of finite
+ * depth has had its colour kept by the walk or the deferred shading. Their clear writes the depth (and a deferred
+ * tile's winners) only: three of a pixel's four or five stores fewer. -D CLEAR_COLOUR clears the colour as
+ * before (bench_kernel_ab's A/B). */
+#if STAMPS && !COMBINED && !REGISTER_COLOUR && !defined(CLEAR_COLOUR)
+#define CLEARS_DEPTH_ONLY 1
+#else
+#define CLEARS_DEPTH_ONLY 0
+#endif
+
+/* Every pixel uncovered (depth infinite), of the background colour (CLEARS_DEPTH_ONLY: left to write_tile) and,
+ * in a deferred tile, without a winner. */
 INLINE void clear_tile(floatV* depth, colourV* cr, colourV* cg, colourV* cb, float4 background DEFER_DECL) {
   for (int i = 0; i < TILE_VECTORS; ++i) {
     depth[i] = (floatV)INFINITY;
@@ -49,7 +61,7 @@ INLINE void clear_tile(floatV* depth, colourV* cr, colourV* cg, colourV* cb, flo
     cr[i] = (intV)(int)(background.x * (1 << FRAC_BITS));
     cg[i] = (intV)(int)(background.y * (1 << FRAC_BITS));
     cb[i] = (intV)(int)(background.z * (1 << FRAC_BITS));
-#else
+#elif !CLEARS_DEPTH_ONLY
     cr[i] = (floatV)background.x;
     cg[i] = (floatV)background.y;
     cb[i] = (floatV)background.z;

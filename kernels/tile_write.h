@@ -16,11 +16,15 @@ INLINE void write_frame_segment(uintV rgba, __global uint* out_rgba, int x, int 
   }
 }
 
+/* The background as VEC uncovered RGBA8 pixels. */
+INLINE uintV background_rgba(float4 bg) {
+  return to_level((floatV)bg.x) | (to_level((floatV)bg.y) << 8) | (to_level((floatV)bg.z) << 16);
+}
+
 /* A tile without triangles (the plain frame's): the background, uncovered, written directly without the
  * tile's private arrays. */
 INLINE void write_background_tile(const FrameArgs* f, int tile_x, int tile_y) {
-  const float4 bg = f->background;
-  const uintV rgba = to_level((floatV)bg.x) | (to_level((floatV)bg.y) << 8) | (to_level((floatV)bg.z) << 16);
+  const uintV rgba = background_rgba(f->background);
   for (int i = 0; i < TILE_VECTORS; ++i) {
     const int y = tile_y + i / SEGMENTS, x = tile_x + (i % SEGMENTS) * VEC;
     if (y >= f->height || x >= f->width) continue;
@@ -43,11 +47,19 @@ INLINE uintV pixels_rgba(floatV depth, colourV r, colourV g, colourV b) {
  * at a time. */
 INLINE void write_tile(const FrameArgs* f, int tile_x, int tile_y, const floatV* depth, const colourV* cr,
                        const colourV* cg, const colourV* cb) {
+#if CLEARS_DEPTH_ONLY
+  const uintV background = background_rgba(f->background); /* uncovered pixels' colour was never written */
+#endif
   for (int sy = 0; sy < STAMPS_X; ++sy) {
     uint lines[STAMP][TILE];
     for (int sx = 0; sx < STAMPS_X; ++sx) {
       const int i = sy * STAMPS_X + sx;
+#if CLEARS_DEPTH_ONLY
+      const uintV rgba = select(background, pixels_rgba(depth[i], cr[i], cg[i], cb[i]),
+                                as_uintV(LANE_MASK(isless(depth[i], (floatV)INFINITY))));
+#else
       const uintV rgba = pixels_rgba(depth[i], cr[i], cg[i], cb[i]);
+#endif
       vstore4(rgba.s0123, 0, &lines[0][sx * STAMP]);
       vstore4(rgba.s4567, 0, &lines[1][sx * STAMP]);
       vstore4(rgba.s89ab, 0, &lines[2][sx * STAMP]);
