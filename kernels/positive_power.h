@@ -20,9 +20,29 @@ INLINE floatV log2_positive(floatV x) {
   return select(convert_floatV(e) + series, (floatV)(-INFINITY), isless(x, (floatV)FLT_MIN));
 }
 
+/* max(0,x)^n for a whole n in [1, 65536], by squaring: the lobe's usual exponents are whole, and the logarithm's
+ * division and exp2 made the power the longest part of a Phong stamp's chain of dependent instructions (bench/
+ * README.md run DI). n = 40: five squarings and one product instead of about forty instructions. Each product
+ * rounds once, so the relative error is below (n - 1) u (u = 2^-24), inside the bound of docs/error-bounds.md. */
+INLINE floatV whole_power(floatV x, uint n) {
+  floatV p = x;
+  for (; (n & 1u) == 0u; n >>= 1) p *= p;
+  floatV r = p;
+  for (n >>= 1; n != 0u; n >>= 1) {
+    p *= p;
+    if (n & 1u) r *= p;
+  }
+  return r;
+}
+
 INLINE floatV positive_power(floatV x, float n) {
-  /* max(0,x)^n for n > 0; log2 of 0 is -inf and exp2(-inf) = 0. */
-  return exp2(n * log2_positive(fmax(x, (floatV)0.0f)));
+  /* max(0,x)^n for n > 0; log2 of 0 is -inf and exp2(-inf) = 0. -D POWER_BY_LOGARITHM keeps exp2(n log2 x) for
+   * whole n too (bench_kernel_ab's A/B). */
+  const floatV base = fmax(x, (floatV)0.0f);
+#ifndef POWER_BY_LOGARITHM
+  if (n >= 1.0f && n <= 65536.0f && n == floor(n)) return whole_power(base, (uint)n);
+#endif
+  return exp2(n * log2_positive(base));
 }
 
 #endif
