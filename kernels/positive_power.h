@@ -24,7 +24,7 @@ INLINE floatV log2_positive(floatV x) {
  * division and exp2 made the power the longest part of a Phong stamp's chain of dependent instructions (bench/
  * README.md run DI). n = 40: five squarings and one product instead of about forty instructions. Each product
  * rounds once, so the relative error is below (n - 1) u (u = 2^-24), inside the bound of docs/error-bounds.md. */
-INLINE floatV whole_power(floatV x, uint n) {
+INLINE floatV whole_power(floatV x, uint n) { /* n >= 1: positive_power checks it */
   floatV p = x;
   for (; (n & 1u) == 0u; n >>= 1) p *= p;
   floatV r = p;

@@ -38,10 +38,10 @@ typedef struct { ulong span_setups, span_fallbacks, span_steps; } TileCounts;
 #endif
 
 /* The stamps' tiles (not the combined method's, nor the units' register colour) keep no background in their
- * colour arrays: write_tile takes the background wherever the depth is still infinite, and every pixel of finite
- * depth has had its colour kept by the walk or the deferred shading. Their clear writes the depth (and a deferred
- * tile's winners) only: three of a pixel's four or five stores fewer. -D CLEAR_COLOUR clears the colour as
- * before (bench_kernel_ab's A/B). */
+ * colour arrays: write_tile takes the background wherever the depth is still infinite, and every pixel of
+ * finite depth has had its colour kept by the walk, the tile fill or the deferred shading. Their clear writes
+ * the depth (and a deferred tile's winners) only: three of a pixel's four or five stores fewer.
+ * -D CLEAR_COLOUR clears the colour as before (bench_kernel_ab's A/B). */
 #if STAMPS && !COMBINED && !REGISTER_COLOUR && !defined(CLEAR_COLOUR)
 #define CLEARS_DEPTH_ONLY 1
 #else

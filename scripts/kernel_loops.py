@@ -26,39 +26,55 @@ import subprocess
 import sys
 
 LINE = re.compile(r"^\s*(\d+\.\d+)\s*:\s*([0-9a-f]+):\s*(\S.*?)\s*$")
-BRANCH = re.compile(r"^(j[a-z]+)\s+([0-9a-f]+)\b")
+# A direct jump: `jmp`/`jmpq` or a conditional one, maybe after a `bnd` or `notrack` prefix, to a hex address.
+BRANCH = re.compile(r"^(?:(?:bnd|notrack)\s+)?(j[a-z]+)\s+([0-9a-f]+)\b")
+# `perf report --sort dso,sym -v`: share, the DSO's full path, the symbol's address and binding, the symbol.
+REPORT = re.compile(r"^\s*(\d+\.\d+)%\s+(\S+)\s.*\[\.\]\s+(_pocl_kernel_(\w+?)_workgroup\w*)\s*$")
 
 
-def annotate(perf_data, symbol):
-    """[(address, share %, instruction text)] of `symbol`, in address order."""
-    run = subprocess.run(["perf", "annotate", "-i", perf_data, "--stdio", "-s", symbol], capture_output=True,
-                         text=True)
+def parse_annotate(text, what):
+    """[(address, share %, instruction text)] of one function's `perf annotate --stdio` text, in address order.
+    Two disassemblies in one text (one symbol in two DSOs: two builds of a kernel in one process) would mix two
+    codes at the same addresses, so the script stops there."""
+    if text.count("Percent |") > 1:
+        sys.exit(f"kernel_loops.py: perf annotate gave {what} more than once (two builds of a kernel?)")
     rows = []
-    for line in run.stdout.splitlines():
+    for line in text.splitlines():
         m = LINE.match(line)
         if m:
             rows.append((int(m.group(2), 16), float(m.group(1)), m.group(3)))
     if not rows:
-        sys.exit(f"kernel_loops.py: perf annotate gave no instructions for {symbol} ({run.stderr.strip()[:200]})")
+        sys.exit(f"kernel_loops.py: perf annotate gave no instructions for {what}")
     return sorted(rows)
 
 
-def kernel_symbols(perf_data, kernel):
-    """The work-group functions (PoCL names them _pocl_kernel_NAME_workgroup) in the samples, with their shares."""
-    run = subprocess.run(["perf", "report", "-i", perf_data, "--stdio", "--no-children", "--sort", "sym",
-                          "-g", "none"], capture_output=True, text=True)
+def annotate(perf_data, dso, symbol):
+    run = subprocess.run(["perf", "annotate", "-i", perf_data, "--stdio", "--dsos", dso, "-s", symbol],
+                         capture_output=True, text=True)
+    return parse_annotate(run.stdout, f"{symbol} in {dso} {run.stderr.strip()[:200]}".strip())
+
+
+def parse_report(text, kernel):
+    """(DSO, work-group function, share %) of each PoCL kernel (PoCL names them _pocl_kernel_NAME_workgroup) in a
+    `perf report --sort dso,sym -v` text: one row per compiled copy, so two builds of a kernel stay apart."""
     found = []
-    for line in run.stdout.splitlines():
-        m = re.match(r"^\s*(\d+\.\d+)%\s+\[\.\]\s+(_pocl_kernel_(\w+?)_workgroup\w*)", line)
-        if m and (kernel is None or m.group(3) == kernel):
-            found.append((m.group(2), float(m.group(1))))
+    for line in text.splitlines():
+        m = REPORT.match(line)
+        if m and (kernel is None or m.group(4) == kernel):
+            found.append((m.group(2), m.group(3), float(m.group(1))))
     return found
 
 
+def kernel_symbols(perf_data, kernel):
+    run = subprocess.run(["perf", "report", "-i", perf_data, "--stdio", "--no-children", "--sort", "dso,sym",
+                          "-g", "none", "-v"], capture_output=True, text=True)
+    return parse_report(run.stdout, kernel)
+
+
 def branch(text):
-    """(mnemonic, target address) of a direct jump, else None."""
+    """(mnemonic, target address) of a direct jump, else None; `jmpq` is read as `jmp`."""
     m = BRANCH.match(text)
-    return (m.group(1), int(m.group(2), 16)) if m else None
+    return ("jmp" if m.group(1) == "jmpq" else m.group(1), int(m.group(2), 16)) if m else None
 
 
 def loop_heads(rows):
@@ -105,8 +121,7 @@ def hot_cycle(rows, head):
 
 
 def for_mca(text):
-    """The instruction as llvm-mca's assembler reads it: no trailing `# comment`, no `<symbol+off>`, no prefetch hint
-    of a bare address."""
+    """The instruction as llvm-mca's assembler reads it: no trailing `# comment`, no `<symbol+off>`."""
     text = re.sub(r"\s+#.*$", "", text)
     return re.sub(r"\s*<[^>]*>", "", text)
 
@@ -155,17 +170,17 @@ def main():
         which = f" of {args.kernel}" if args.kernel else ""
         sys.exit(f"kernel_loops.py: no samples in a PoCL work-group function{which} in {args.perf_data}")
     result = []
-    for symbol, share in symbols:
-        rows = annotate(args.perf_data, symbol)
+    for dso, symbol, share in symbols:
+        rows = annotate(args.perf_data, dso, symbol)
         cycles = {}
         for head in loop_heads(rows):
             path = hot_cycle(rows, head)
             if path:
                 cycles.setdefault(frozenset(path), path)  # loops sharing one hot path are one loop
         ranked = sorted(cycles.values(), key=lambda path: -sum(rows[i][1] for i in path))[:args.loops]
-        print(f"{symbol}: {share:.1f} % of all samples; {len(cycles)} loops with a hot path")
+        print(f"{symbol} ({dso}): {share:.1f} % of all samples; {len(cycles)} loops with a hot path")
         print("  loop at   % of kernel  instructions  cycles/iteration  busiest port (cycles)")
-        entry = {"symbol": symbol, "share_of_samples": share, "loops": []}
+        entry = {"symbol": symbol, "dso": dso, "share_of_samples": share, "loops": []}
         for path in ranked:
             on_path = sum(rows[i][1] for i in path)
             body = [rows[i][2] for i in path if not branch(rows[i][2])]

@@ -43,6 +43,39 @@ cold_path = loops.hot_cycle(cold, 0x08)
 check(cold_path is not None and index[0x2c] in cold_path,
       "with 0x40 cold and the division hot, the path takes it: %r" % cold_path)
 
+# An unconditional jump is followed whatever the samples after it: 0x08 (another loop's hot body) is skipped.
+jumps = [(0x00, 1.0, "vaddps %zmm1,%zmm2,%zmm3"), (0x04, 0.0, "jmpq   10 <k+0x10>"),
+         (0x08, 50.0, "vmulps %zmm3,%zmm3,%zmm4"), (0x0c, 0.0, "ret"),
+         (0x10, 1.0, "vsubps %zmm1,%zmm2,%zmm3"), (0x14, 1.0, "notrack jne 0 <k>")]
+jump_path = loops.hot_cycle(jumps, 0x00)
+check(jump_path is not None and [jumps[i][0] for i in jump_path] == [0x00, 0x04, 0x10, 0x14],
+      "jmpq taken, notrack jne read, 0x08 not on the path: %r" % jump_path)
+
+# perf's texts: one row per compiled copy of a kernel (two builds in one process stay apart), and an annotation
+# that holds two disassemblies is refused rather than merged.
+report = """# Overhead  Shared Object  Symbol
+    40.00%  /cache/AA/render_tiles/render_tiles.so  0x41c2             B [.] _pocl_kernel_render_tiles_workgroup
+    30.00%  /cache/BB/render_tiles/render_tiles.so  0x428b             B [.] _pocl_kernel_render_tiles_workgroup
+     9.00%  /cache/CC/fill_limit/fill_limit.so  0x1160             B [.] _pocl_kernel_fill_limit_workgroup
+     5.00%  /usr/bin/parashade  0x20d7ba           B [.] parashade::setup_triangle_range
+"""
+found = loops.parse_report(report, "render_tiles")
+check([d for d, _, _ in found] == ["/cache/AA/render_tiles/render_tiles.so", "/cache/BB/render_tiles/render_tiles.so"],
+      "two builds of render_tiles, each with its DSO: %r" % found)
+check(len(loops.parse_report(report, None)) == 3, "every PoCL kernel, no host function")
+one = """ Percent |	Source code & Disassembly of render_tiles.so for cpu-clock:pppH (246 samples)
+    2.50 :   41a0:   vpbroadcastd %edi,%zmm10
+    0.00 :   41a6:   jne    41a0 <_pocl_kernel_render_tiles_workgroup+0xf40>
+"""
+check(loops.parse_annotate(one, "k") == [(0x41a0, 2.5, "vpbroadcastd %edi,%zmm10"),
+                                         (0x41a6, 0.0, "jne    41a0 <_pocl_kernel_render_tiles_workgroup+0xf40>")],
+      "an annotation's rows: %r" % loops.parse_annotate(one, "k"))
+try:
+    loops.parse_annotate(one + one, "k")
+    check(False, "two disassemblies in one annotation are refused")
+except SystemExit:
+    pass
+
 check(loops.for_mca("vpbroadcastd 0xb6a(%rip),%zmm4{%k1}{z}        # 2010 <f+0xa00>") ==
       "vpbroadcastd 0xb6a(%rip),%zmm4{%k1}{z}", "the comment and symbol dropped for llvm-mca")
 
