@@ -83,9 +83,6 @@ INLINE uintV to_level(floatV x) { return as_uintV(clamp(x, 0.0f, 255.0f) + 83886
 #define SEGMENTS (TILE / VEC)
 
 #if KERNEL_SHAPE == KERNEL_SHAPE_VECTOR
-/* any() of a VEC-lane mask (lanes -1 or 0; the sign bits tested, as any()). PoCL 3.1 turns any() on 16
- * lanes into a chain of per-lane extracts and branches; OR-ing the halves down to one lane is a few vector
- * ORs and one test. */
 #if VEC == 16 && defined(__AVX512DQ__) && defined(__has_builtin) && !defined(NO_SIGN_BITS)
 #if __has_builtin(__builtin_ia32_cvtd2mask512)
 #define SIGN_BITS_INSTRUCTION 1
@@ -98,6 +95,9 @@ INLINE uintV to_level(floatV x) { return as_uintV(clamp(x, 0.0f, 255.0f) + 83886
 INLINE int any_lanes(intV m) { return __builtin_ia32_cvtd2mask512(m) != 0; }
 INLINE uint lane_bits(intV m) { return __builtin_ia32_cvtd2mask512(m); }
 #else
+/* any() of a VEC-lane mask (lanes -1 or 0; the sign bits tested, as any()). PoCL 3.1 turns any() on 16
+ * lanes into a chain of per-lane extracts and branches; OR-ing the halves down to one lane is a few vector
+ * ORs and one test. */
 INLINE int any_lanes(intV m) {
   const int8 h8 = m.lo | m.hi;
   const int4 h4 = h8.lo | h8.hi;

@@ -26,6 +26,7 @@ import subprocess
 import sys
 
 LINE = re.compile(r"^\s*(\d+\.\d+)\s*:\s*([0-9a-f]+):\s*(\S.*?)\s*$")
+MCA_ITERATIONS = 200  # llvm-mca's simulated iterations; its total cycles over them is the cost of one
 # A direct jump: `jmp`/`jmpq` or a conditional one, maybe after a `bnd` or `notrack` prefix, to a hex address.
 BRANCH = re.compile(r"^(?:(?:bnd|notrack)\s+)?(j[a-z]+)\s+([0-9a-f]+)\b")
 # `perf report --sort dso,sym -v`: share, the DSO's full path, the symbol's address and binding, the symbol.
@@ -87,11 +88,12 @@ def loop_heads(rows):
     return sorted(heads)
 
 
-def hot_cycle(rows, head):
+def hot_cycle(rows, head, index=None):
     """One iteration of the loop at `head` as it mostly runs: from the head, at each conditional branch the side
     whose straight run holds more samples, until the path comes back to the head. Row indices, or None when the
-    path settles in another loop (an outer loop's path meets its inner loop) or leaves the function."""
-    index = {address: i for i, (address, _, _) in enumerate(rows)}
+    path settles in another loop (an outer loop's path meets its inner loop) or leaves the function. `index`:
+    each address's row (hot_loops passes it once for all heads)."""
+    index = index or {address: i for i, (address, _, _) in enumerate(rows)}
 
     def mass(i):  # the samples of the straight run from row i to its next branch
         total = 0.0
@@ -120,6 +122,19 @@ def hot_cycle(rows, head):
             return path
 
 
+def hot_loops(rows, count):
+    """The `count` hottest loops: (hot path, its share of the samples), hottest first. Loops whose heads lead to
+    one hot path are one loop."""
+    index = {address: i for i, (address, _, _) in enumerate(rows)}
+    paths = {}
+    for head in loop_heads(rows):
+        path = hot_cycle(rows, head, index)
+        if path:
+            paths.setdefault(frozenset(path), path)
+    shares = [(path, sum(rows[i][1] for i in path)) for path in paths.values()]
+    return sorted(shares, key=lambda loop: -loop[1])[:count]
+
+
 def for_mca(text):
     """The instruction as llvm-mca's assembler reads it: no trailing `# comment`, no `<symbol+off>`."""
     text = re.sub(r"\s+#.*$", "", text)
@@ -132,11 +147,12 @@ def mca(instructions, mcpu):
     tool = shutil.which("llvm-mca") or shutil.which("llvm-mca-14")
     if tool is None:
         sys.exit("kernel_loops.py: llvm-mca is not installed (apt-get install llvm)")
-    run = subprocess.run([tool, f"-mcpu={mcpu}", "-iterations=200"], input=source, capture_output=True, text=True)
+    run = subprocess.run([tool, f"-mcpu={mcpu}", f"-iterations={MCA_ITERATIONS}"], input=source, capture_output=True,
+                         text=True)
     if run.returncode != 0:
         return {"error": run.stderr.strip().splitlines()[0] if run.stderr.strip() else "llvm-mca failed"}
     out = run.stdout
-    cycles = float(re.search(r"Total Cycles:\s+(\d+)", out).group(1)) / 200
+    cycles = float(re.search(r"Total Cycles:\s+(\d+)", out).group(1)) / MCA_ITERATIONS
     rthroughput = float(re.search(r"Block RThroughput:\s+([\d.]+)", out).group(1))
     pressure = busiest_port(out)
     return {"instructions": len(instructions), "cycles_per_iteration": round(cycles, 2),
@@ -150,8 +166,7 @@ def busiest_port(out):
         if line.startswith("Resource pressure per iteration:"):
             names = re.findall(r"\[([\w.]+)\]", lines[k + 1])
             values = [float(v) if v != "-" else 0.0 for v in lines[k + 2].split()]
-            keys = re.findall(r"^\[([\w.]+)\]\s+-\s+(\S+)", out, re.M)
-            label = dict(keys)
+            label = dict(re.findall(r"^\[([\w.]+)\]\s+-\s+(\S+)", out, re.M))  # [0] - SKXDivider
             best = max(range(len(values)), key=lambda j: values[j])
             return label.get(names[best], names[best]), values[best]
     return "?", 0.0
@@ -172,17 +187,10 @@ def main():
     result = []
     for dso, symbol, share in symbols:
         rows = annotate(args.perf_data, dso, symbol)
-        cycles = {}
-        for head in loop_heads(rows):
-            path = hot_cycle(rows, head)
-            if path:
-                cycles.setdefault(frozenset(path), path)  # loops sharing one hot path are one loop
-        ranked = sorted(cycles.values(), key=lambda path: -sum(rows[i][1] for i in path))[:args.loops]
-        print(f"{symbol} ({dso}): {share:.1f} % of all samples; {len(cycles)} loops with a hot path")
+        print(f"{symbol} ({dso}): {share:.1f} % of all samples")
         print("  loop at   % of kernel  instructions  cycles/iteration  busiest port (cycles)")
         entry = {"symbol": symbol, "dso": dso, "share_of_samples": share, "loops": []}
-        for path in ranked:
-            on_path = sum(rows[i][1] for i in path)
+        for path, on_path in hot_loops(rows, args.loops):
             body = [rows[i][2] for i in path if not branch(rows[i][2])]
             est = mca(body, args.mcpu)
             entry["loops"].append({"head": hex(rows[path[0]][0]), "share": round(on_path, 2), **est})

@@ -198,8 +198,9 @@ def watching(pid):
         return False
     for task in tasks:
         try:
-            if open("/proc/%d/task/%s/comm" % (pid, task)).read().strip() == "rank-watchdog":
-                return True
+            with open("/proc/%d/task/%s/comm" % (pid, task)) as comm:
+                if comm.read().strip() == "rank-watchdog":
+                    return True
         except OSError:
             continue
     return False
